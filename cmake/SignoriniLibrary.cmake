@@ -1,0 +1,17 @@
+# signorini_add_package(NAME SOURCES ... DEPENDS ...): one library per folder in packages/,
+# exported as signorini::NAME, headers installed under include/signorini/NAME.
+function(signorini_add_package name)
+  cmake_parse_arguments(P "" "" "SOURCES;DEPENDS" ${ARGN})
+  add_library(signorini_${name} ${P_SOURCES})
+  add_library(signorini::${name} ALIAS signorini_${name})
+  set_target_properties(signorini_${name} PROPERTIES EXPORT_NAME ${name} OUTPUT_NAME signorini_${name})
+  target_include_directories(signorini_${name} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/signorini/${name}>)
+  target_link_libraries(signorini_${name} PUBLIC ${P_DEPENDS})
+  target_compile_options(signorini_${name} PRIVATE -Wall -Wextra -Wno-unused-parameter)
+  install(TARGETS signorini_${name} EXPORT signoriniTargets
+    LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR} ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  file(GLOB headers ${CMAKE_CURRENT_SOURCE_DIR}/*.hpp)
+  install(FILES ${headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/signorini/${name})
+endfunction()

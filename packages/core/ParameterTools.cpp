@@ -1,0 +1,295 @@
+#include "ParameterTools.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <sstream>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "Error.hpp"
+
+namespace signorini::core {
+namespace {
+
+const char* kPassThroughTag = "[pass-through] ";
+const char* kNamedStringsTag = "[named strings] ";
+
+bool hasTag(const Teuchos::ParameterEntry& e, const char* tag) {
+  return e.docString().rfind(tag, 0) == 0;
+}
+
+std::string typeName(const Teuchos::any& a) {
+  if (a.type() == typeid(double)) return "double";
+  if (a.type() == typeid(int)) return "int";
+  if (a.type() == typeid(bool)) return "bool";
+  if (a.type() == typeid(std::string)) return "string";
+  if (a.type() == typeid(ParameterList)) return "ParameterList";
+  return a.typeName();
+}
+
+std::string join(const std::string& a, const std::string& b) { return a.empty() ? b : a + "/" + b; }
+
+std::vector<std::string> names(const ParameterList& pl) {
+  std::vector<std::string> out;
+  for (auto it = pl.begin(); it != pl.end(); ++it) out.push_back(pl.name(it));
+  return out;
+}
+
+size_t editDistance(std::string a, std::string b) {
+  for (auto& c : a) c = std::tolower(static_cast<unsigned char>(c));
+  for (auto& c : b) c = std::tolower(static_cast<unsigned char>(c));
+  std::vector<size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j)
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+std::string describeValidator(const Teuchos::ParameterEntry& e) {
+  auto v = e.validator();
+  if (v.is_null()) return "";
+  auto valid = v->validStringValues();
+  if (!valid.is_null()) {
+    std::string s;
+    for (const auto& x : *valid) s += (s.empty() ? "" : ", ") + ("\"" + x + "\"");
+    return "one of " + s;
+  }
+  if (auto d = Teuchos::rcp_dynamic_cast<const Teuchos::EnhancedNumberValidator<double>>(v); !d.is_null()) {
+    std::ostringstream os;
+    os << "in [" << d->getMin() << ", " << d->getMax() << "]";
+    return os.str();
+  }
+  if (auto i = Teuchos::rcp_dynamic_cast<const Teuchos::EnhancedNumberValidator<int>>(v); !i.is_null()) {
+    std::ostringstream os;
+    os << "in [" << i->getMin() << ", " << i->getMax() << "]";
+    return os.str();
+  }
+  return "";
+}
+
+void validateRecursive(ParameterList& deck, const ParameterList& valid, const std::string& path,
+                       const std::string& context) {
+  const std::string where = path.empty() ? "the top level" : "sublist '" + path + "'";
+  for (auto it = deck.begin(); it != deck.end(); ++it) {
+    const std::string& key = deck.name(it);
+    const std::string full = join(path, key);
+    if (!valid.isParameter(key)) {
+      const std::string guess = closestName(key, names(valid));
+      SIGNORINI_USER_ERROR(context << ": unknown parameter '" << key << "' in " << where
+                                   << (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+    }
+    const auto& ventry = valid.getEntry(key);
+    auto& dentry = deck.getEntry(key);
+    const bool vIsList = ventry.isList(), dIsList = dentry.isList();
+    if (vIsList != dIsList)
+      SIGNORINI_USER_ERROR(context << ": '" << full << "' must be " << (vIsList ? "a sublist" : "a parameter, not a sublist"));
+    if (vIsList) {
+      if (hasTag(ventry, kPassThroughTag)) continue;
+      if (hasTag(ventry, kNamedStringsTag)) {
+        auto& sub = deck.sublist(key);
+        for (auto jt = sub.begin(); jt != sub.end(); ++jt)
+          if (sub.entry(jt).getAny().type() != typeid(std::string))
+            SIGNORINI_USER_ERROR(context << ": '" << join(full, sub.name(jt)) << "' must be a string");
+        continue;
+      }
+      validateRecursive(deck.sublist(key), valid.sublist(key), full, context);
+      continue;
+    }
+    const auto& va = ventry.getAny();
+    auto da = dentry.getAny();
+    if (va.type() == typeid(double) && da.type() == typeid(int)) {  // an int is a fine double
+      deck.set(key, static_cast<double>(Teuchos::any_cast<int>(da)), ventry.docString(), ventry.validator());
+      da = deck.getEntry(key).getAny();
+    }
+    if (va.type() != da.type())
+      SIGNORINI_USER_ERROR(context << ": '" << full << "' has type " << typeName(da) << " but must be "
+                                   << typeName(va));
+    if (da.type() == typeid(double) && !std::isfinite(Teuchos::any_cast<double>(da)))
+      SIGNORINI_USER_ERROR(context << ": '" << full << "' is " << Teuchos::any_cast<double>(da)
+                                   << "; a finite number is required");
+    if (auto v = ventry.validator(); !v.is_null()) {
+      try {
+        v->validate(deck.getEntry(key), key, path);
+      } catch (std::exception&) {
+        std::ostringstream value;
+        value << deck.getEntry(key).getAny();
+        SIGNORINI_USER_ERROR(context << ": '" << full << "' = " << value.str() << " is not allowed; it must be "
+                                     << describeValidator(ventry));
+      }
+    }
+  }
+}
+
+void printRecursive(std::ostream& os, const ParameterList& valid, const std::string& path) {
+  for (auto it = valid.begin(); it != valid.end(); ++it) {
+    const auto& e = valid.entry(it);
+    const std::string full = join(path, valid.name(it));
+    if (e.isList()) {
+      os << full << "/  (sublist)\n";
+      if (!e.docString().empty()) os << "    " << e.docString() << "\n";
+      if (!hasTag(e, kPassThroughTag) && !hasTag(e, kNamedStringsTag))
+        printRecursive(os, valid.sublist(valid.name(it)), full);
+      continue;
+    }
+    os << full << " : " << typeName(e.getAny()) << " = ";
+    if (e.getAny().type() == typeid(std::string))
+      os << "\"" << Teuchos::any_cast<std::string>(e.getAny()) << "\"";
+    else
+      os << e.getAny();
+    const std::string range = describeValidator(e);
+    if (!range.empty()) os << "  (" << range << ")";
+    os << "\n    " << e.docString() << "\n";
+  }
+}
+
+}  // namespace
+
+void addDouble(ParameterList& valid, const std::string& name, double def, const std::string& doc,
+               double min, double max) {
+  auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<double>(min, max));
+  valid.set(name, def, doc, v);
+}
+
+void addInt(ParameterList& valid, const std::string& name, int def, const std::string& doc, int min,
+            int max) {
+  auto v = Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(min, max));
+  valid.set(name, def, doc, v);
+}
+
+void addBool(ParameterList& valid, const std::string& name, bool def, const std::string& doc) {
+  valid.set(name, def, doc);
+}
+
+void addString(ParameterList& valid, const std::string& name, const std::string& def,
+               const std::string& doc) {
+  valid.set(name, def, doc);
+}
+
+void addChoice(ParameterList& valid, const std::string& name, const std::string& def,
+               const std::string& doc, const std::vector<std::string>& choices) {
+  Teuchos::Array<std::string> arr(choices.begin(), choices.end());
+  auto v = Teuchos::rcp(new Teuchos::StringValidator(arr));
+  valid.set(name, def, doc, v);
+}
+
+ParameterList& addPassThrough(ParameterList& valid, const std::string& name, const std::string& doc) {
+  auto& sub = valid.sublist(name, false, kPassThroughTag + doc);
+  sub.disableRecursiveValidation();
+  return sub;
+}
+
+ParameterList& addNamedStrings(ParameterList& valid, const std::string& name, const std::string& doc) {
+  auto& sub = valid.sublist(name, false, kNamedStringsTag + doc);
+  sub.disableRecursiveValidation();
+  return sub;
+}
+
+void validateDeck(ParameterList& deck, const ParameterList& valid, const std::string& context) {
+  validateRecursive(deck, valid, "", context);
+  try {
+    deck.validateParametersAndSetDefaults(valid);
+  } catch (std::exception& e) {
+    SIGNORINI_USER_ERROR(context << ": " << e.what());
+  }
+}
+
+std::string closestName(const std::string& name, const std::vector<std::string>& candidates) {
+  std::string best;
+  size_t bestD = std::string::npos;
+  for (const auto& c : candidates) {
+    const size_t d = editDistance(name, c);
+    if (d < bestD) bestD = d, best = c;
+  }
+  if (best.empty() || bestD > std::max<size_t>(3, name.size() / 2)) return "";
+  return best;
+}
+
+void applyOverride(ParameterList& deck, const std::string& spec, const ParameterList& valid) {
+  const auto eq = spec.find('=');
+  if (eq == std::string::npos || eq == 0)
+    SIGNORINI_USER_ERROR("--set '" << spec << "': expected 'Sublist/key=value'");
+  const std::string path = spec.substr(0, eq), value = spec.substr(eq + 1);
+  std::vector<std::string> parts;
+  for (size_t start = 0;;) {
+    const auto slash = path.find('/', start);
+    parts.push_back(path.substr(start, slash - start));
+    if (slash == std::string::npos) break;
+    start = slash + 1;
+  }
+  ParameterList* d = &deck;
+  const ParameterList* v = &valid;
+  std::string walked;
+  for (size_t i = 0; i + 1 < parts.size(); ++i) {
+    walked = join(walked, parts[i]);
+    if (v) {
+      if (!v->isSublist(parts[i])) {
+        const std::string guess = closestName(parts[i], names(*v));
+        SIGNORINI_USER_ERROR("--set '" << spec << "': no sublist '" << walked << "'"
+                                       << (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+      }
+      const auto& e = v->getEntry(parts[i]);
+      v = (hasTag(e, kPassThroughTag) || hasTag(e, kNamedStringsTag)) ? nullptr : &v->sublist(parts[i]);
+    }
+    d = &d->sublist(parts[i]);
+  }
+  const std::string& key = parts.back();
+  auto fail = [&](const std::string& type) {
+    SIGNORINI_USER_ERROR("--set '" << spec << "': '" << value << "' is not a valid " << type);
+  };
+  auto parseDouble = [&](double& out) {
+    char* end = nullptr;
+    out = std::strtod(value.c_str(), &end);
+    return !value.empty() && end && *end == '\0';
+  };
+  auto parseInt = [&](int& out) {
+    char* end = nullptr;
+    const long l = std::strtol(value.c_str(), &end, 10);
+    out = static_cast<int>(l);
+    return !value.empty() && end && *end == '\0';
+  };
+  auto parseBool = [&](bool& out) {
+    if (value == "true" || value == "1") return out = true, true;
+    if (value == "false" || value == "0") return out = false, true;
+    return false;
+  };
+  if (!v) {  // pass-through or named strings: infer the type
+    int i;
+    double x;
+    bool b;
+    if (parseInt(i)) d->set(key, i);
+    else if (parseDouble(x)) d->set(key, x);
+    else if (parseBool(b)) d->set(key, b);
+    else d->set(key, value);
+    return;
+  }
+  if (!v->isParameter(key) || v->isSublist(key)) {
+    const std::string guess = closestName(key, names(*v));
+    SIGNORINI_USER_ERROR("--set '" << spec << "': unknown parameter '" << key << "' in sublist '" << walked << "'"
+                                   << (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+  }
+  const auto& t = v->getEntry(key).getAny().type();
+  if (t == typeid(double)) {
+    double x;
+    if (!parseDouble(x)) fail("double");
+    d->set(key, x);
+  } else if (t == typeid(int)) {
+    int i;
+    if (!parseInt(i)) fail("int");
+    d->set(key, i);
+  } else if (t == typeid(bool)) {
+    bool b;
+    if (!parseBool(b)) fail("bool (true/false)");
+    d->set(key, b);
+  } else {
+    d->set(key, value);
+  }
+}
+
+void printParameters(std::ostream& os, const ParameterList& valid) { printRecursive(os, valid, ""); }
+
+}  // namespace signorini::core

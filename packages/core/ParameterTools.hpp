@@ -1,0 +1,53 @@
+#pragma once
+/// \file ParameterTools.hpp
+/// Building and enforcing validated Teuchos::ParameterLists (DESIGN section 4): every entry has
+/// a default, a doc string and a validator; unknown keys are errors that suggest the closest name.
+#include <limits>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+namespace signorini::core {
+
+using ParameterList = Teuchos::ParameterList;
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// A double entry valid in [min, max].
+void addDouble(ParameterList& valid, const std::string& name, double def, const std::string& doc,
+               double min = -kInf, double max = kInf);
+/// An int entry valid in [min, max].
+void addInt(ParameterList& valid, const std::string& name, int def, const std::string& doc,
+            int min = std::numeric_limits<int>::min(), int max = std::numeric_limits<int>::max());
+void addBool(ParameterList& valid, const std::string& name, bool def, const std::string& doc);
+/// A free string (expressions, file names, lists); its consumer checks the content.
+void addString(ParameterList& valid, const std::string& name, const std::string& def,
+               const std::string& doc);
+/// A string restricted to \p choices.
+void addChoice(ParameterList& valid, const std::string& name, const std::string& def,
+               const std::string& doc, const std::vector<std::string>& choices);
+/// A sublist whose content is passed unchanged to another library (Belos, MueLu) that
+/// validates it itself; signorini does not check its keys.
+ParameterList& addPassThrough(ParameterList& valid, const std::string& name, const std::string& doc);
+/// A sublist whose keys are user-chosen names (e.g. named boundary segments or probes) with
+/// string values; signorini checks the values' content itself.
+ParameterList& addNamedStrings(ParameterList& valid, const std::string& name, const std::string& doc);
+
+/// Checks \p deck against \p valid and fills in defaults. Throws UserError for an unknown key
+/// (naming the key, its sublist and the closest valid name), a wrong type, an out-of-range
+/// value, a disallowed string or NaN. \p context prefixes messages (e.g. the deck's file name).
+void validateDeck(ParameterList& deck, const ParameterList& valid, const std::string& context);
+
+/// Applies a command-line override "Sublist/.../key=value" to \p deck, typed after \p valid
+/// (inside pass-through sublists the type is inferred: int, double, bool, else string).
+void applyOverride(ParameterList& deck, const std::string& spec, const ParameterList& valid);
+
+/// Prints every valid parameter with its path, type, default and doc string.
+void printParameters(std::ostream& os, const ParameterList& valid);
+
+/// The name in \p candidates closest to \p name (edit distance, case-insensitive); empty if none.
+std::string closestName(const std::string& name, const std::vector<std::string>& candidates);
+
+}  // namespace signorini::core

@@ -1,0 +1,54 @@
+#include "Newmark.hpp"
+
+#include <cmath>
+
+#include <Tpetra_Vector.hpp>
+
+#include "Error.hpp"
+
+namespace signorini::dynamics {
+
+core::ParameterList Newmark::getValidParameters() {
+  core::ParameterList p("Time Integration");
+  core::addDouble(p, "Time Step", 0.0025, "k [time], constant", 1e-300, core::kInf);
+  core::addDouble(p, "Final Time", 1.0, "T [time]; the run takes round(T / k) steps", 1e-300, core::kInf);
+  core::addDouble(p, "Alpha", 0.5, "Newmark alpha (= gamma); second order needs 1/2; 2 beta >= alpha >= 1/2", 0.0, 2.0);
+  core::addDouble(p, "Beta", 0.5, "Newmark beta; 1/2 conserves energy with alpha = 1/2 (paper Sec. 3.1)", 0.0, 2.0);
+  return p;
+}
+
+Newmark::Newmark(const core::ParameterList& p)
+    : timeStep(p.get<double>("Time Step")),
+      finalTime(p.get<double>("Final Time")),
+      alpha(p.get<double>("Alpha")),
+      beta(p.get<double>("Beta")) {
+  if (alpha < 0.5)
+    SIGNORINI_USER_ERROR("Time Integration/Alpha = " << alpha << " violates 2 Beta >= Alpha >= 1/2 (Alpha < 1/2)");
+  if (2 * beta < alpha)
+    SIGNORINI_USER_ERROR("Time Integration/Beta = " << beta << " violates 2 Beta >= Alpha >= 1/2 with Alpha = " << alpha);
+  if (finalTime / timeStep > 1e8)
+    SIGNORINI_USER_ERROR("Time Integration/Time Step = " << timeStep << " gives more than 1e8 steps to Final Time");
+  if (numSteps() < 1)
+    SIGNORINI_USER_ERROR("Time Integration/Final Time = " << finalTime << " is shorter than half a Time Step");
+}
+
+int Newmark::numSteps() const { return static_cast<int>(std::llround(finalTime / timeStep)); }
+
+void Newmark::predictor(const Vector& u, const Vector& v, const Vector& a, Vector& out) const {
+  const double k = timeStep;
+  out.update(1.0, u, k, v, 0.0);
+  out.update((0.5 - beta) * k * k, a, 1.0);
+}
+
+void Newmark::update(const Vector& uOld, const Vector& uNew, Vector& v, Vector& a) const {
+  const double k = timeStep;
+  // a^n = (u^n - u^{n-1})/(beta k^2) - v^{n-1}/(beta k) - (1/(2 beta) - 1) a^{n-1}   (3.1)
+  Vector aNew(a.getMap());
+  aNew.update(1.0 / (beta * k * k), uNew, -1.0 / (beta * k * k), uOld, 0.0);
+  aNew.update(-1.0 / (beta * k), v, -(0.5 / beta - 1.0), a, 1.0);
+  // v^n = v^{n-1} + k ((1 - alpha) a^{n-1} + alpha a^n)   (3.2)
+  v.update(k * (1 - alpha), a, k * alpha, aNew, 1.0);
+  a.assign(aNew);
+}
+
+}  // namespace signorini::dynamics

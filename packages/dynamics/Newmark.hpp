@@ -1,0 +1,28 @@
+#pragma once
+/// \file Newmark.hpp
+/// Newmark time stepping (paper (3.1)-(3.2); alpha is Newmark's gamma): parameters from the
+/// deck's "Time Integration" sublist and the velocity/acceleration updates.
+#include "ParameterTools.hpp"
+#include "Types.hpp"
+
+namespace signorini::dynamics {
+
+struct Newmark {
+  static core::ParameterList getValidParameters();
+  /// Reads a validated "Time Integration" sublist; throws core::UserError unless
+  /// 2 beta >= alpha >= 1/2 (unconditional stability), naming the keys.
+  explicit Newmark(const core::ParameterList& p);
+
+  double timeStep;   ///< k [time]
+  double finalTime;  ///< T [time]
+  double alpha;      ///< Newmark gamma (paper alpha)
+  double beta;
+  int numSteps() const;
+
+  /// Predictor u^{n-1} + k v^{n-1} + (1/2 - beta) k^2 a^{n-1}; F^n = M * predictor + beta k^2 (loads).
+  void predictor(const Vector& u, const Vector& v, const Vector& a, Vector& out) const;
+  /// Given u^n, overwrites (v, a) from step n-1 with step n: (3.1) then (3.2).
+  void update(const Vector& uOld, const Vector& uNew, Vector& v, Vector& a) const;
+};
+
+}  // namespace signorini::dynamics

@@ -1,0 +1,142 @@
+#include "ResultWriter.hpp"
+
+#include <map>
+
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "Error.hpp"
+
+namespace signorini::dynamics {
+namespace {
+
+MPI_Comm rawComm(const Comm& comm) {
+  const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
+  SIGNORINI_ASSERT(mpi != nullptr, "signorini needs an MPI communicator");
+  return *mpi->getRawMpiComm();
+}
+
+template <class T>
+std::vector<T> gatherToRoot(const Comm& comm, const std::vector<T>& mine, MPI_Datatype type, std::vector<int>* countsOut = nullptr) {
+  MPI_Comm c = rawComm(comm);
+  int n = static_cast<int>(mine.size()), size, rank;
+  MPI_Comm_size(c, &size);
+  MPI_Comm_rank(c, &rank);
+  std::vector<int> counts(size), offsets(size, 0);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, c);
+  std::vector<T> all;
+  if (rank == 0) {
+    for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+    all.resize(offsets.back() + counts.back());
+  }
+  MPI_Gatherv(mine.data(), n, type, all.data(), counts.data(), offsets.data(), type, 0, c);
+  if (countsOut) *countsOut = counts;
+  return all;
+}
+
+}  // namespace
+
+ResultWriter::ResultWriter(const std::string& basePath, std::vector<std::string> nodalNames,
+                           std::vector<std::string> cellNames, std::vector<std::string> contactNames,
+                           RCP<const Comm> comm)
+    : comm_(comm), numNodal_(nodalNames.size()), numCell_(cellNames.size()), numContact_(contactNames.size()) {
+  if (comm_->getRank() == 0)
+    writer_ = std::make_unique<io::ExodusSeriesWriter>(basePath, nodalNames, cellNames, "contact", contactNames);
+}
+
+void ResultWriter::write(long meshId, const mesh::Q1Mesh& mesh, double time, const std::vector<const Vector*>& nodal,
+                         const std::vector<std::vector<double>>& cell, const std::vector<int>& contactEdges,
+                         const std::vector<std::vector<double>>& contact) {
+  const LO nc = mesh.numLocalCells();
+  const GO numGlobal = mesh.numGlobalNodes();
+  const auto overlap = mesh.overlapMap();
+  std::vector<double> coords, values, cellValues, edgeValues;
+  std::vector<long long> keys, edgeInfo;
+  coords.reserve(8 * nc);
+  keys.reserve(4 * nc);
+  std::vector<decltype(nodal[0]->getLocalViewHost(Tpetra::Access::ReadOnly))> views;
+  for (const Vector* v : nodal) views.push_back(v->getLocalViewHost(Tpetra::Access::ReadOnly));
+  const auto& X = mesh.cornerCoordsHost;
+  const auto& D = mesh.cornerDofsHost;
+  const auto& W = mesh.cornerWeightsHost;
+  for (LO e = 0; e < nc; ++e)
+    for (int c = 0; c < 4; ++c) {
+      coords.push_back(X(e, c, 0));
+      coords.push_back(X(e, c, 1));
+      const GO g0 = overlap->getGlobalElement(D(e, c, 0));
+      if (D(e, c, 1) < 0) {
+        keys.push_back(g0);
+      } else {  // hanging node: identified by the two nodes it depends on
+        const GO g1 = overlap->getGlobalElement(D(e, c, 1));
+        keys.push_back(-1 - (std::min(g0, g1) * numGlobal + std::max(g0, g1)));
+      }
+      for (const auto& v : views) {
+        double s = 0;
+        for (int k = 0; k < 2; ++k)
+          if (D(e, c, k) >= 0) s += W(e, c, k) * v(D(e, c, k), 0);
+        values.push_back(s);
+      }
+    }
+  for (LO e = 0; e < nc; ++e)
+    for (size_t f = 0; f < numCell_; ++f) cellValues.push_back(cell[f][e]);
+  static const int faceToSide[4] = {3, 1, 0, 2};
+  for (size_t i = 0; i < contactEdges.size(); ++i) {
+    const auto& be = mesh.boundaryEdges()[contactEdges[i]];
+    edgeInfo.push_back(be.cell);
+    edgeInfo.push_back(faceToSide[be.face]);
+    for (size_t f = 0; f < numContact_; ++f) edgeValues.push_back(contact[f][i]);
+  }
+  std::vector<int> cellCounts;
+  const auto allCoords = gatherToRoot(*comm_, coords, MPI_DOUBLE, &cellCounts);
+  const auto allKeys = gatherToRoot(*comm_, keys, MPI_LONG_LONG);
+  const auto allValues = gatherToRoot(*comm_, values, MPI_DOUBLE);
+  const auto allCell = gatherToRoot(*comm_, cellValues, MPI_DOUBLE);
+  std::vector<int> edgeCounts;
+  const auto allEdges = gatherToRoot(*comm_, edgeInfo, MPI_LONG_LONG, &edgeCounts);
+  const auto allEdgeValues = gatherToRoot(*comm_, edgeValues, MPI_DOUBLE);
+  if (comm_->getRank() != 0) return;
+
+  io::QuadMesh out;
+  std::map<long long, int> nodeId;
+  const size_t totalCells = allKeys.size() / 4;
+  std::vector<std::vector<double>> nodalOut(numNodal_);
+  static const int zToCcw[4] = {0, 1, 3, 2};
+  for (size_t e = 0; e < totalCells; ++e) {
+    std::array<int, 4> quad;
+    for (int k = 0; k < 4; ++k) {
+      const int c = zToCcw[k];
+      const size_t i = 4 * e + c;
+      auto [it, added] = nodeId.emplace(allKeys[i], static_cast<int>(out.x.size()));
+      if (added) {
+        out.x.push_back(allCoords[2 * i]);
+        out.y.push_back(allCoords[2 * i + 1]);
+        for (size_t f = 0; f < numNodal_; ++f) nodalOut[f].push_back(allValues[numNodal_ * i + f]);
+      }
+      quad[k] = it->second;
+    }
+    out.quads.push_back(quad);
+  }
+  std::vector<std::vector<double>> cellOut(numCell_, std::vector<double>(totalCells));
+  for (size_t e = 0; e < totalCells; ++e)
+    for (size_t f = 0; f < numCell_; ++f) cellOut[f][e] = allCell[numCell_ * e + f];
+  // Local cell numbers become global through the ranks' cell offsets.
+  std::vector<long long> cellOffset(cellCounts.size(), 0);
+  for (size_t r = 1; r < cellCounts.size(); ++r) cellOffset[r] = cellOffset[r - 1] + cellCounts[r - 1] / 8;
+  std::vector<std::vector<double>> sideOut(numContact_);
+  auto& sides = out.sideSets["contact"];
+  size_t pos = 0;
+  for (size_t r = 0; r < edgeCounts.size(); ++r)
+    for (int k = 0; k < edgeCounts[r] / 2; ++k, ++pos) {
+      sides.push_back({static_cast<int>(cellOffset[r] + allEdges[2 * pos]), static_cast<int>(allEdges[2 * pos + 1])});
+      for (size_t f = 0; f < numContact_; ++f) sideOut[f].push_back(allEdgeValues[numContact_ * pos + f]);
+    }
+  writer_->write(meshId, out, time, nodalOut, cellOut, sideOut);
+}
+
+std::vector<std::string> ResultWriter::close() { return writer_ ? writer_->close() : std::vector<std::string>{}; }
+
+void ResultWriter::abandon() {
+  if (writer_) writer_->abandon();
+}
+
+}  // namespace signorini::dynamics

@@ -1,0 +1,34 @@
+#pragma once
+/// \file ResultWriter.hpp
+/// Gathers a distributed Q1 solution on rank 0 and appends it to an Exodus II series
+/// (io::ExodusSeriesWriter): nodal fields (hanging nodes get their constrained values), cell
+/// fields, and per-edge fields on the side set "contact".
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ExodusMesh.hpp"
+#include "Q1Mesh.hpp"
+
+namespace signorini::dynamics {
+
+class ResultWriter {
+ public:
+  ResultWriter(const std::string& basePath, std::vector<std::string> nodalNames, std::vector<std::string> cellNames,
+               std::vector<std::string> contactNames, RCP<const Comm> comm);
+  /// \param nodal overlap-map vectors; \p cell one value per local cell per field;
+  /// \p contactEdges local boundary-edge indices on Gamma_C with \p contact values per field.
+  void write(long meshId, const mesh::Q1Mesh& mesh, double time, const std::vector<const Vector*>& nodal,
+             const std::vector<std::vector<double>>& cell, const std::vector<int>& contactEdges,
+             const std::vector<std::vector<double>>& contact);
+  /// Final file names (rank 0), after finalising.
+  std::vector<std::string> close();
+  void abandon();
+
+ private:
+  RCP<const Comm> comm_;
+  std::unique_ptr<io::ExodusSeriesWriter> writer_;
+  size_t numNodal_, numCell_, numContact_;
+};
+
+}  // namespace signorini::dynamics

@@ -1,0 +1,203 @@
+#include "ContactCoupling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "Error.hpp"
+
+namespace signorini::fem {
+namespace {
+
+MPI_Comm rawComm(const Comm& comm) {
+  const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
+  SIGNORINI_ASSERT(mpi != nullptr, "signorini needs an MPI communicator");
+  return *mpi->getRawMpiComm();
+}
+
+/// Gathers variable-length double arrays from all ranks, concatenated in rank order.
+std::vector<double> allGather(const Comm& comm, const std::vector<double>& mine) {
+  MPI_Comm c = rawComm(comm);
+  int n = static_cast<int>(mine.size()), size;
+  MPI_Comm_size(c, &size);
+  std::vector<int> counts(size), offsets(size, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, c);
+  for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<double> all(offsets.back() + counts.back());
+  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, c);
+  return all;
+}
+
+}  // namespace
+
+ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask, SegmentSize size,
+                                 const std::vector<char>& dirichlet)
+    : comm_(mesh.comm()) {
+  const auto& bedges = mesh.boundaryEdges();
+  std::vector<double> mine;
+  std::vector<int> localIds;
+  for (size_t i = 0; i < bedges.size(); ++i)
+    if (bedges[i].segments & contactMask) {
+      localIds.push_back(static_cast<int>(i));
+      for (int k = 0; k < 2; ++k) mine.push_back(bedges[i].x[k][0]), mine.push_back(bedges[i].x[k][1]);
+    }
+  // Offset of this rank's edges in the gathered list.
+  int myCount = static_cast<int>(localIds.size()), myOffset = 0;
+  MPI_Exscan(&myCount, &myOffset, 1, MPI_INT, MPI_SUM, rawComm(*comm_));
+  if (comm_->getRank() == 0) myOffset = 0;
+  const std::vector<double> all = allGather(*comm_, mine);
+  const int ne = static_cast<int>(all.size() / 4);
+  edges_.resize(ne);
+  for (int e = 0; e < ne; ++e) edges_[e] = {all[4 * e], all[4 * e + 1], all[4 * e + 2], all[4 * e + 3]};
+
+  // Chains of edges joined at common end points (matched on a grid far finer than any edge).
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  for (const auto& e : edges_)
+    for (int k = 0; k < 2; ++k)
+      for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], e[2 * k + d]), hi[d] = std::max(hi[d], e[2 * k + d]);
+  const double quantum = 1e-10 * std::max(1e-300, std::max(hi[0] - lo[0], hi[1] - lo[1]));
+  using Key = std::pair<long long, long long>;
+  auto key = [&](double x, double y) { return Key{std::llround(x / quantum), std::llround(y / quantum)}; };
+  std::map<Key, std::vector<int>> incident;
+  for (int e = 0; e < ne; ++e)
+    for (int k = 0; k < 2; ++k) incident[key(edges_[e][2 * k], edges_[e][2 * k + 1])].push_back(e);
+  // Start points: chain ends (one incident edge) first, by coordinates; then closed loops.
+  std::vector<std::pair<std::array<double, 2>, Key>> starts;
+  for (const auto& [k, list] : incident)
+    if (list.size() == 1) {
+      const auto& e = edges_[list[0]];
+      const int end = key(e[0], e[1]) == k ? 0 : 1;
+      starts.push_back({{e[2 * end], e[2 * end + 1]}, k});
+    }
+  std::sort(starts.begin(), starts.end());
+  std::vector<char> used(ne, 0);
+  std::vector<std::vector<int>> chains;
+  auto walk = [&](Key p) {
+    std::vector<int> chain;
+    for (;;) {
+      int next = -1;
+      for (int e : incident[p])
+        if (!used[e]) {
+          next = e;
+          break;
+        }
+      if (next < 0) break;
+      used[next] = 1;
+      chain.push_back(next);
+      const Key a = key(edges_[next][0], edges_[next][1]), b = key(edges_[next][2], edges_[next][3]);
+      p = (a == p) ? b : a;
+    }
+    if (!chain.empty()) chains.push_back(chain);
+  };
+  for (const auto& s : starts) walk(s.second);
+  for (;;) {  // closed loops: start at the smallest remaining point
+    int first = -1;
+    for (int e = 0; e < ne; ++e)
+      if (!used[e] && (first < 0 || std::make_pair(edges_[e][0], edges_[e][1]) < std::make_pair(edges_[first][0], edges_[first][1])))
+        first = e;
+    if (first < 0) break;
+    walk(key(edges_[first][0], edges_[first][1]));
+  }
+
+  edgeSegment_.assign(ne, -1);
+  for (const auto& chain : chains) {
+    const int n = static_cast<int>(chain.size());
+    int i = 0;
+    while (i < n) {
+      int take = 1;
+      if (size == SegmentSize::TwoEdges) take = (n - i == 3) ? 3 : std::min(2, n - i);
+      const int seg = static_cast<int>(length_.size());
+      double len = 0, mx = 0, my = 0;
+      for (int k = 0; k < take; ++k) {
+        const auto& e = edges_[chain[i + k]];
+        const double l = std::hypot(e[2] - e[0], e[3] - e[1]);
+        len += l;
+        mx += l * 0.5 * (e[0] + e[2]);
+        my += l * 0.5 * (e[1] + e[3]);
+        edgeSegment_[chain[i + k]] = seg;
+      }
+      length_.push_back(len);
+      midpoint_.push_back({mx / len, my / len});
+      edgeCount_.push_back(take);
+      i += take;
+    }
+  }
+
+  const int m = numSegments();
+  segmentMap_ = Teuchos::rcp(new Map(m, comm_->getRank() == 0 ? m : 0, 0, comm_));
+  B_ = Teuchos::rcp(new CrsMatrix(mesh.ownedMap(), 4));
+  localEdgeSegment_.assign(bedges.size(), -1);
+  const auto overlap = mesh.overlapMap();
+  for (size_t k = 0; k < localIds.size(); ++k) {
+    const auto& be = bedges[localIds[k]];
+    const GO seg = edgeSegment_[myOffset + static_cast<int>(k)];
+    localEdgeSegment_[localIds[k]] = static_cast<int>(seg);
+    const double half = 0.5 * be.length();
+    for (int p = 0; p < 2; ++p) {
+      if (dirichlet[be.node[p]]) continue;
+      B_->insertGlobalValues(overlap->getGlobalElement(be.node[p]), Teuchos::tuple(seg), Teuchos::tuple(half));
+    }
+  }
+  B_->fillComplete(segmentMap_, mesh.ownedMap());
+}
+
+void ContactCoupling::apply(const std::vector<double>& lambda, Vector& y, double scale, bool accumulate) const {
+  Vector l(segmentMap_);
+  {
+    auto h = l.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (size_t j = 0; j < h.extent(0); ++j) h(j, 0) = lambda[j];
+  }
+  B_->apply(l, y, Teuchos::NO_TRANS, scale, accumulate ? 1.0 : 0.0);
+}
+
+std::vector<double> ContactCoupling::applyTranspose(const Vector& u) const {
+  Vector g(segmentMap_);
+  B_->apply(u, g, Teuchos::TRANS);
+  std::vector<double> out(numSegments(), 0.0);
+  if (comm_->getRank() == 0) {
+    auto h = g.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (size_t j = 0; j < h.extent(0); ++j) out[j] = h(j, 0);
+  }
+  if (!out.empty()) Teuchos::broadcast(*comm_, 0, static_cast<int>(out.size()), out.data());
+  return out;
+}
+
+std::vector<double> ContactCoupling::weightedObstacle(const core::Expression& g, double t) const {
+  static const double gp[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
+  static const double gw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+  std::vector<double> out(numSegments(), 0.0);
+  for (size_t e = 0; e < edges_.size(); ++e) {
+    const auto& x = edges_[e];
+    const double len = std::hypot(x[2] - x[0], x[3] - x[1]);
+    for (int q = 0; q < 3; ++q)
+      out[edgeSegment_[e]] += gw[q] * len * g(x[0] + gp[q] * (x[2] - x[0]), x[1] + gp[q] * (x[3] - x[1]), t);
+  }
+  return out;
+}
+
+std::vector<double> ContactCoupling::lumpedSchurComplement(const Vector& d) const {
+  const int m = numSegments();
+  std::vector<double> local(static_cast<size_t>(m) * m, 0.0), global(local.size(), 0.0);
+  auto dh = d.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto colMap = B_->getColMap();
+  typename CrsMatrix::nonconst_local_inds_host_view_type cols("cols", B_->getNodeMaxNumRowEntries());
+  typename CrsMatrix::nonconst_values_host_view_type vals("vals", B_->getNodeMaxNumRowEntries());
+  for (LO i = 0; i < static_cast<LO>(B_->getNodeNumRows()); ++i) {
+    size_t n = 0;
+    B_->getLocalRowCopy(i, cols, vals, n);
+    for (size_t a = 0; a < n; ++a)
+      for (size_t b = 0; b < n; ++b)
+        local[colMap->getGlobalElement(cols(a)) * m + colMap->getGlobalElement(cols(b))] += vals(a) * vals(b) / dh(i, 0);
+  }
+  if (!local.empty())
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), global.data());
+  return global;
+}
+
+}  // namespace signorini::fem

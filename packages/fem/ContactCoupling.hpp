@@ -1,0 +1,58 @@
+#pragma once
+/// \file ContactCoupling.hpp
+/// The contact boundary Gamma_C split into multiplier segments E_j (paper Sec. 3.2): each segment
+/// the union of two consecutive fine boundary edges (H = 2h; a chain of odd length ends in one
+/// segment of three edges) or of one edge (H = h). Provides B_ij = int_{E_j} phi_i ds (3.7)-(3.8)
+/// as a Tpetra matrix, its products with replicated multiplier vectors, and the weighted
+/// obstacle gbar_j = int_{E_j} g ds. The segment data (a few hundred numbers) are replicated
+/// on every rank in the same order, independent of the number of ranks.
+#include <array>
+#include <vector>
+
+#include "Expression.hpp"
+#include "Q1Mesh.hpp"
+
+namespace signorini::fem {
+
+class ContactCoupling {
+ public:
+  enum class SegmentSize { TwoEdges, OneEdge };
+
+  /// Segments of the boundary edges in \p contactMask; rows of Dirichlet nodes stay empty.
+  ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask, SegmentSize size, const std::vector<char>& dirichlet);
+
+  int numSegments() const { return static_cast<int>(length_.size()); }
+  /// |E_j| [length], replicated.
+  const std::vector<double>& segmentLength() const { return length_; }
+  /// Midpoint of E_j (replicated).
+  const std::vector<std::array<double, 2>>& segmentMidpoint() const { return midpoint_; }
+  /// Number of fine edges of E_j.
+  const std::vector<int>& segmentEdges() const { return edgeCount_; }
+  /// Segment of each of the mesh's local boundary edges (-1 if not a contact edge).
+  const std::vector<int>& localEdgeSegment() const { return localEdgeSegment_; }
+
+  /// y (owned) = scale * B lambda (+ y if accumulate).
+  void apply(const std::vector<double>& lambda, Vector& y, double scale = 1.0, bool accumulate = false) const;
+  /// B^T u for an owned vector u; the result is replicated on every rank.
+  std::vector<double> applyTranspose(const Vector& u) const;
+  /// gbar_j = int_{E_j} g(., t) ds (3-point Gauss per fine edge), replicated.
+  std::vector<double> weightedObstacle(const core::Expression& g, double t) const;
+  /// B as a Tpetra matrix: rows on the mesh's owned map, columns = segments (domain map: all on rank 0).
+  RCP<const CrsMatrix> matrix() const { return B_; }
+  /// For every segment j: sum_i B_ij^2 / d_i ... the "lumped" Schur complement B^T D^{-1} B for a
+  /// positive diagonal d (owned vector), as a dense row-major m x m matrix replicated on all ranks.
+  std::vector<double> lumpedSchurComplement(const Vector& d) const;
+
+ private:
+  RCP<const Comm> comm_;
+  RCP<const Map> segmentMap_;
+  RCP<CrsMatrix> B_;
+  std::vector<double> length_;
+  std::vector<std::array<double, 2>> midpoint_;
+  std::vector<int> edgeCount_;
+  std::vector<int> localEdgeSegment_;
+  std::vector<std::array<double, 4>> edges_;  // all contact edges (x0, y0, x1, y1), replicated
+  std::vector<int> edgeSegment_;              // segment of each replicated edge
+};
+
+}  // namespace signorini::fem

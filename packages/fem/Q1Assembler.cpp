@@ -1,0 +1,266 @@
+#include "Q1Assembler.hpp"
+
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_FECrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "Error.hpp"
+#include "Q1Kernels.hpp"
+
+namespace signorini::fem {
+
+using Matrix = Tpetra::FECrsMatrix<Scalar, LO, GO, Node>;
+
+Q1Assembler::Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet)
+    : mesh_(mesh), dirichlet_(std::move(dirichlet)) {
+  const auto overlap = mesh.overlapMap();
+  SIGNORINI_ASSERT(dirichlet_.size() == overlap->getNodeNumElements(), "Dirichlet flags do not match the mesh");
+  dirichletView_ = Kokkos::View<int*, DeviceType>("dirichlet", dirichlet_.size());
+  auto dh = Kokkos::create_mirror_view(dirichletView_);
+  for (size_t i = 0; i < dirichlet_.size(); ++i) dh(i) = dirichlet_[i];
+  Kokkos::deep_copy(dirichletView_, dh);
+
+  const auto& dofs = mesh.cornerDofsHost;
+  const LO nc = mesh.numLocalCells();
+  std::vector<size_t> rowCount(dirichlet_.size(), 0);
+  std::vector<std::vector<LO>> cellDofs(nc);
+  for (LO e = 0; e < nc; ++e) {
+    std::set<LO> s;
+    for (int c = 0; c < 4; ++c)
+      for (int k = 0; k < 2; ++k)
+        if (dofs(e, c, k) >= 0) s.insert(dofs(e, c, k));
+    cellDofs[e].assign(s.begin(), s.end());
+    for (LO d : s) rowCount[d] += s.size();
+  }
+  size_t maxRow = 1;
+  for (size_t c : rowCount) maxRow = std::max(maxRow, c);
+  graph_ = Teuchos::rcp(new Graph(mesh.ownedMap(), overlap, overlap, maxRow));
+  graph_->beginAssembly();
+  for (LO e = 0; e < nc; ++e)
+    for (LO r : cellDofs[e]) graph_->insertLocalIndices(r, Teuchos::ArrayView<const LO>(cellDofs[e]));
+  graph_->endAssembly();
+  exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(overlap, mesh.ownedMap()));
+  importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(mesh.ownedMap(), overlap));
+}
+
+RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa) const {
+  auto A = Teuchos::rcp(new Matrix(graph_));
+  A->beginAssembly();
+  {
+    auto local = A->getLocalMatrixDevice();
+    const auto X = mesh_.cornerCoords;
+    const auto dofs = mesh_.cornerDofs;
+    const auto wts = mesh_.cornerWeights;
+    const auto dir = dirichletView_;
+    const double cm = massCoeff * rho, ck = stiffCoeff * kappa;
+    Kokkos::parallel_for(
+        "signorini::assembleOperator", Kokkos::RangePolicy<ExecSpace>(0, mesh_.numLocalCells()),
+        KOKKOS_LAMBDA(const LO e) {
+          double Xe[4][2], Ke[4][4] = {};
+          for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
+          for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j) {
+              double N[4], gx[4], gy[4];
+              const double w = kGauss2Weight * kGauss2Weight * q1Gradients(Xe, gauss2Point(i), gauss2Point(j), N, gx, gy);
+              for (int a = 0; a < 4; ++a)
+                for (int b = 0; b < 4; ++b) Ke[a][b] += w * (cm * N[a] * N[b] + ck * (gx[a] * gx[b] + gy[a] * gy[b]));
+            }
+          for (int a = 0; a < 4; ++a)
+            for (int ka = 0; ka < 2; ++ka) {
+              const LO row = dofs(e, a, ka);
+              if (row < 0 || dir(row)) continue;
+              for (int b = 0; b < 4; ++b)
+                for (int kb = 0; kb < 2; ++kb) {
+                  LO col = dofs(e, b, kb);
+                  if (col < 0 || dir(col)) continue;
+                  double v = wts(e, a, ka) * wts(e, b, kb) * Ke[a][b];
+                  local.sumIntoValues(row, &col, 1, &v, false, true);
+                }
+            }
+        });
+  }
+  A->endAssembly();
+  A->beginModify();
+  {
+    const auto owned = mesh_.ownedMap();
+    const auto colMap = A->getColMap();
+    for (LO i = 0; i < static_cast<LO>(owned->getNodeNumElements()); ++i)
+      if (dirichlet_[i]) {  // overlap ids of owned nodes equal their owned ids
+        const LO col = colMap->getLocalElement(owned->getGlobalElement(i));
+        const double one = 1.0;
+        A->replaceLocalValues(i, 1, &one, &col);
+      }
+  }
+  A->endModify();
+  return A;
+}
+
+namespace {
+/// f sampled at the 2x2 Gauss points of every local cell (host evaluation of the expression).
+Kokkos::View<double* [4], DeviceType> sampleAtGaussPoints(const mesh::Q1Mesh& mesh, const core::Expression& f, double t) {
+  const LO nc = mesh.numLocalCells();
+  Kokkos::View<double* [4], DeviceType> fq("fq", nc);
+  auto h = Kokkos::create_mirror_view(fq);
+  const auto& X = mesh.cornerCoordsHost;
+  for (LO e = 0; e < nc; ++e)
+    for (int q = 0; q < 4; ++q) {
+      if (f.isConstant()) {
+        h(e, q) = f(0, 0, 0);
+        continue;
+      }
+      double N[4], ds[4], dr[4];
+      q1Shape(gauss2Point(q & 1), gauss2Point(q >> 1), N, ds, dr);
+      double x = 0, y = 0;
+      for (int c = 0; c < 4; ++c) x += N[c] * X(e, c, 0), y += N[c] * X(e, c, 1);
+      h(e, q) = f(x, y, t);
+    }
+  Kokkos::deep_copy(fq, h);
+  return fq;
+}
+}  // namespace
+
+void Q1Assembler::assembleLoad(const core::Expression& f, double t, double scale, Vector& out, bool accumulate) const {
+  Vector overlap(mesh_.overlapMap());
+  {
+    const auto fq = sampleAtGaussPoints(mesh_, f, t);
+    auto y = overlap.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+    Kokkos::deep_copy(y, 0.0);
+    const auto X = mesh_.cornerCoords;
+    const auto dofs = mesh_.cornerDofs;
+    const auto wts = mesh_.cornerWeights;
+    const auto dir = dirichletView_;
+    Kokkos::parallel_for(
+        "signorini::assembleLoad", Kokkos::RangePolicy<ExecSpace>(0, mesh_.numLocalCells()),
+        KOKKOS_LAMBDA(const LO e) {
+          double Xe[4][2], be[4] = {};
+          for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
+          for (int q = 0; q < 4; ++q) {
+            double N[4], gx[4], gy[4];
+            const double w = kGauss2Weight * kGauss2Weight *
+                             q1Gradients(Xe, gauss2Point(q & 1), gauss2Point(q >> 1), N, gx, gy);
+            for (int a = 0; a < 4; ++a) be[a] += w * scale * fq(e, q) * N[a];
+          }
+          for (int a = 0; a < 4; ++a)
+            for (int k = 0; k < 2; ++k) {
+              const LO row = dofs(e, a, k);
+              if (row >= 0 && !dir(row)) Kokkos::atomic_add(&y(row, 0), wts(e, a, k) * be[a]);
+            }
+        });
+  }
+  if (!accumulate) out.putScalar(0.0);
+  out.doExport(overlap, *exporter_, Tpetra::ADD);
+}
+
+void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned mask, double scale, Vector& out) const {
+  if (mask == 0) return;
+  Vector overlap(mesh_.overlapMap());
+  {
+    auto y = overlap.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    Kokkos::deep_copy(y, 0.0);
+    for (const auto& be : mesh_.boundaryEdges()) {
+      if (!(be.segments & mask)) continue;
+      const double len = be.length();
+      for (int g = 0; g < 2; ++g) {
+        const double s = gauss2Point(g);
+        const double x = (1 - s) * be.x[0][0] + s * be.x[1][0], yy = (1 - s) * be.x[0][1] + s * be.x[1][1];
+        const double v = scale * kGauss2Weight * len * q(x, yy, t);
+        if (!dirichlet_[be.node[0]]) y(be.node[0], 0) += v * (1 - s);
+        if (!dirichlet_[be.node[1]]) y(be.node[1], 0) += v * s;
+      }
+    }
+  }
+  out.doExport(overlap, *exporter_, Tpetra::ADD);
+}
+
+void Q1Assembler::zeroDirichlet(Vector& v) const {
+  auto h = v.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (size_t i = 0; i < h.extent(0); ++i)
+    if (dirichlet_[i]) h(i, 0) = 0.0;
+}
+
+void Q1Assembler::toOverlap(const Vector& owned, Vector& overlap) const {
+  overlap.doImport(owned, *importer_, Tpetra::INSERT);
+}
+
+std::pair<double, double> Q1Assembler::errorNorms(const Vector& uOwned, const core::Expression& exact, double t) const {
+  Vector u(mesh_.overlapMap());
+  toOverlap(uOwned, u);
+  auto uh = u.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto& X = mesh_.cornerCoordsHost;
+  const auto& dofs = mesh_.cornerDofsHost;
+  const auto& wts = mesh_.cornerWeightsHost;
+  static const double gp[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
+  static const double gw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+  const double eps = 1e-6 * mesh_.hMin();
+  double l2 = 0, h1 = 0;
+  for (LO e = 0; e < mesh_.numLocalCells(); ++e) {
+    double Xe[4][2], ue[4];
+    for (int c = 0; c < 4; ++c) {
+      Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
+      ue[c] = 0;
+      for (int k = 0; k < 2; ++k)
+        if (dofs(e, c, k) >= 0) ue[c] += wts(e, c, k) * uh(dofs(e, c, k), 0);
+    }
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double N[4], gx[4], gy[4];
+        const double w = gw[i] * gw[j] * q1Gradients(Xe, gp[i], gp[j], N, gx, gy);
+        double x = 0, y = 0, v = 0, vx = 0, vy = 0;
+        for (int c = 0; c < 4; ++c) {
+          x += N[c] * Xe[c][0], y += N[c] * Xe[c][1];
+          v += N[c] * ue[c], vx += gx[c] * ue[c], vy += gy[c] * ue[c];
+        }
+        const double d = v - exact(x, y, t);
+        const double dx = vx - (exact(x + eps, y, t) - exact(x - eps, y, t)) / (2 * eps);
+        const double dy = vy - (exact(x, y + eps, t) - exact(x, y - eps, t)) / (2 * eps);
+        l2 += w * d * d;
+        h1 += w * (dx * dx + dy * dy);
+      }
+  }
+  double local[2] = {l2, h1}, global[2];
+  Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_SUM, 2, local, global);
+  return {std::sqrt(global[0]), std::sqrt(global[1])};
+}
+
+double Q1Assembler::evaluate(const Vector& uOverlap, double x, double y) const {
+  double s, r;
+  const LO e = mesh_.locate(x, y, s, r);
+  double local[2] = {0, 0}, global[2];
+  if (e >= 0) {
+    auto uh = uOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+    double N[4], ds[4], dr[4];
+    q1Shape(s, r, N, ds, dr);
+    for (int c = 0; c < 4; ++c)
+      for (int k = 0; k < 2; ++k)
+        if (mesh_.cornerDofsHost(e, c, k) >= 0)
+          local[0] += N[c] * mesh_.cornerWeightsHost(e, c, k) * uh(mesh_.cornerDofsHost(e, c, k), 0);
+    local[1] = 1;
+  }
+  Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_SUM, 2, local, global);
+  return global[1] > 0 ? global[0] / global[1] : std::numeric_limits<double>::quiet_NaN();
+}
+
+double Q1Assembler::area() const {
+  double a = 0;
+  const auto X = mesh_.cornerCoords;
+  Kokkos::parallel_reduce(
+      "signorini::area", Kokkos::RangePolicy<ExecSpace>(0, mesh_.numLocalCells()),
+      KOKKOS_LAMBDA(const LO e, double& sum) {
+        double Xe[4][2];
+        for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
+        for (int q = 0; q < 4; ++q) {
+          double N[4], gx[4], gy[4];
+          sum += kGauss2Weight * kGauss2Weight * q1Gradients(Xe, gauss2Point(q & 1), gauss2Point(q >> 1), N, gx, gy);
+        }
+      },
+      a);
+  double g;
+  Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_SUM, a, Teuchos::outArg(g));
+  return g;
+}
+
+}  // namespace signorini::fem

@@ -1,0 +1,54 @@
+#pragma once
+/// \file Q1Assembler.hpp
+/// Kokkos assembly of bilinear finite element matrices and vectors on one Q1Mesh into Tpetra
+/// objects: c_M M + c_K K (mass and stiffness, paper (3.7)), loads, Neumann loads; plus the
+/// error norms against an exact solution and point evaluation (probes). Hanging nodes are
+/// eliminated through the corner constraints of the mesh; homogeneous Dirichlet nodes get
+/// identity rows and zero columns.
+#include <Tpetra_Export.hpp>
+#include <Tpetra_FECrsGraph.hpp>
+#include <Tpetra_Import.hpp>
+
+#include "Expression.hpp"
+#include "Q1Mesh.hpp"
+
+namespace signorini::fem {
+
+class Q1Assembler {
+ public:
+  using Graph = Tpetra::FECrsGraph<LO, GO, Node>;
+  /// \param dirichlet  flags on the mesh's overlap map (from Q1Mesh::nodesOnSegments).
+  Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet);
+
+  const mesh::Q1Mesh& mesh() const { return mesh_; }
+  /// massCoeff * M_rho + stiffCoeff * K_kappa with M_ij = int rho phi_i phi_j and
+  /// K_ij = int kappa grad phi_i . grad phi_j; Dirichlet rows/columns replaced by the identity.
+  RCP<CrsMatrix> assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa) const;
+  /// out (owned) = scale * int f(., t) phi_i dx, or += if \p accumulate.
+  void assembleLoad(const core::Expression& f, double t, double scale, Vector& out, bool accumulate = false) const;
+  /// out (owned) += scale * int_{edges in mask} q(., t) phi_i ds.
+  void addBoundaryLoad(const core::Expression& q, double t, unsigned mask, double scale, Vector& out) const;
+  /// Sets the Dirichlet entries of an owned vector to zero.
+  void zeroDirichlet(Vector& v) const;
+  /// Values on the overlap map (owned + shared) of an owned vector.
+  void toOverlap(const Vector& owned, Vector& overlap) const;
+  /// L2 norm and H1 seminorm of u_h - u_exact(., t) (3x3 Gauss; gradient of u_exact by central differences).
+  std::pair<double, double> errorNorms(const Vector& uOwned, const core::Expression& exact, double t) const;
+  /// u_h at a point (every rank gets the value); NaN if the point is outside the mesh.
+  double evaluate(const Vector& uOverlap, double x, double y) const;
+  /// Total area of the mesh (sum over all ranks).
+  double area() const;
+
+  const std::vector<char>& dirichletFlags() const { return dirichlet_; }
+  RCP<const Graph> graph() const { return graph_; }
+
+ private:
+  const mesh::Q1Mesh& mesh_;
+  std::vector<char> dirichlet_;
+  Kokkos::View<int*, DeviceType> dirichletView_;
+  RCP<Graph> graph_;
+  RCP<const Tpetra::Export<LO, GO, Node>> exporter_;
+  RCP<const Tpetra::Import<LO, GO, Node>> importer_;
+};
+
+}  // namespace signorini::fem

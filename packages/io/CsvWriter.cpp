@@ -1,0 +1,72 @@
+#include "CsvWriter.hpp"
+
+#include <cstdio>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+#include "Error.hpp"
+
+namespace signorini::io {
+
+CsvWriter::CsvWriter(std::string path, std::vector<std::string> columns)
+    : path_(std::move(path)), columns_(std::move(columns)) {
+  out_.open(path_ + ".part", std::ios::out | std::ios::trunc);
+  if (!out_) SIGNORINI_USER_ERROR("cannot create output file '" << path_ << ".part'");
+  for (size_t i = 0; i < columns_.size(); ++i) out_ << (i ? "," : "") << columns_[i];
+  out_ << "\n" << std::setprecision(17);
+  out_.flush();
+}
+
+CsvWriter::~CsvWriter() {
+  if (!done_) abandon();
+}
+
+void CsvWriter::row(const std::vector<double>& values) {
+  if (values.size() != columns_.size()) throw std::logic_error("CsvWriter::row: wrong number of values");
+  for (size_t i = 0; i < values.size(); ++i) out_ << (i ? "," : "") << values[i];
+  out_ << "\n";
+  out_.flush();
+}
+
+void CsvWriter::commit() {
+  if (done_) return;
+  out_.close();
+  if (std::rename((path_ + ".part").c_str(), path_.c_str()) != 0)
+    SIGNORINI_USER_ERROR("cannot rename '" << path_ << ".part' to '" << path_ << "'");
+  done_ = true;
+}
+
+void CsvWriter::abandon() {
+  if (done_) return;
+  out_.close();
+  std::remove((path_ + ".part").c_str());
+  done_ = true;
+}
+
+size_t CsvTable::column(const std::string& name) const {
+  for (size_t i = 0; i < columns.size(); ++i)
+    if (columns[i] == name) return i;
+  throw std::out_of_range("CSV column '" + name + "' not found");
+}
+
+CsvTable readCsv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) SIGNORINI_USER_ERROR("cannot read '" << path << "'");
+  CsvTable t;
+  std::string line;
+  if (std::getline(in, line)) {
+    std::stringstream ss(line);
+    for (std::string c; std::getline(ss, c, ',');) t.columns.push_back(c);
+  }
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    std::stringstream ss(line);
+    std::vector<double> row;
+    for (std::string c; std::getline(ss, c, ',');) row.push_back(std::stod(c));
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+}  // namespace signorini::io

@@ -1,0 +1,45 @@
+#pragma once
+/// \file CsvWriter.hpp
+/// A CSV table written under "<path>.part" and renamed to <path> by commit(), so an interrupted
+/// or failed run never leaves a torn file under the final name. Rows are flushed as written.
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace signorini::io {
+
+class CsvWriter {
+ public:
+  /// Opens "<path>.part" and writes the header. Throws core::UserError naming the path if it
+  /// cannot be created.
+  CsvWriter(std::string path, std::vector<std::string> columns);
+  ~CsvWriter();  ///< abandons the file unless committed
+  CsvWriter(const CsvWriter&) = delete;
+  CsvWriter& operator=(const CsvWriter&) = delete;
+
+  /// One row; values.size() must equal the number of columns. Doubles at full precision.
+  void row(const std::vector<double>& values);
+  /// Renames "<path>.part" to path.
+  void commit();
+  /// Removes the temporary file.
+  void abandon();
+  const std::vector<std::string>& columns() const { return columns_; }
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+  std::vector<std::string> columns_;
+  std::ofstream out_;
+  bool done_ = false;
+};
+
+/// Reads a CSV file written by CsvWriter: header names and rows of numbers.
+struct CsvTable {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  /// Index of a column; throws std::out_of_range if absent.
+  size_t column(const std::string& name) const;
+};
+CsvTable readCsv(const std::string& path);
+
+}  // namespace signorini::io

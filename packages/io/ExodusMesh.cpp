@@ -1,0 +1,530 @@
+/// \file ExodusMesh.cpp
+/// Exodus II mesh input and result-series output on the Exodus II C API (version 6.02).
+#include "ExodusMesh.hpp"
+
+#include "Error.hpp"
+
+#include <exodusII.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+
+namespace signorini::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Silences the Exodus library: no messages on stderr, no abort(); errors reach us as return
+/// codes and become exceptions.
+void silenceExodus() { ex_opts(0); }
+
+/// The last message the Exodus library recorded, for error reports.
+std::string lastExodusMessage() {
+  const char* message = nullptr;
+  const char* function = nullptr;
+  int code = 0;
+  ex_get_err(&message, &function, &code);
+  std::string text;
+  if (function && *function) text += std::string(function) + ": ";
+  if (message && *message) text += message;
+  return text;
+}
+
+/// Throws a UserError naming the file when an Exodus call failed (negative status).
+void checkExodus(int status, const char* call, const std::string& path) {
+  if (status < 0) {
+    SIGNORINI_USER_ERROR("Exodus II file '" << path << "': " << call << " failed ("
+                                            << lastExodusMessage() << ")");
+  }
+}
+
+/// Closes an Exodus file id when the scope ends.
+class ExodusFileGuard {
+ public:
+  explicit ExodusFileGuard(int exoid) : exoid_(exoid) {}
+  ~ExodusFileGuard() {
+    if (exoid_ >= 0) ex_close(exoid_);
+  }
+  ExodusFileGuard(const ExodusFileGuard&) = delete;
+  ExodusFileGuard& operator=(const ExodusFileGuard&) = delete;
+
+ private:
+  int exoid_;
+};
+
+std::string upperCase(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return text;
+}
+
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string::npos) return {};
+  const auto last = text.find_last_not_of(" \t\r\n");
+  return text.substr(first, last - first + 1);
+}
+
+/// Twice the signed area of a quad (positive when counter-clockwise).
+double twiceSignedArea(const QuadMesh& mesh, const std::array<int, 4>& quad) {
+  double sum = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const int a = quad[k], b = quad[(k + 1) % 4];
+    sum += mesh.x[a] * mesh.y[b] - mesh.x[b] * mesh.y[a];
+  }
+  return sum;
+}
+
+/// Names of the side sets, indexed like \p ids; unnamed ones become "sideset_<id>".
+std::vector<std::string> readSideSetNames(int exoid, const std::vector<int>& ids,
+                                          const std::string& path) {
+  std::vector<std::string> names(ids.size());
+  if (ids.empty()) return names;
+  const int usedLength = static_cast<int>(ex_inquire_int(exoid, EX_INQ_DB_MAX_USED_NAME_LENGTH));
+  const int nameLength = std::max(usedLength, static_cast<int>(MAX_NAME_LENGTH));
+  ex_set_max_name_length(exoid, nameLength);
+  std::vector<std::vector<char>> buffers(ids.size(), std::vector<char>(nameLength + 1, '\0'));
+  std::vector<char*> pointers;
+  for (auto& buffer : buffers) pointers.push_back(buffer.data());
+  checkExodus(ex_get_names(exoid, EX_SIDE_SET, pointers.data()), "ex_get_names(side sets)", path);
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    names[i] = trimmed(std::string(buffers[i].data()));
+    if (names[i].empty()) names[i] = "sideset_" + std::to_string(ids[i]);
+  }
+  return names;
+}
+
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Reading
+// ---------------------------------------------------------------------------------------------
+
+QuadMesh readExodusQuadMesh(const std::string& path) {
+  silenceExodus();
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "' does not exist or is not a file");
+  }
+  int cpuWordSize = static_cast<int>(sizeof(double));
+  int ioWordSize = 0;
+  float version = 0.0f;
+  const int exoid = ex_open(path.c_str(), EX_READ, &cpuWordSize, &ioWordSize, &version);
+  if (exoid < 0) {
+    SIGNORINI_USER_ERROR("cannot open '" << path << "' as an Exodus II file (unreadable or not "
+                                         << "Exodus II/netCDF)");
+  }
+  ExodusFileGuard guard(exoid);
+
+  ex_init_params init{};
+  checkExodus(ex_get_init_ext(exoid, &init), "ex_get_init_ext", path);
+  if (init.num_dim != 2) {
+    SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "' is " << init.num_dim
+                                                 << "-dimensional; a 2D mesh is required");
+  }
+  if (init.num_nodes <= 0 || init.num_elem <= 0 || init.num_elem_blk <= 0) {
+    SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "' contains no elements");
+  }
+
+  QuadMesh mesh;
+  const auto numNodes = static_cast<std::size_t>(init.num_nodes);
+  mesh.x.resize(numNodes);
+  mesh.y.resize(numNodes);
+  checkExodus(ex_get_coord(exoid, mesh.x.data(), mesh.y.data(), nullptr), "ex_get_coord", path);
+
+  // Element blocks, concatenated in file order: the position in `quads` is then the Exodus
+  // internal element number minus one, which is what side sets refer to.
+  std::vector<int> blockIds(static_cast<std::size_t>(init.num_elem_blk));
+  checkExodus(ex_get_ids(exoid, EX_ELEM_BLOCK, blockIds.data()), "ex_get_ids(element blocks)",
+              path);
+  mesh.quads.reserve(static_cast<std::size_t>(init.num_elem));
+  for (const int blockId : blockIds) {
+    ex_block block{};
+    block.id = blockId;
+    block.type = EX_ELEM_BLOCK;
+    checkExodus(ex_get_block_param(exoid, &block), "ex_get_block_param", path);
+    if (block.num_entry == 0) continue;
+    const std::string type = upperCase(trimmed(block.topology));
+    if (type.compare(0, 4, "QUAD") != 0 || block.num_nodes_per_entry != 4) {
+      SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "': element block " << blockId
+                                                   << " has element type '" << block.topology
+                                                   << "' with " << block.num_nodes_per_entry
+                                                   << " nodes; only QUAD4 elements are supported");
+    }
+    std::vector<int> connectivity(static_cast<std::size_t>(block.num_entry) * 4);
+    checkExodus(ex_get_conn(exoid, EX_ELEM_BLOCK, blockId, connectivity.data(), nullptr, nullptr),
+                "ex_get_conn", path);
+    for (std::size_t e = 0; e < static_cast<std::size_t>(block.num_entry); ++e) {
+      std::array<int, 4> quad{};
+      for (int k = 0; k < 4; ++k) {
+        const int node = connectivity[4 * e + k];
+        if (node < 1 || static_cast<std::size_t>(node) > numNodes) {
+          SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "': element block " << blockId
+                                                       << " refers to node " << node
+                                                       << " which does not exist");
+        }
+        quad[k] = node - 1;
+      }
+      mesh.quads.push_back(quad);
+    }
+  }
+
+  // Exodus orders QUAD4 nodes counter-clockwise; repair clockwise quads (some 2D generators
+  // write them) by reversing them, and remember the side renumbering this implies.
+  std::vector<bool> reversed(mesh.quads.size(), false);
+  for (std::size_t q = 0; q < mesh.quads.size(); ++q) {
+    auto& quad = mesh.quads[q];
+    const double area2 = twiceSignedArea(mesh, quad);
+    if (area2 < 0.0) {
+      std::swap(quad[1], quad[3]);  // (0,1,2,3) -> (0,3,2,1): old side s becomes side 3-s
+      reversed[q] = true;
+    } else if (area2 == 0.0) {
+      SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "': element " << q + 1
+                                                   << " has zero area");
+    }
+  }
+
+  std::vector<int> sideSetIds(static_cast<std::size_t>(init.num_side_sets));
+  if (!sideSetIds.empty()) {
+    checkExodus(ex_get_ids(exoid, EX_SIDE_SET, sideSetIds.data()), "ex_get_ids(side sets)", path);
+  }
+  const auto sideSetNames = readSideSetNames(exoid, sideSetIds, path);
+  for (std::size_t s = 0; s < sideSetIds.size(); ++s) {
+    const int setId = sideSetIds[s];
+    int numSides = 0, numDistFactors = 0;
+    checkExodus(ex_get_set_param(exoid, EX_SIDE_SET, setId, &numSides, &numDistFactors),
+                "ex_get_set_param", path);
+    std::vector<int> elements(static_cast<std::size_t>(numSides));
+    std::vector<int> sides(static_cast<std::size_t>(numSides));
+    if (numSides > 0) {
+      checkExodus(ex_get_set(exoid, EX_SIDE_SET, setId, elements.data(), sides.data()),
+                  "ex_get_set", path);
+    }
+    auto& entries = mesh.sideSets[sideSetNames[s]];  // sets sharing a name are merged
+    entries.reserve(entries.size() + elements.size());
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      const int element = elements[i], side = sides[i];
+      if (element < 1 || static_cast<std::size_t>(element) > mesh.quads.size() || side < 1 ||
+          side > 4) {
+        SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "': side set " << setId << " ('"
+                                                     << sideSetNames[s] << "') has invalid entry "
+                                                     << "(element " << element << ", side "
+                                                     << side << ")");
+      }
+      const int quad = element - 1;
+      const int localSide = reversed[quad] ? 3 - (side - 1) : side - 1;
+      entries.push_back({quad, localSide});
+    }
+  }
+  return mesh;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Writing
+// ---------------------------------------------------------------------------------------------
+
+namespace {
+
+/// Pointers to the characters of \p names, for the Exodus calls that take `char*[]`.
+std::vector<char*> namePointers(std::vector<std::string>& names) {
+  std::vector<char*> pointers;
+  pointers.reserve(names.size());
+  for (auto& name : names) pointers.push_back(name.data());
+  return pointers;
+}
+
+std::size_t longestName(const std::vector<std::string>& names) {
+  std::size_t longest = 0;
+  for (const auto& name : names) longest = std::max(longest, name.size());
+  return longest;
+}
+
+}  // namespace
+
+struct ExodusSeriesWriter::Impl {
+  std::string basePath;
+  std::vector<std::string> nodalNames, cellNames;
+  std::string sideSetName;
+  std::vector<std::string> sideNames;
+
+  // The file being written (exoid >= 0 while open).
+  int exoid = -1;
+  long meshId = 0;
+  std::string finalPath, partPath;
+  std::size_t numNodes = 0, numCells = 0, numSides = 0;
+  int numSteps = 0;
+
+  long filesStarted = 0;  ///< index of the next file in the series
+  bool finished = false;  ///< close() or abandon() was called
+  std::vector<std::string> writtenFiles;
+
+  /// "<base>.e" for the first mesh, "<base>.e-s.NNNN" for the following ones.
+  std::string seriesFileName(long index) const {
+    if (index == 0) return basePath + ".e";
+    char suffix[32];
+    std::snprintf(suffix, sizeof suffix, ".e-s.%04ld", index);
+    return basePath + suffix;
+  }
+
+  /// Removes "<base>.e-s.<digits>" files that an earlier run with the same base left behind.
+  void removeStaleSeriesFiles() const {
+    const fs::path base(basePath);
+    const fs::path directory = base.has_parent_path() ? base.parent_path() : fs::path(".");
+    const std::string stem = base.filename().string() + ".e-s.";
+    std::error_code ec;
+    fs::directory_iterator it(directory, ec), end;
+    std::vector<fs::path> stale;
+    for (; !ec && it != end; it.increment(ec)) {
+      const std::string name = it->path().filename().string();
+      if (name.size() > stem.size() && name.compare(0, stem.size(), stem) == 0 &&
+          std::all_of(name.begin() + static_cast<long>(stem.size()), name.end(),
+                      [](unsigned char c) { return std::isdigit(c) != 0; })) {
+        stale.push_back(it->path());
+      }
+    }
+    for (const auto& file : stale) fs::remove(file, ec);
+  }
+
+  void check(int status, const char* call) const { checkExodus(status, call, partPath); }
+
+  /// Creates the next file of the series and writes its mesh and variable definitions.
+  void startFile(long id, const QuadMesh& mesh) {
+    if (filesStarted == 0) removeStaleSeriesFiles();
+    finalPath = seriesFileName(filesStarted);
+    partPath = finalPath + ".part";
+    ++filesStarted;
+
+    int cpuWordSize = 8, ioWordSize = 8;
+    exoid = ex_create(partPath.c_str(), EX_CLOBBER, &cpuWordSize, &ioWordSize);
+    if (exoid < 0) {
+      SIGNORINI_USER_ERROR("cannot create Exodus II output file '"
+                           << partPath << "' (for '" << finalPath
+                           << "'): check that the output directory exists and is writable");
+    }
+    meshId = id;
+    numSteps = 0;
+    numNodes = mesh.x.size();
+    numCells = mesh.quads.size();
+    const auto sideSet = mesh.sideSets.find(sideSetName);
+    numSides = sideSet == mesh.sideSets.end() ? 0 : sideSet->second.size();
+
+    // Definitions first: netCDF classic files rewrite everything written after the header
+    // whenever the header grows, so all dimensions and variables are defined before any data.
+    std::vector<std::string> allNames = nodalNames;
+    allNames.insert(allNames.end(), cellNames.begin(), cellNames.end());
+    allNames.insert(allNames.end(), sideNames.begin(), sideNames.end());
+    allNames.push_back(sideSetName);
+    const auto nameLength = longestName(allNames);
+    if (nameLength > static_cast<std::size_t>(MAX_NAME_LENGTH)) {
+      check(ex_set_max_name_length(exoid, static_cast<int>(nameLength)), "ex_set_max_name_length");
+    }
+    check(ex_put_init(exoid, "signorini results", 2, static_cast<int64_t>(numNodes),
+                      static_cast<int64_t>(numCells), 1, 0, numSides > 0 ? 1 : 0),
+          "ex_put_init");
+    std::vector<std::string> coordinateNames{"x", "y"};
+    check(ex_put_coord_names(exoid, namePointers(coordinateNames).data()), "ex_put_coord_names");
+    check(ex_put_block(exoid, EX_ELEM_BLOCK, 1, "QUAD4", static_cast<int64_t>(numCells), 4, 0, 0,
+                       0),
+          "ex_put_block");
+    check(ex_put_name(exoid, EX_ELEM_BLOCK, 1, "domain"), "ex_put_name(element block)");
+    if (numSides > 0) {
+      check(ex_put_set_param(exoid, EX_SIDE_SET, 1, static_cast<int64_t>(numSides), 0),
+            "ex_put_set_param");
+      check(ex_put_name(exoid, EX_SIDE_SET, 1, sideSetName.c_str()), "ex_put_name(side set)");
+    }
+    defineVariables(EX_NODAL, nodalNames);
+    defineVariables(EX_ELEM_BLOCK, cellNames);
+    if (numSides > 0) defineVariables(EX_SIDE_SET, sideNames);
+
+    // Mesh data.
+    check(ex_put_coord(exoid, mesh.x.data(), mesh.y.data(), nullptr), "ex_put_coord");
+    std::vector<int> connectivity(4 * numCells);
+    for (std::size_t q = 0; q < numCells; ++q) {
+      for (int k = 0; k < 4; ++k) connectivity[4 * q + k] = mesh.quads[q][k] + 1;
+    }
+    check(ex_put_conn(exoid, EX_ELEM_BLOCK, 1, connectivity.data(), nullptr, nullptr),
+          "ex_put_conn");
+    if (numSides > 0) {
+      std::vector<int> elements(numSides), sides(numSides);
+      for (std::size_t i = 0; i < numSides; ++i) {
+        elements[i] = sideSet->second[i][0] + 1;
+        sides[i] = sideSet->second[i][1] + 1;
+      }
+      check(ex_put_set(exoid, EX_SIDE_SET, 1, elements.data(), sides.data()), "ex_put_set");
+    }
+  }
+
+  /// Declares result variables of one kind; blocks and sets get an all-true truth table.
+  void defineVariables(ex_entity_type type, std::vector<std::string> names) {
+    if (names.empty()) return;
+    const int count = static_cast<int>(names.size());
+    check(ex_put_variable_param(exoid, type, count), "ex_put_variable_param");
+    check(ex_put_variable_names(exoid, type, count, namePointers(names).data()),
+          "ex_put_variable_names");
+    if (type != EX_NODAL) {
+      std::vector<int> truthTable(names.size(), 1);  // one block or set
+      check(ex_put_truth_table(exoid, type, 1, count, truthTable.data()), "ex_put_truth_table");
+    }
+  }
+
+  /// Closes the current file and gives it its final name.
+  void finishFile() {
+    if (exoid < 0) return;
+    const int status = ex_close(exoid);
+    exoid = -1;
+    checkExodus(status, "ex_close", partPath);
+    std::error_code ec;
+    fs::rename(partPath, finalPath, ec);
+    if (ec) {
+      SIGNORINI_USER_ERROR("cannot rename Exodus II output file '" << partPath << "' to '"
+                                                                  << finalPath
+                                                                  << "': " << ec.message());
+    }
+    writtenFiles.push_back(finalPath);
+  }
+
+  /// Closes the current file and deletes it.
+  void dropFile() {
+    if (exoid < 0) return;
+    ex_close(exoid);
+    exoid = -1;
+    std::error_code ec;
+    fs::remove(partPath, ec);
+  }
+
+  /// Throws std::logic_error unless the data fit \p mesh and the declared variables.
+  void checkData(const QuadMesh& mesh, const std::vector<std::vector<double>>& nodal,
+                 const std::vector<std::vector<double>>& cell,
+                 const std::vector<std::vector<double>>& side) const {
+    auto fail = [](const std::string& what) {
+      throw std::logic_error("ExodusSeriesWriter::write: " + what);
+    };
+    if (mesh.x.size() != mesh.y.size()) fail("mesh has different numbers of x and y coordinates");
+    if (mesh.x.empty() || mesh.quads.empty()) fail("mesh is empty");
+    for (const auto& quad : mesh.quads) {
+      for (const int v : quad) {
+        if (v < 0 || static_cast<std::size_t>(v) >= mesh.x.size()) fail("quad refers to no vertex");
+      }
+    }
+    const auto sideSet = mesh.sideSets.find(sideSetName);
+    const std::size_t sidesInMesh = sideSet == mesh.sideSets.end() ? 0 : sideSet->second.size();
+    if (sideSet != mesh.sideSets.end()) {
+      for (const auto& entry : sideSet->second) {
+        if (entry[0] < 0 || static_cast<std::size_t>(entry[0]) >= mesh.quads.size() ||
+            entry[1] < 0 || entry[1] > 3) {
+          fail("side set '" + sideSetName + "' has an invalid (quad, side) entry");
+        }
+      }
+    }
+    auto checkFields = [&](const std::vector<std::vector<double>>& fields,
+                           const std::vector<std::string>& names, std::size_t length,
+                           const char* kind) {
+      if (fields.size() != names.size()) {
+        fail(std::string("expected ") + std::to_string(names.size()) + " " + kind +
+             " fields, got " + std::to_string(fields.size()));
+      }
+      for (std::size_t i = 0; i < fields.size(); ++i) {
+        if (fields[i].size() != length) {
+          fail(std::string(kind) + " field '" + names[i] + "' has " +
+               std::to_string(fields[i].size()) + " values, expected " + std::to_string(length));
+        }
+      }
+    };
+    checkFields(nodal, nodalNames, mesh.x.size(), "nodal");
+    checkFields(cell, cellNames, mesh.quads.size(), "cell");
+    if (!(sidesInMesh == 0 && side.empty())) checkFields(side, sideNames, sidesInMesh, "side");
+  }
+
+  /// Appends one time step to the open file.
+  void appendStep(double time, const std::vector<std::vector<double>>& nodal,
+                  const std::vector<std::vector<double>>& cell,
+                  const std::vector<std::vector<double>>& side) {
+    const int step = numSteps + 1;
+    check(ex_put_time(exoid, step, &time), "ex_put_time");
+    for (std::size_t i = 0; i < nodal.size(); ++i) {
+      check(ex_put_var(exoid, step, EX_NODAL, static_cast<int>(i) + 1, 1,
+                       static_cast<int64_t>(numNodes), nodal[i].data()),
+            "ex_put_var(nodal)");
+    }
+    for (std::size_t i = 0; i < cell.size(); ++i) {
+      check(ex_put_var(exoid, step, EX_ELEM_BLOCK, static_cast<int>(i) + 1, 1,
+                       static_cast<int64_t>(numCells), cell[i].data()),
+            "ex_put_var(element)");
+    }
+    if (numSides > 0) {
+      for (std::size_t i = 0; i < side.size(); ++i) {
+        check(ex_put_var(exoid, step, EX_SIDE_SET, static_cast<int>(i) + 1, 1,
+                         static_cast<int64_t>(numSides), side[i].data()),
+              "ex_put_var(side set)");
+      }
+    }
+    numSteps = step;
+  }
+};
+
+ExodusSeriesWriter::ExodusSeriesWriter(std::string basePath, std::vector<std::string> nodalNames,
+                                       std::vector<std::string> cellNames, std::string sideSetName,
+                                       std::vector<std::string> sideNames)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->basePath = std::move(basePath);
+  impl_->nodalNames = std::move(nodalNames);
+  impl_->cellNames = std::move(cellNames);
+  impl_->sideSetName = std::move(sideSetName);
+  impl_->sideNames = std::move(sideNames);
+}
+
+ExodusSeriesWriter::~ExodusSeriesWriter() {
+  try {
+    close();
+  } catch (...) {
+    // A destructor must not throw; the file stays under its ".part" name.
+  }
+}
+
+void ExodusSeriesWriter::write(long meshId, const QuadMesh& mesh, double time,
+                               const std::vector<std::vector<double>>& nodal,
+                               const std::vector<std::vector<double>>& cell,
+                               const std::vector<std::vector<double>>& side) {
+  Impl& w = *impl_;
+  if (w.finished) throw std::logic_error("ExodusSeriesWriter::write called after close/abandon");
+  silenceExodus();
+  w.checkData(mesh, nodal, cell, side);
+  const bool newMesh = w.exoid < 0 || meshId != w.meshId;
+  if (!newMesh) {
+    const auto sideSet = mesh.sideSets.find(w.sideSetName);
+    const std::size_t sidesInMesh = sideSet == mesh.sideSets.end() ? 0 : sideSet->second.size();
+    if (mesh.x.size() != w.numNodes || mesh.quads.size() != w.numCells ||
+        sidesInMesh != w.numSides) {
+      throw std::logic_error("ExodusSeriesWriter::write: mesh " + std::to_string(meshId) +
+                             " changed size without a new mesh id");
+    }
+  }
+  if (newMesh) w.finishFile();
+  try {
+    if (newMesh) w.startFile(meshId, mesh);
+    w.appendStep(time, nodal, cell, side);
+  } catch (...) {
+    w.dropFile();  // never leave a half-written file that close() would promote
+    throw;
+  }
+}
+
+std::vector<std::string> ExodusSeriesWriter::close() {
+  impl_->finished = true;
+  silenceExodus();
+  impl_->finishFile();
+  return impl_->writtenFiles;
+}
+
+void ExodusSeriesWriter::abandon() {
+  impl_->finished = true;
+  silenceExodus();
+  impl_->dropFile();
+}
+
+}  // namespace signorini::io

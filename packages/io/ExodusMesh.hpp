@@ -1,0 +1,83 @@
+#pragma once
+/// \file ExodusMesh.hpp
+/// Exodus II input (coarse QUAD4 meshes with named side sets) and output (result time series
+/// on meshes that may change from one output step to the next). Serial: the caller gathers
+/// the data on one rank and calls these functions there.
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace signorini::io {
+
+/// A 2D quadrilateral mesh as read from or written to Exodus II.
+struct QuadMesh {
+  std::vector<double> x, y;                ///< vertex coordinates (length units of the deck)
+  std::vector<std::array<int, 4>> quads;   ///< 0-based vertex ids, counter-clockwise (Exodus QUAD4 order)
+  /// Named side sets: name -> list of (quad index, local side s), side s joins vertices s and (s+1)%4
+  /// (Exodus side numbering minus one).
+  std::map<std::string, std::vector<std::array<int, 2>>> sideSets;
+};
+
+/// Reads the coarse mesh of an Exodus II file: all element blocks must be QUAD4 (or QUAD),
+/// side sets keep their names (unnamed ones become "sideset_<id>").
+/// Clockwise quads are reversed to counter-clockwise order (their sides renumbered to match).
+/// Throws core::UserError naming the file for a missing/unreadable file, a non-quad block,
+/// a 3D mesh, a mesh without elements, a zero-area quad or an invalid side-set entry.
+QuadMesh readExodusQuadMesh(const std::string& path);
+
+/// Writes a time series of results in Exodus II that ParaView opens as one series even
+/// though the mesh changes: one file per distinct mesh, named so that ParaView groups them.
+/// Each file is written under a temporary name and renamed when complete, so an interrupted
+/// run never leaves a torn file under a final name.
+///
+/// File naming (the Exodus "restart" convention):
+///   - first mesh:  "<basePath>.e"            (a run that never changes its mesh writes only this)
+///   - next meshes: "<basePath>.e-s.0001", "<basePath>.e-s.0002", ... (at least 4 digits)
+/// ParaView's legacy Exodus reader (vtkExodusFileSeriesReader::FindRestartedResults) and its
+/// IOSS reader (vtkIOSSFilesScanner::GetRelatedFiles) both match file names against
+/// "^(.*\.[eg][^-.]*)(-s.[0-9]+)?(\.[0-9]+\.[0-9]+)?$" (restart and partition suffixes
+/// optional), group every file that has the same "<name>.e" prefix, the unsuffixed first file
+/// included, and order them by their time values. So opening "<basePath>.e" (or any member)
+/// shows the whole run as one time series (checked with ParaView 5.11). Files being written
+/// are named "<final name>.part", which that pattern ignores. When the first file of a run is
+/// started, leftover "<basePath>.e-s.<digits>" files of an earlier run are deleted, so that
+/// ParaView does not mix them into this run's series.
+class ExodusSeriesWriter {
+ public:
+  /// \param basePath       output path without extension, e.g. "out/membrane"
+  /// \param nodalNames     names of nodal variables (u, v, a, ...)
+  /// \param cellNames      names of element variables (level, indicator, ...)
+  /// \param sideSetName    name of the one side set that carries side variables (e.g. "contact")
+  /// \param sideNames      names of side-set variables (lambda, gap, ...)
+  ExodusSeriesWriter(std::string basePath, std::vector<std::string> nodalNames,
+                     std::vector<std::string> cellNames, std::string sideSetName,
+                     std::vector<std::string> sideNames);
+  ~ExodusSeriesWriter();  ///< closes and finalises the current file
+  ExodusSeriesWriter(const ExodusSeriesWriter&) = delete;
+  ExodusSeriesWriter& operator=(const ExodusSeriesWriter&) = delete;
+
+  /// Appends one output time. When meshId differs from the previous call's, the current file
+  /// is finalised and a new one is started with this mesh (mesh.sideSets[sideSetName] gives the
+  /// sides carrying the side variables; an absent set means no sides).
+  /// nodal[i] has one value per vertex, cell[i] one per quad, side[i] one per side of the set.
+  /// Wrong counts or lengths, or a call after close()/abandon(), throw std::logic_error; a file
+  /// that cannot be created or written throws core::UserError naming it.
+  void write(long meshId, const QuadMesh& mesh, double time,
+             const std::vector<std::vector<double>>& nodal,
+             const std::vector<std::vector<double>>& cell,
+             const std::vector<std::vector<double>>& side);
+
+  /// Finalises the current file (idempotent). Returns the final file names written so far.
+  std::vector<std::string> close();
+
+  /// Drops the file being written (for a failed run): its temporary file is removed.
+  void abandon();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace signorini::io

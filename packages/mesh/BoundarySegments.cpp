@@ -1,0 +1,100 @@
+#include "BoundarySegments.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "Error.hpp"
+
+namespace signorini::mesh {
+namespace {
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\n");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\n");
+  return s.substr(b, e - b + 1);
+}
+}  // namespace
+
+BoundarySegments::BoundarySegments(const core::ParameterList& specs, const CoarseMesh& coarse) {
+  for (auto it = specs.begin(); it != specs.end(); ++it)
+    add(specs.name(it), Teuchos::any_cast<std::string>(specs.entry(it).getAny()), coarse);
+}
+
+BoundarySegments::BoundarySegments(const std::vector<std::pair<std::string, std::string>>& specs,
+                                   const CoarseMesh& coarse) {
+  for (const auto& [n, s] : specs) add(n, s, coarse);
+}
+
+void BoundarySegments::add(const std::string& name, const std::string& spec, const CoarseMesh& coarse) {
+  const std::string key = "Mesh/Boundary Segments/" + name;
+  if (segments_.size() >= 32) SIGNORINI_USER_ERROR(key << ": at most 32 boundary segments are supported");
+  Segment seg;
+  seg.name = name;
+  std::vector<std::string> parts;
+  std::stringstream ss(spec);
+  for (std::string part; std::getline(ss, part, ',');) parts.push_back(trim(part));
+  if (parts.empty() || parts[0].empty()) SIGNORINI_USER_ERROR(key << ": empty segment; expected \"<side set>[, x >= value]...\"");
+  seg.set = parts[0];
+  if (!coarse.hasSet(seg.set)) {
+    std::string list;
+    for (const auto& s : coarse.setNames()) list += (list.empty() ? "" : ", ") + s;
+    SIGNORINI_USER_ERROR(key << ": side set '" << seg.set << "' does not exist in " << coarse.source()
+                             << " (its side sets: " << (list.empty() ? "none" : list) << ")");
+  }
+  static const char* ops[4] = {">=", "<=", ">", "<"};
+  for (size_t i = 1; i < parts.size(); ++i) {
+    const std::string& c = parts[i];
+    Condition cond{};
+    if (c.empty() || (c[0] != 'x' && c[0] != 'y'))
+      SIGNORINI_USER_ERROR(key << ": condition '" << c << "' must start with x or y");
+    cond.coord = c[0] == 'x' ? 0 : 1;
+    std::string rest = trim(c.substr(1));
+    int op = -1;
+    for (int k = 0; k < 4 && op < 0; ++k)
+      if (rest.rfind(ops[k], 0) == 0) op = k;
+    if (op < 0) SIGNORINI_USER_ERROR(key << ": condition '" << c << "' needs one of >=, <=, >, <");
+    cond.op = op;
+    rest = trim(rest.substr(std::string(ops[op]).size()));
+    char* end = nullptr;
+    cond.value = std::strtod(rest.c_str(), &end);
+    if (rest.empty() || *end != '\0' || !std::isfinite(cond.value))
+      SIGNORINI_USER_ERROR(key << ": condition '" << c << "' needs a number after " << ops[op]);
+    seg.conditions.push_back(cond);
+  }
+  segments_.push_back(seg);
+}
+
+int BoundarySegments::index(const std::string& name, const std::string& key) const {
+  std::vector<std::string> names;
+  for (size_t i = 0; i < segments_.size(); ++i) {
+    if (segments_[i].name == name) return static_cast<int>(i);
+    names.push_back(segments_[i].name);
+  }
+  const std::string guess = core::closestName(name, names);
+  SIGNORINI_USER_ERROR(key << ": no boundary segment named '" << name << "' in Mesh/Boundary Segments"
+                           << (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+}
+
+unsigned BoundarySegments::match(const CoarseMesh& coarse, int tree, int face, double mx, double my) const {
+  unsigned mask = 0;
+  const auto& sets = coarse.faceSets(tree, face);
+  for (size_t i = 0; i < segments_.size(); ++i) {
+    const auto& s = segments_[i];
+    if (std::find(sets.begin(), sets.end(), s.set) == sets.end()) continue;
+    bool ok = true;
+    for (const auto& c : s.conditions) {
+      const double v = c.coord == 0 ? mx : my;
+      switch (c.op) {
+        case 0: ok = ok && v >= c.value; break;
+        case 1: ok = ok && v <= c.value; break;
+        case 2: ok = ok && v > c.value; break;
+        default: ok = ok && v < c.value; break;
+      }
+    }
+    if (ok) mask |= 1u << i;
+  }
+  return mask;
+}
+
+}  // namespace signorini::mesh

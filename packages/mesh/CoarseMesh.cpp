@@ -1,0 +1,153 @@
+#include "CoarseMesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "Error.hpp"
+#include "ExodusMesh.hpp"
+
+namespace signorini::mesh {
+
+core::ParameterList CoarseMesh::getValidParameters() {
+  core::ParameterList p("Mesh");
+  core::addChoice(p, "Type", "rectangle", "Coarse mesh: a rectangle of nx x ny cells or an Exodus II file",
+                  {"rectangle", "exodus"});
+  core::addString(p, "File", "", "Exodus II file with QUAD4 blocks and named side sets (Type = exodus); "
+                                  "relative paths are relative to the deck's folder");
+  core::addDouble(p, "X0", 0.0, "Rectangle: left end [length]");
+  core::addDouble(p, "X1", 1.0, "Rectangle: right end [length]");
+  core::addDouble(p, "Y0", 0.0, "Rectangle: bottom end [length]");
+  core::addDouble(p, "Y1", 1.0, "Rectangle: top end [length]");
+  core::addInt(p, "Cells X", 1, "Rectangle: number of coarse cells in x", 1, 100000);
+  core::addInt(p, "Cells Y", 1, "Rectangle: number of coarse cells in y", 1, 100000);
+  core::addInt(p, "Refinement Level", 0, "Uniform refinement level of the coarse mesh (h = h_coarse / 2^level)",
+               0, 18);
+  core::addNamedStrings(p, "Boundary Segments",
+                        "Named boundary segments: name = \"<side set>[, <x|y> <op> <value>]...\", e.g. "
+                        "\"bottom, x >= 0.15\"; a rectangle has the side sets left, right, bottom, top; "
+                        "op is one of >=, <=, >, <, tested at each fine boundary edge's midpoint");
+  return p;
+}
+
+std::shared_ptr<CoarseMesh> CoarseMesh::create(const core::ParameterList& p) {
+  if (p.get<std::string>("Type") == "exodus") {
+    const std::string file = p.get<std::string>("File");
+    if (file.empty()) SIGNORINI_USER_ERROR("Mesh/File: Type is \"exodus\" but no file is given");
+    const io::QuadMesh m = io::readExodusQuadMesh(file);
+    return fromQuads(m.x, m.y, m.quads, m.sideSets, file);
+  }
+  const double x0 = p.get<double>("X0"), x1 = p.get<double>("X1");
+  const double y0 = p.get<double>("Y0"), y1 = p.get<double>("Y1");
+  if (!(x1 > x0)) SIGNORINI_USER_ERROR("Mesh/X1 (" << x1 << ") must be greater than Mesh/X0 (" << x0 << ")");
+  if (!(y1 > y0)) SIGNORINI_USER_ERROR("Mesh/Y1 (" << y1 << ") must be greater than Mesh/Y0 (" << y0 << ")");
+  return rectangle(x0, x1, y0, y1, p.get<int>("Cells X"), p.get<int>("Cells Y"));
+}
+
+std::shared_ptr<CoarseMesh> CoarseMesh::rectangle(double x0, double x1, double y0, double y1, int nx, int ny) {
+  std::vector<double> x, y;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      x.push_back(x0 + (x1 - x0) * i / nx);
+      y.push_back(y0 + (y1 - y0) * j / ny);
+    }
+  std::vector<std::array<int, 4>> quads;
+  std::map<std::string, std::vector<std::array<int, 2>>> sets;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      const int v = j * (nx + 1) + i, q = static_cast<int>(quads.size());
+      quads.push_back({v, v + 1, v + nx + 2, v + nx + 1});
+      if (j == 0) sets["bottom"].push_back({q, 0});
+      if (i == nx - 1) sets["right"].push_back({q, 1});
+      if (j == ny - 1) sets["top"].push_back({q, 2});
+      if (i == 0) sets["left"].push_back({q, 3});
+    }
+  std::ostringstream src;
+  src << "rectangle [" << x0 << "," << x1 << "]x[" << y0 << "," << y1 << "] of " << nx << "x" << ny << " cells";
+  return fromQuads(x, y, quads, sets, src.str());
+}
+
+std::shared_ptr<CoarseMesh> CoarseMesh::fromQuads(
+    const std::vector<double>& x, const std::vector<double>& y, const std::vector<std::array<int, 4>>& quadsCcw,
+    const std::map<std::string, std::vector<std::array<int, 2>>>& sideSets, const std::string& source) {
+  std::shared_ptr<CoarseMesh> m(new CoarseMesh());
+  m->source_ = source;
+  const auto nv = static_cast<p4est_topidx_t>(x.size());
+  const auto nt = static_cast<p4est_topidx_t>(quadsCcw.size());
+  if (nt == 0) SIGNORINI_USER_ERROR(source << ": the mesh has no cells");
+  m->conn_ = p4est_connectivity_new(nv, nt, 0, 0);
+  for (p4est_topidx_t v = 0; v < nv; ++v) {
+    m->conn_->vertices[3 * v] = x[v];
+    m->conn_->vertices[3 * v + 1] = y[v];
+    m->conn_->vertices[3 * v + 2] = 0.0;
+  }
+  m->treeCorners_.resize(nt);
+  m->faceSets_.resize(nt);
+  static const int ccwToZ[4] = {0, 1, 3, 2};
+  for (p4est_topidx_t t = 0; t < nt; ++t) {
+    const auto& q = quadsCcw[t];
+    for (int k = 0; k < 4; ++k) {
+      if (q[k] < 0 || q[k] >= nv) SIGNORINI_USER_ERROR(source << ": cell " << t + 1 << " has an invalid vertex id");
+      m->conn_->tree_to_vertex[4 * t + ccwToZ[k]] = q[k];
+      m->treeCorners_[t][ccwToZ[k]] = {x[q[k]], y[q[k]]};
+    }
+    // Signed area of the CCW polygon: must be positive (Exodus orders QUAD4 counter-clockwise).
+    double area = 0;
+    for (int k = 0; k < 4; ++k) {
+      const int a = q[k], b = q[(k + 1) % 4];
+      area += x[a] * y[b] - x[b] * y[a];
+    }
+    if (!(area > 0)) SIGNORINI_USER_ERROR(source << ": cell " << t + 1 << " is inverted or degenerate (its vertices are not counter-clockwise)");
+  }
+  for (p4est_topidx_t t = 0; t < nt; ++t)
+    for (int f = 0; f < 4; ++f) {
+      m->conn_->tree_to_tree[4 * t + f] = t;
+      m->conn_->tree_to_face[4 * t + f] = static_cast<int8_t>(f);
+    }
+  p4est_connectivity_complete(m->conn_);
+  if (!p4est_connectivity_is_valid(m->conn_)) SIGNORINI_USER_ERROR(source << ": the cells do not form a valid conforming mesh");
+  static const int sideToFace[4] = {2, 1, 3, 0};  // CCW side s joins corners s, s+1
+  for (const auto& [name, sides] : sideSets)
+    for (const auto& s : sides) {
+      if (s[0] < 0 || s[0] >= nt || s[1] < 0 || s[1] > 3)
+        SIGNORINI_USER_ERROR(source << ": side set '" << name << "' names a side that does not exist");
+      m->faceSets_[s[0]][sideToFace[s[1]]].push_back(name);
+    }
+  return m;
+}
+
+CoarseMesh::~CoarseMesh() {
+  if (conn_) p4est_connectivity_destroy(conn_);
+}
+
+std::array<double, 2> CoarseMesh::mapPoint(int t, double s, double r) const {
+  const auto& c = treeCorners_[t];
+  std::array<double, 2> p;
+  for (int d = 0; d < 2; ++d)
+    p[d] = (1 - s) * (1 - r) * c[0][d] + s * (1 - r) * c[1][d] + (1 - s) * r * c[2][d] + s * r * c[3][d];
+  return p;
+}
+
+std::vector<std::string> CoarseMesh::setNames() const {
+  std::set<std::string> s;
+  for (const auto& t : faceSets_)
+    for (const auto& f : t) s.insert(f.begin(), f.end());
+  return {s.begin(), s.end()};
+}
+
+bool CoarseMesh::hasSet(const std::string& name) const {
+  for (const auto& t : faceSets_)
+    for (const auto& f : t)
+      if (std::find(f.begin(), f.end(), name) != f.end()) return true;
+  return false;
+}
+
+double CoarseMesh::diameter() const {
+  double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+  for (const auto& t : treeCorners_)
+    for (const auto& c : t)
+      for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], c[d]), hi[d] = std::max(hi[d], c[d]);
+  return std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+}
+
+}  // namespace signorini::mesh

@@ -1,0 +1,62 @@
+#pragma once
+/// \file CoarseMesh.hpp
+/// The coarse mesh every adaptive mesh refines: a p4est connectivity (one tree per coarse
+/// quadrilateral), the bilinear geometry of each tree, and named boundary sets of tree faces.
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <p4est_connectivity.h>
+
+#include "ParameterTools.hpp"
+
+namespace signorini::mesh {
+
+/// Coarse mesh from the deck's "Mesh" sublist: (a) a rectangle of nx x ny cells with the side
+/// sets "left", "right", "bottom", "top", or (b) an Exodus II file of QUAD4 cells and named side
+/// sets. Owns the p4est connectivity. Tree corners use p4est's z-order (0:(0,0) 1:(1,0) 2:(0,1) 3:(1,1)).
+class CoarseMesh {
+ public:
+  /// Valid "Mesh" parameters (type, extent, cells, file, refinement level, boundary segments).
+  static core::ParameterList getValidParameters();
+  /// Builds the coarse mesh from a validated "Mesh" sublist. Throws core::UserError for an
+  /// unreadable file or an inverted cell.
+  static std::shared_ptr<CoarseMesh> create(const core::ParameterList& meshParams);
+  /// A rectangle [x0,x1] x [y0,y1] of nx x ny cells.
+  static std::shared_ptr<CoarseMesh> rectangle(double x0, double x1, double y0, double y1, int nx, int ny);
+
+  ~CoarseMesh();
+  CoarseMesh(const CoarseMesh&) = delete;
+  CoarseMesh& operator=(const CoarseMesh&) = delete;
+
+  p4est_connectivity_t* connectivity() const { return conn_; }
+  int numTrees() const { return static_cast<int>(treeCorners_.size()); }
+  /// Physical corner c (z-order) of tree t.
+  const std::array<double, 2>& treeCorner(int t, int c) const { return treeCorners_[t][c]; }
+  /// Physical point of reference coordinates (s, r) in [0,1]^2 of tree t (bilinear map).
+  std::array<double, 2> mapPoint(int t, double s, double r) const;
+  /// Names of the side sets containing face f (0:-x 1:+x 2:-y 3:+y) of tree t.
+  const std::vector<std::string>& faceSets(int t, int f) const { return faceSets_[t][f]; }
+  /// All side set names, for messages.
+  std::vector<std::string> setNames() const;
+  bool hasSet(const std::string& name) const;
+  /// Where the mesh came from, for messages ("rectangle 16x16" or the file name).
+  const std::string& source() const { return source_; }
+  /// Bounding box diameter (length units).
+  double diameter() const;
+
+ private:
+  CoarseMesh() = default;
+  static std::shared_ptr<CoarseMesh> fromQuads(const std::vector<double>& x, const std::vector<double>& y,
+                                               const std::vector<std::array<int, 4>>& quadsCcw,
+                                               const std::map<std::string, std::vector<std::array<int, 2>>>& sideSets,
+                                               const std::string& source);
+  p4est_connectivity_t* conn_ = nullptr;
+  std::vector<std::array<std::array<double, 2>, 4>> treeCorners_;
+  std::vector<std::array<std::vector<std::string>, 4>> faceSets_;
+  std::string source_;
+};
+
+}  // namespace signorini::mesh

@@ -1,0 +1,45 @@
+#pragma once
+/// \file Forest.hpp
+/// One adaptive quadrilateral mesh: a p4est forest refining a CoarseMesh, distributed over the
+/// ranks of an MPI communicator along p4est's space-filling curve.
+#include <functional>
+#include <memory>
+
+#include <mpi.h>
+#include <p4est.h>
+
+#include "CoarseMesh.hpp"
+
+namespace signorini::mesh {
+
+/// Initialises libsc/p4est once per process (quiet logging). Safe to call repeatedly.
+void initializeP4est(MPI_Comm comm);
+
+class Forest {
+ public:
+  /// Uniform forest at \p level on \p coarse, partitioned over \p comm.
+  Forest(std::shared_ptr<const CoarseMesh> coarse, MPI_Comm comm, int level);
+  Forest(const Forest& other);  ///< deep copy (same partition)
+  Forest& operator=(const Forest&) = delete;
+  ~Forest();
+
+  p4est_t* p4est() const { return p4est_; }
+  const CoarseMesh& coarse() const { return *coarse_; }
+  std::shared_ptr<const CoarseMesh> coarsePtr() const { return coarse_; }
+  MPI_Comm comm() const { return p4est_->mpicomm; }
+  long long numGlobalCells() const { return static_cast<long long>(p4est_->global_num_quadrants); }
+  int numLocalCells() const { return static_cast<int>(p4est_->local_num_quadrants); }
+
+  /// Refines every local cell for which \p refine(tree, quadrant) is true (once, not recursively).
+  void refineIf(const std::function<bool(int tree, const p4est_quadrant_t& q)>& refine);
+  /// Enforces the 2:1 face balance (at most one hanging node per edge; paper Algorithm 5.2).
+  void balance();
+  /// Re-partitions the cells evenly over the ranks.
+  void partition();
+
+ private:
+  std::shared_ptr<const CoarseMesh> coarse_;
+  p4est_t* p4est_ = nullptr;
+};
+
+}  // namespace signorini::mesh

@@ -1,0 +1,82 @@
+#pragma once
+/// \file Q1Mesh.hpp
+/// Bilinear (Q1) node numbering of one Forest via p4est lnodes, hanging nodes included:
+/// the Tpetra maps of owned and owned-plus-shared nodes, per-cell geometry and corner
+/// constraints in Kokkos views, and the boundary edges with their segment tags.
+#include <array>
+#include <vector>
+
+#include "BoundarySegments.hpp"
+#include "Forest.hpp"
+#include "Types.hpp"
+
+namespace signorini::mesh {
+
+/// A fine boundary edge of a local cell. Its two end points are independent (never hanging) nodes.
+struct BoundaryEdge {
+  LO cell;                 ///< local cell index
+  int face;                ///< p4est face 0:-x 1:+x 2:-y 3:+y
+  unsigned segments;       ///< bit mask of BoundarySegments containing the edge
+  LO node[2];              ///< overlap-map local ids of the end points (p4est_face_corners order)
+  double x[2][2];          ///< end point coordinates [point][dim]
+  int level;               ///< refinement level of the cell
+  double length() const;
+};
+
+class Q1Mesh {
+ public:
+  using CellCoords = Kokkos::View<double* [4][2], DeviceType>;
+  using CellDofs = Kokkos::View<LO* [4][2], DeviceType>;
+  using CellWeights = Kokkos::View<double* [4][2], DeviceType>;
+
+  Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const Comm> comm);
+  Q1Mesh(const Q1Mesh&) = delete;
+  Q1Mesh& operator=(const Q1Mesh&) = delete;
+
+  RCP<const Comm> comm() const { return comm_; }
+  /// Nodes owned by this rank (rows of matrices).
+  RCP<const Map> ownedMap() const { return ownedMap_; }
+  /// Owned nodes followed by the shared nodes owned elsewhere (p4est lnodes local order).
+  RCP<const Map> overlapMap() const { return overlapMap_; }
+  LO numLocalCells() const { return numCells_; }
+  GO numGlobalNodes() const { return ownedMap_->getGlobalNumElements(); }
+  long long numGlobalCells() const { return numGlobalCells_; }
+
+  /// Corner c (z-order) of cell e: physical coordinates cornerCoords(e,c,d).
+  CellCoords cornerCoords;
+  /// Value at corner c of cell e = sum_k cornerWeights(e,c,k) * u[cornerDofs(e,c,k)] (overlap ids;
+  /// k = 1 is used only at hanging corners, where both weights are 1/2; unused slots hold -1 / 0).
+  CellDofs cornerDofs;
+  CellWeights cornerWeights;
+  CellCoords::HostMirror cornerCoordsHost;
+  CellDofs::HostMirror cornerDofsHost;
+  CellWeights::HostMirror cornerWeightsHost;
+
+  const std::vector<int>& cellLevel() const { return cellLevel_; }
+  const std::vector<int>& cellTree() const { return cellTree_; }
+  const std::vector<BoundaryEdge>& boundaryEdges() const { return boundaryEdges_; }
+  /// Coordinates of every overlap node.
+  const std::vector<std::array<double, 2>>& nodeCoords() const { return nodeCoords_; }
+  /// Smallest and largest edge length over all cells of all ranks.
+  double hMin() const { return hMin_; }
+  double hMax() const { return hMax_; }
+
+  /// Local cell containing (x, y) and the point's reference coordinates (s, r) in [0,1]^2; -1 if
+  /// no local cell contains it.
+  LO locate(double x, double y, double& s, double& r) const;
+  /// Flags (1.0 / 0.0) on the overlap map for the nodes that lie on a boundary edge whose
+  /// segment mask intersects \p mask, consistent across ranks.
+  std::vector<char> nodesOnSegments(unsigned mask) const;
+
+ private:
+  RCP<const Comm> comm_;
+  RCP<const Map> ownedMap_, overlapMap_;
+  LO numCells_ = 0;
+  long long numGlobalCells_ = 0;
+  std::vector<int> cellLevel_, cellTree_;
+  std::vector<BoundaryEdge> boundaryEdges_;
+  std::vector<std::array<double, 2>> nodeCoords_;
+  double hMin_ = 0, hMax_ = 0;
+};
+
+}  // namespace signorini::mesh

@@ -1,0 +1,211 @@
+#include "ContactQP.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "Error.hpp"
+
+namespace signorini::solvers {
+namespace {
+
+/// Cholesky factor (lower, in place) of a dense SPD matrix; returns false if not positive definite.
+bool cholesky(std::vector<double>& a, int n) {
+  for (int j = 0; j < n; ++j) {
+    double d = a[j * n + j];
+    for (int k = 0; k < j; ++k) d -= a[j * n + k] * a[j * n + k];
+    if (!(d > 0)) return false;
+    d = std::sqrt(d);
+    a[j * n + j] = d;
+    for (int i = j + 1; i < n; ++i) {
+      double s = a[i * n + j];
+      for (int k = 0; k < j; ++k) s -= a[i * n + k] * a[j * n + k];
+      a[i * n + j] = s / d;
+    }
+  }
+  return true;
+}
+
+void choleskySolve(const std::vector<double>& L, int n, std::vector<double>& x) {
+  for (int i = 0; i < n; ++i) {
+    double s = x[i];
+    for (int k = 0; k < i; ++k) s -= L[i * n + k] * x[k];
+    x[i] = s / L[i * n + i];
+  }
+  for (int i = n - 1; i >= 0; --i) {
+    double s = x[i];
+    for (int k = i + 1; k < n; ++k) s -= L[k * n + i] * x[k];
+    x[i] = s / L[i * n + i];
+  }
+}
+
+}  // namespace
+
+core::ParameterList ContactQP::getValidParameters() {
+  core::ParameterList p("Contact");
+  core::addChoice(p, "Multiplier Segments", "H = 2h",
+                  "Piecewise constant multipliers on segments of two fine edges (stable, the paper's choice) or "
+                  "of one edge (unstable, paper Fig. 3.1)",
+                  {"H = 2h", "H = h"});
+  core::addDouble(p, "KKT Tolerance", 1e-9,
+                  "Tolerance of the KKT conditions relative to the domain diameter: mean gap G_j/|E_j| >= -tol*L, "
+                  "and the multiplier sign and complementarity measured by the gap they cause",
+                  1e-15, 1e-2);
+  core::addInt(p, "Maximum Active Set Iterations", 50, "Semismooth Newton steps per time step", 1);
+  core::addInt(p, "Maximum CG Iterations", 500, "CG iterations on the Schur complement per Newton step", 1);
+  core::addChoice(p, "Schur Preconditioner", "lumped",
+                  "Preconditioner of CG on Q_AA: the lumped Schur complement B^T diag(A)^{-1} B, or none",
+                  {"lumped", "none"});
+  return p;
+}
+
+ContactQP::ContactQP(const core::ParameterList& params, double lengthScale)
+    : params_(params), gapTol_(params.get<double>("KKT Tolerance") * lengthScale) {
+  precondition_ = params.get<std::string>("Schur Preconditioner") == "lumped";
+}
+
+void ContactQP::setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupling) {
+  Vector d(A.getRowMap());
+  A.getLocalDiagCopy(d);
+  lumped_ = coupling.lumpedSchurComplement(d);
+  segLen_ = coupling.segmentLength();
+}
+
+double ContactQP::lambdaTolerance(int j) const {
+  const int m = static_cast<int>(segLen_.size());
+  return gapTol_ * segLen_[j] / lumped_[static_cast<size_t>(j) * m + j];
+}
+
+ContactQPResult ContactQP::solve(LinearSolver& solver, const fem::ContactCoupling& B, const Vector& F,
+                                 const std::vector<double>& gbar, std::vector<double>& lambda, Vector& u,
+                                 std::vector<double>& G) {
+  const int m = B.numSegments();
+  SIGNORINI_ASSERT(static_cast<int>(lambda.size()) == m && static_cast<int>(gbar.size()) == m, "size mismatch");
+  SIGNORINI_ASSERT(static_cast<int>(segLen_.size()) == m, "setSystem() not called for this coupling");
+  ContactQPResult res;
+  const long its0 = solver.totalIterations();
+  Vector rhs(F.getMap()), w(F.getMap());
+  auto solveA = [&](const Vector& b, Vector& x, bool zeroGuess = true) {
+    if (zeroGuess) x.putScalar(0.0);
+    solver.solve(b, x);
+    ++res.linearSolves;
+  };
+  // u = A^{-1}(F - B lambda), G = B^T u - gbar.
+  rhs.assign(F);
+  B.apply(lambda, rhs, -1.0, true);
+  solveA(rhs, u, false);  // u holds the caller's initial guess
+  auto updateGap = [&]() {
+    G = B.applyTranspose(u);
+    for (int j = 0; j < m; ++j) G[j] -= gbar[j];
+  };
+  updateGap();
+
+  // c_j = 1/Q_jj (lumped): lambda_j and c_j G_j have the same units.
+  std::vector<double> c(m);
+  for (int j = 0; j < m; ++j) c[j] = 1.0 / lumped_[static_cast<size_t>(j) * m + j];
+  std::vector<char> active(m, 0), previous(m, 2);
+  std::ostringstream history;
+  const int maxNewton = params_.get<int>("Maximum Active Set Iterations");
+  const int maxCG = params_.get<int>("Maximum CG Iterations");
+  for (int it = 1; it <= maxNewton; ++it) {
+    res.activeSetIterations = it;
+    int nA = 0;
+    for (int j = 0; j < m; ++j) nA += (active[j] = (lambda[j] + c[j] * G[j] < 0) ? 1 : 0);
+    // Zero the multipliers off the active set (one A-solve if any was non-zero).
+    std::vector<double> delta(m, 0.0);
+    bool anyInactive = false;
+    for (int j = 0; j < m; ++j)
+      if (!active[j] && lambda[j] != 0.0) delta[j] = -lambda[j], anyInactive = true;
+    if (anyInactive) {
+      B.apply(delta, rhs);
+      solveA(rhs, w);
+      u.update(-1.0, w, 1.0);
+      const auto q = B.applyTranspose(w);
+      for (int j = 0; j < m; ++j) {
+        G[j] -= q[j];
+        if (!active[j]) lambda[j] = 0.0;
+      }
+    }
+    // CG on Q_AA d = G_A (the residual of G_A = 0), preconditioned by the lumped Q_AA.
+    std::vector<int> idx;
+    for (int j = 0; j < m; ++j)
+      if (active[j]) idx.push_back(j);
+    std::vector<double> L;
+    bool havePrec = false;
+    if (precondition_ && nA > 0) {
+      L.resize(static_cast<size_t>(nA) * nA);
+      for (int a = 0; a < nA; ++a)
+        for (int b = 0; b < nA; ++b) L[a * nA + b] = lumped_[static_cast<size_t>(idx[a]) * m + idx[b]];
+      havePrec = cholesky(L, nA);
+    }
+    auto converged = [&]() {
+      for (int a = 0; a < nA; ++a)
+        if (std::abs(G[idx[a]]) > 0.1 * gapTol_ * segLen_[idx[a]]) return false;
+      return true;
+    };
+    std::vector<double> r(nA), z(nA), p(nA, 0.0), full(m, 0.0);
+    for (int a = 0; a < nA; ++a) r[a] = G[idx[a]];
+    double rz = 0;
+    int cg = 0;
+    while (nA > 0 && !converged()) {
+      if (cg == maxCG) break;
+      z = r;
+      if (havePrec) choleskySolve(L, nA, z);
+      double rzNew = 0;
+      for (int a = 0; a < nA; ++a) rzNew += r[a] * z[a];
+      const double beta = cg == 0 ? 0.0 : rzNew / rz;
+      rz = rzNew;
+      for (int a = 0; a < nA; ++a) p[a] = z[a] + beta * p[a];
+      for (int a = 0; a < nA; ++a) full[idx[a]] = p[a];
+      B.apply(full, rhs);
+      solveA(rhs, w);
+      const auto q = B.applyTranspose(w);  // Q p
+      double pq = 0;
+      for (int a = 0; a < nA; ++a) pq += p[a] * q[idx[a]];
+      if (!(pq > 0)) break;  // Q_AA singular on this direction (redundant constraints)
+      const double alpha = rz / pq;
+      for (int a = 0; a < nA; ++a) lambda[idx[a]] += alpha * p[a];
+      u.update(-alpha, w, 1.0);
+      for (int j = 0; j < m; ++j) G[j] -= alpha * q[j];
+      for (int a = 0; a < nA; ++a) r[a] = G[idx[a]];
+      ++cg;
+    }
+    res.cgIterations += cg;
+    // KKT check.
+    double maxViolation = 0;
+    bool ok = true;
+    for (int j = 0; j < m; ++j) {
+      const double gapViolation = -G[j] / segLen_[j];
+      const double lamViolation = lambda[j] / lambdaTolerance(j) * gapTol_;
+      maxViolation = std::max({maxViolation, gapViolation, lamViolation});
+      if (gapViolation > gapTol_ || lamViolation > gapTol_) ok = false;
+    }
+    if (!converged()) ok = false;
+    int changes = 0;
+    for (int j = 0; j < m; ++j) changes += active[j] != previous[j];
+    history << "  iteration " << it << ": " << nA << " active (" << changes << " changed), " << cg
+            << " CG iterations, largest KKT violation " << maxViolation << " (tolerance " << gapTol_ << ")\n";
+    previous = active;
+    if (ok) break;
+    if (it == maxNewton)
+      throw core::SolverError("contact QP: the active set method did not satisfy the KKT conditions within "
+                              "Contact/Maximum Active Set Iterations = " + std::to_string(maxNewton) +
+                              "; history:\n" + history.str());
+  }
+  res.linearIterations = static_cast<int>(solver.totalIterations() - its0);
+  res.maxLambda = -1e300;
+  res.minGap = 1e300;
+  for (int j = 0; j < m; ++j) {
+    res.active += lambda[j] < 0 ? 1 : 0;
+    res.maxLambda = std::max(res.maxLambda, lambda[j]);
+    res.minGap = std::min(res.minGap, G[j] / segLen_[j]);
+    res.maxComplementarity = std::max(res.maxComplementarity, std::abs(lambda[j] * G[j]) / segLen_[j]);
+  }
+  if (m == 0) res.maxLambda = res.minGap = 0;
+  return res;
+}
+
+}  // namespace signorini::solvers

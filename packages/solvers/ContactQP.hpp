@@ -1,0 +1,58 @@
+#pragma once
+/// \file ContactQP.hpp
+/// The per-step contact problem in Schur-complement form (DESIGN 1.2, paper Sec. 3.2):
+///   min 1/2 l^T Q l - l^T (B^T A^{-1} F - gbar)  s.t.  l <= 0,   Q = B^T A^{-1} B,
+/// whose KKT multiplier is the weighted gap G = B^T u - gbar >= 0 with u = A^{-1}(F - B l).
+/// Solved by a primal-dual active set (semismooth Newton) method; each Newton step solves
+/// Q_AA d = G_A by conjugate gradients (one A-solve per iteration, u accumulated on the way)
+/// preconditioned by the lumped Schur complement B^T diag(A)^{-1} B restricted to the active set.
+#include <string>
+#include <vector>
+
+#include "ContactCoupling.hpp"
+#include "LinearSolver.hpp"
+#include "ParameterTools.hpp"
+
+namespace signorini::solvers {
+
+struct ContactQPResult {
+  int activeSetIterations = 0;  ///< semismooth Newton steps
+  int cgIterations = 0;         ///< CG iterations on Q (one A-solve each)
+  int linearSolves = 0;         ///< A-solves in total
+  int linearIterations = 0;     ///< Krylov iterations of all A-solves
+  int active = 0;               ///< segments in contact
+  double maxLambda = 0;         ///< max_j lambda_j (<= 0 up to tolerance)
+  double minGap = 0;            ///< min_j G_j / |E_j| [length]
+  double maxComplementarity = 0;  ///< max_j |lambda_j G_j| / |E_j|
+};
+
+class ContactQP {
+ public:
+  static core::ParameterList getValidParameters();
+  /// \param params validated "Contact" sublist; \p lengthScale (the domain diameter) makes the
+  /// KKT tolerance an absolute gap tolerance [length].
+  ContactQP(const core::ParameterList& params, double lengthScale);
+
+  /// Prepares for a new step matrix or contact coupling (the Schur preconditioner).
+  void setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupling);
+  /// Solves the QP for load F (owned) and weighted obstacle gbar. \p lambda is the warm start
+  /// on entry and the multiplier on exit; \p u is the initial guess of the first A-solve on entry
+  /// and the displacement on exit; \p G returns the weighted gap.
+  /// Throws core::SolverError with the iteration history if the KKT tolerance is not reached.
+  ContactQPResult solve(LinearSolver& solver, const fem::ContactCoupling& coupling, const Vector& F,
+                        const std::vector<double>& gbar, std::vector<double>& lambda, Vector& u,
+                        std::vector<double>& G);
+  /// Gap tolerance [length] for G_j / |E_j|.
+  double gapTolerance() const { return gapTol_; }
+  /// Multiplier tolerance of segment j [force/length]: a multiplier error that moves the gap by gapTolerance.
+  double lambdaTolerance(int j) const;
+
+ private:
+  core::ParameterList params_;
+  double gapTol_;
+  bool precondition_ = true;
+  std::vector<double> lumped_;  // B^T diag(A)^{-1} B, dense m x m
+  std::vector<double> segLen_;
+};
+
+}  // namespace signorini::solvers

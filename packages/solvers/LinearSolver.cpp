@@ -1,0 +1,125 @@
+#include "LinearSolver.hpp"
+
+#include <BelosLinearProblem.hpp>
+#include <BelosSolverFactory.hpp>
+#include <BelosTpetraAdapter.hpp>
+#include <Ifpack2_Factory.hpp>
+#include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "Error.hpp"
+
+namespace signorini::solvers {
+
+using BelosSolver = Belos::SolverManager<Scalar, MultiVector, Operator>;
+
+struct LinearSolver::Impl {
+  core::ParameterList params;
+  RCP<const Comm> comm;
+  RCP<const CrsMatrix> A;
+  RCP<Operator> prec;
+  RCP<BelosSolver> solver;
+  RCP<Belos::LinearProblem<Scalar, MultiVector, Operator>> problem;
+  std::string precName = "none";
+  long solves = 0, iterations = 0;
+};
+
+core::ParameterList LinearSolver::getValidParameters() {
+  core::ParameterList p("Linear Solver");
+  core::addString(p, "Method", "CG", "Belos solver name (13.2: \"CG\", \"PSEUDOBLOCK CG\", \"GMRES\", ...); A is SPD");
+  core::addChoice(p, "Preconditioner", "auto",
+                  "\"auto\": Jacobi if c k / h_min is below 'Auto MueLu Courant Number', else MueLu (DESIGN 1.6)",
+                  {"auto", "MueLu", "Jacobi", "none"});
+  core::addDouble(p, "Auto MueLu Courant Number", 5.0, "Courant number c k / h_min above which \"auto\" uses MueLu", 0.0);
+  core::addDouble(p, "Relative Tolerance", 1e-10,
+                  "Residual tolerance relative to ||b||; the Newmark update amplifies solver errors by 1/(beta k^2)",
+                  1e-16, 0.1);
+  core::addInt(p, "Maximum Iterations", 2000, "Maximum Krylov iterations per solve", 1);
+  core::addPassThrough(p, "Belos", "Passed to the Belos solver (e.g. \"Verbosity\")");
+  core::addPassThrough(p, "MueLu", "Passed to MueLu::CreateTpetraPreconditioner (e.g. \"smoother: type\")");
+  return p;
+}
+
+LinearSolver::LinearSolver(const core::ParameterList& params, RCP<const Comm> comm) : impl_(std::make_unique<Impl>()) {
+  impl_->params = params;
+  impl_->comm = comm;
+}
+
+LinearSolver::~LinearSolver() = default;
+
+void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
+  auto& I = *impl_;
+  I.A = A;
+  std::string choice = I.params.get<std::string>("Preconditioner");
+  if (choice == "auto") choice = courant > I.params.get<double>("Auto MueLu Courant Number") ? "MueLu" : "Jacobi";
+  I.precName = choice;
+  I.prec = Teuchos::null;
+  auto Anc = Teuchos::rcp_const_cast<CrsMatrix>(A);
+  if (choice == "MueLu") {
+    Teuchos::ParameterList mueluParams;
+    mueluParams.set("verbosity", "none");
+    mueluParams.set("smoother: type", "CHEBYSHEV");
+    mueluParams.set("coarse: max size", 2000);
+    mueluParams.setParameters(I.params.sublist("MueLu"));
+    RCP<Operator> op = Anc;
+    I.prec = MueLu::CreateTpetraPreconditioner(op, mueluParams);
+  } else if (choice == "Jacobi") {
+    using RowMatrix = Tpetra::RowMatrix<Scalar, LO, GO, Node>;
+    auto jac = Ifpack2::Factory::create<RowMatrix>("RELAXATION", Teuchos::rcp_implicit_cast<const RowMatrix>(A));
+    Teuchos::ParameterList jp;
+    jp.set("relaxation: type", "Jacobi");
+    jp.set("relaxation: sweeps", 1);
+    jac->setParameters(jp);
+    jac->initialize();
+    jac->compute();
+    I.prec = jac;
+  }
+  auto belosParams = Teuchos::rcp(new Teuchos::ParameterList(I.params.sublist("Belos")));
+  belosParams->set("Convergence Tolerance", I.params.get<double>("Relative Tolerance"));
+  belosParams->set("Maximum Iterations", I.params.get<int>("Maximum Iterations"));
+  if (!belosParams->isParameter("Implicit Residual Scaling")) belosParams->set("Implicit Residual Scaling", "Norm of RHS");
+  if (!belosParams->isParameter("Explicit Residual Scaling")) belosParams->set("Explicit Residual Scaling", "Norm of RHS");
+  Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
+  try {
+    I.solver = factory.create(I.params.get<std::string>("Method"), belosParams);
+  } catch (std::exception& e) {
+    SIGNORINI_USER_ERROR("Linear Solver/Method: Belos cannot create '" << I.params.get<std::string>("Method")
+                                                                       << "': " << e.what());
+  }
+  I.problem = Teuchos::rcp(new Belos::LinearProblem<Scalar, MultiVector, Operator>());
+  I.problem->setOperator(Anc);
+  if (!I.prec.is_null()) I.problem->setLeftPrec(I.prec);
+}
+
+int LinearSolver::solve(const Vector& b, Vector& x) {
+  auto& I = *impl_;
+  SIGNORINI_ASSERT(!I.A.is_null(), "solve() before setOperator()");
+  ++I.solves;
+  if (b.norm2() == 0.0) {
+    x.putScalar(0.0);
+    return 0;
+  }
+  I.problem->setLHS(Teuchos::rcpFromRef(x));
+  I.problem->setRHS(Teuchos::rcpFromRef(b));
+  I.problem->setProblem();
+  I.solver->setProblem(I.problem);
+  const Belos::ReturnType ret = I.solver->solve();
+  const int its = I.solver->getNumIters();
+  I.iterations += its;
+  if (ret != Belos::Converged) {
+    std::ostringstream os;
+    os << "linear solver " << I.params.get<std::string>("Method") << " + " << I.precName << " did not reach "
+       << "the relative tolerance " << I.params.get<double>("Relative Tolerance") << " in " << its
+       << " iterations (Linear Solver/Maximum Iterations)";
+    throw core::SolverError(os.str());
+  }
+  return its;
+}
+
+const std::string& LinearSolver::preconditioner() const { return impl_->precName; }
+double LinearSolver::relativeTolerance() const { return impl_->params.get<double>("Relative Tolerance"); }
+long LinearSolver::numSolves() const { return impl_->solves; }
+long LinearSolver::totalIterations() const { return impl_->iterations; }
+
+}  // namespace signorini::solvers

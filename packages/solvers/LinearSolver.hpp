@@ -1,0 +1,39 @@
+#pragma once
+/// \file LinearSolver.hpp
+/// A^{-1} for the step matrix A = M + beta k^2 K: a Belos Krylov solver (CG by default) with a
+/// MueLu (smoothed aggregation) or Jacobi (Ifpack2) preconditioner, configured from the deck's
+/// "Linear Solver" sublist; "Belos" and "MueLu" sublists are passed through unchanged.
+/// Belos and MueLu headers stay in LinearSolver.cpp (compile time).
+#include <memory>
+#include <string>
+
+#include "ParameterTools.hpp"
+#include "Types.hpp"
+
+namespace signorini::solvers {
+
+class LinearSolver {
+ public:
+  static core::ParameterList getValidParameters();
+  /// \param params a validated "Linear Solver" sublist.
+  LinearSolver(const core::ParameterList& params, RCP<const Comm> comm);
+  ~LinearSolver();
+
+  /// Sets A and (re)builds the preconditioner. \p courant = c k / h_min chooses the
+  /// preconditioner when "Preconditioner" is "auto" (Jacobi below the threshold, MueLu above).
+  void setOperator(RCP<const CrsMatrix> A, double courant);
+  /// Solves A x = b to the relative tolerance ||b - A x|| <= tol ||b||, starting from x.
+  /// Returns the number of iterations; throws core::SolverError if not converged.
+  int solve(const Vector& b, Vector& x);
+  /// Name of the preconditioner in use ("MueLu", "Jacobi" or "none").
+  const std::string& preconditioner() const;
+  double relativeTolerance() const;
+  long numSolves() const;
+  long totalIterations() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace signorini::solvers

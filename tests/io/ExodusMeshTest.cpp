@@ -1,0 +1,368 @@
+/// \file ExodusMeshTest.cpp
+/// Tests of the Exodus II mesh reader and result-series writer.
+#include "Error.hpp"
+#include "ExodusMesh.hpp"
+
+#include <exodusII.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace signorini::io {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// A fresh, empty directory per test, removed afterwards.
+class ExodusMeshTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::path(::testing::TempDir()) /
+           ("signorini_exodus_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  std::vector<std::string> filesInDir() const {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(dir_)) {
+      names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+  }
+
+  fs::path dir_;
+};
+
+/// nx x 1 strip of unit quads; side set "contact" on the bottom edges (side 0).
+QuadMesh stripMesh(int nx) {
+  QuadMesh mesh;
+  for (int j = 0; j <= 1; ++j) {
+    for (int i = 0; i <= nx; ++i) {
+      mesh.x.push_back(i);
+      mesh.y.push_back(j);
+    }
+  }
+  for (int i = 0; i < nx; ++i) {
+    mesh.quads.push_back({i, i + 1, nx + 2 + i, nx + 1 + i});
+    mesh.sideSets["contact"].push_back({i, 0});
+  }
+  return mesh;
+}
+
+std::vector<double> filled(std::size_t n, double value) { return std::vector<double>(n, value); }
+
+/// Writes one step with u = v = time on nodes, level = 10 * time on cells, lambda = -time on sides.
+void writeStep(ExodusSeriesWriter& writer, long meshId, const QuadMesh& mesh, double time) {
+  const std::size_t sides =
+      mesh.sideSets.count("contact") ? mesh.sideSets.at("contact").size() : 0;
+  writer.write(meshId, mesh, time, {filled(mesh.x.size(), time), filled(mesh.x.size(), time)},
+               {filled(mesh.quads.size(), 10 * time)}, {filled(sides, -time)});
+}
+
+ExodusSeriesWriter makeWriter(const std::string& base) {
+  return ExodusSeriesWriter(base, {"u", "v"}, {"level"}, "contact", {"lambda"});
+}
+
+/// Opens an Exodus file read-only (fails the test on error); the caller must ex_close it.
+int openForCheck(const std::string& file) {
+  int cpu = 8, io = 0;
+  float version = 0;
+  ex_opts(0);
+  const int exoid = ex_open(file.c_str(), EX_READ, &cpu, &io, &version);
+  EXPECT_GE(exoid, 0) << file;
+  return exoid;
+}
+
+std::vector<double> timeValues(const std::string& file) {
+  const int exoid = openForCheck(file);
+  if (exoid < 0) return {};
+  std::vector<double> times(static_cast<std::size_t>(ex_inquire_int(exoid, EX_INQ_TIME)));
+  if (!times.empty()) {
+    EXPECT_GE(ex_get_all_times(exoid, times.data()), 0);
+  }
+  ex_close(exoid);
+  return times;
+}
+
+/// Writes a mesh with the raw Exodus API: one element block of the given type.
+void writeRawMesh(const std::string& file, int dim, const std::vector<double>& x,
+                  const std::vector<double>& y, const std::vector<double>& z,
+                  const char* elementType, int nodesPerElement, const std::vector<int>& connectivity,
+                  const std::vector<int>& sideElements = {}, const std::vector<int>& sides = {},
+                  const char* sideSetName = nullptr) {
+  int cpu = 8, io = 8;
+  ex_opts(0);
+  const int exoid = ex_create(file.c_str(), EX_CLOBBER, &cpu, &io);
+  ASSERT_GE(exoid, 0);
+  const auto numElements = static_cast<int64_t>(connectivity.size()) / nodesPerElement;
+  const int numSideSets = sideElements.empty() ? 0 : 1;
+  ASSERT_GE(ex_put_init(exoid, "raw", dim, static_cast<int64_t>(x.size()), numElements, 1, 0,
+                        numSideSets),
+            0);
+  ASSERT_GE(ex_put_block(exoid, EX_ELEM_BLOCK, 7, elementType, numElements, nodesPerElement, 0, 0,
+                         0),
+            0);
+  if (numSideSets) {
+    ASSERT_GE(ex_put_set_param(exoid, EX_SIDE_SET, 42, static_cast<int64_t>(sideElements.size()),
+                               0),
+              0);
+    if (sideSetName) {
+      ASSERT_GE(ex_put_name(exoid, EX_SIDE_SET, 42, sideSetName), 0);
+    }
+  }
+  ASSERT_GE(ex_put_coord(exoid, x.data(), y.data(), dim == 3 ? z.data() : nullptr), 0);
+  ASSERT_GE(ex_put_conn(exoid, EX_ELEM_BLOCK, 7, connectivity.data(), nullptr, nullptr), 0);
+  if (numSideSets) {
+    ASSERT_GE(ex_put_set(exoid, EX_SIDE_SET, 42, sideElements.data(), sides.data()), 0);
+  }
+  ASSERT_GE(ex_close(exoid), 0);
+}
+
+/// Expects readExodusQuadMesh(file) to throw a UserError whose message contains every fragment.
+void expectReadError(const std::string& file, const std::vector<std::string>& fragments) {
+  try {
+    readExodusQuadMesh(file);
+    ADD_FAILURE() << "no UserError for " << file;
+  } catch (const core::UserError& error) {
+    const std::string message = error.what();
+    for (const auto& fragment : fragments) {
+      EXPECT_NE(message.find(fragment), std::string::npos)
+          << "'" << fragment << "' not in: " << message;
+    }
+  }
+}
+
+TEST_F(ExodusMeshTest, RoundTripKeepsMeshSideSetAndValues) {
+  const QuadMesh mesh = stripMesh(2);
+  std::vector<std::string> files;
+  {
+    auto writer = makeWriter(path("membrane"));
+    for (double t : {0.0, 0.5, 1.0}) writeStep(writer, 1, mesh, t);
+    files = writer.close();
+  }
+  ASSERT_EQ(files, std::vector<std::string>{path("membrane.e")});
+
+  const QuadMesh back = readExodusQuadMesh(files[0]);
+  EXPECT_EQ(back.x, mesh.x);
+  EXPECT_EQ(back.y, mesh.y);
+  EXPECT_EQ(back.quads, mesh.quads);
+  EXPECT_EQ(back.sideSets, mesh.sideSets);
+  EXPECT_EQ(timeValues(files[0]), (std::vector<double>{0.0, 0.5, 1.0}));
+
+  // Values at the second step, by variable kind.
+  const int exoid = openForCheck(files[0]);
+  std::vector<double> u(mesh.x.size()), level(mesh.quads.size()), lambda(2);
+  EXPECT_GE(ex_get_var(exoid, 2, EX_NODAL, 1, 1, static_cast<int64_t>(u.size()), u.data()), 0);
+  EXPECT_GE(ex_get_var(exoid, 2, EX_ELEM_BLOCK, 1, 1, 2, level.data()), 0);
+  EXPECT_GE(ex_get_var(exoid, 2, EX_SIDE_SET, 1, 1, 2, lambda.data()), 0);
+  EXPECT_EQ(u, filled(mesh.x.size(), 0.5));
+  EXPECT_EQ(level, filled(2, 5.0));
+  EXPECT_EQ(lambda, filled(2, -0.5));
+  char name[MAX_STR_LENGTH + 1] = {};
+  EXPECT_GE(ex_get_variable_name(exoid, EX_NODAL, 2, name), 0);
+  EXPECT_STREQ(name, "v");
+  EXPECT_GE(ex_get_variable_name(exoid, EX_SIDE_SET, 1, name), 0);
+  EXPECT_STREQ(name, "lambda");
+  ex_close(exoid);
+}
+
+TEST_F(ExodusMeshTest, MeshChangeWritesSeriesParaViewGroups) {
+  std::vector<std::string> files;
+  {
+    auto writer = makeWriter(path("run"));
+    writeStep(writer, 5, stripMesh(1), 0.0);
+    writeStep(writer, 5, stripMesh(1), 0.1);
+    writeStep(writer, 6, stripMesh(2), 0.2);
+    writeStep(writer, 9, stripMesh(4), 0.3);
+    writeStep(writer, 9, stripMesh(4), 0.4);
+    files = writer.close();
+  }
+  ASSERT_EQ(files, (std::vector<std::string>{path("run.e"), path("run.e-s.0001"),
+                                             path("run.e-s.0002")}));
+  EXPECT_EQ(filesInDir(), (std::vector<std::string>{"run.e", "run.e-s.0001", "run.e-s.0002"}));
+  EXPECT_EQ(timeValues(files[0]), (std::vector<double>{0.0, 0.1}));
+  EXPECT_EQ(timeValues(files[1]), (std::vector<double>{0.2}));
+  EXPECT_EQ(timeValues(files[2]), (std::vector<double>{0.3, 0.4}));
+  EXPECT_EQ(readExodusQuadMesh(files[2]).quads.size(), 4u);
+
+  // The pattern ParaView's Exodus readers use to find the files of one series.
+  const std::regex series(R"(^(.*\.[eg][^-.]*)(-s.[0-9]+)?(\.[0-9]+\.[0-9]+)?$)");
+  for (const auto& file : files) {
+    std::smatch match;
+    const std::string name = fs::path(file).filename().string();
+    ASSERT_TRUE(std::regex_match(name, match, series)) << name;
+    EXPECT_EQ(match[1].str(), "run.e");
+  }
+  EXPECT_FALSE(std::regex_match(std::string("run.e-s.0003.part"), series));
+}
+
+TEST_F(ExodusMeshTest, PartFileIsRenamedOnClose) {
+  auto writer = makeWriter(path("out"));
+  writeStep(writer, 1, stripMesh(2), 0.0);
+  EXPECT_EQ(filesInDir(), std::vector<std::string>{"out.e.part"});
+  writer.close();
+  EXPECT_EQ(filesInDir(), std::vector<std::string>{"out.e"});
+  EXPECT_EQ(writer.close(), std::vector<std::string>{path("out.e")});  // idempotent
+  EXPECT_THROW(writeStep(writer, 1, stripMesh(2), 1.0), std::logic_error);
+}
+
+TEST_F(ExodusMeshTest, DestructorFinalisesFile) {
+  {
+    auto writer = makeWriter(path("out"));
+    writeStep(writer, 1, stripMesh(2), 0.0);
+  }
+  EXPECT_EQ(filesInDir(), std::vector<std::string>{"out.e"});
+}
+
+TEST_F(ExodusMeshTest, AbandonLeavesNoFile) {
+  {
+    auto writer = makeWriter(path("out"));
+    writeStep(writer, 1, stripMesh(2), 0.0);
+    writeStep(writer, 1, stripMesh(2), 0.5);
+    writer.abandon();
+    EXPECT_TRUE(filesInDir().empty());
+  }
+  EXPECT_TRUE(filesInDir().empty());
+}
+
+TEST_F(ExodusMeshTest, AbandonKeepsCompletedFilesOfEarlierMeshes) {
+  auto writer = makeWriter(path("out"));
+  writeStep(writer, 1, stripMesh(2), 0.0);
+  writeStep(writer, 2, stripMesh(3), 0.5);
+  writer.abandon();
+  EXPECT_EQ(filesInDir(), std::vector<std::string>{"out.e"});
+}
+
+TEST_F(ExodusMeshTest, StaleSeriesFilesOfEarlierRunAreRemoved) {
+  for (const char* name : {"out.e-s.0001", "out.e-s.0007", "out.e-s.notes", "other.e-s.0001"}) {
+    std::ofstream(path(name)) << "old";
+  }
+  auto writer = makeWriter(path("out"));
+  writeStep(writer, 1, stripMesh(2), 0.0);
+  writer.close();
+  EXPECT_EQ(filesInDir(), (std::vector<std::string>{"other.e-s.0001", "out.e", "out.e-s.notes"}));
+}
+
+TEST_F(ExodusMeshTest, EmptySideSetIsOmitted) {
+  QuadMesh mesh = stripMesh(2);
+  mesh.sideSets.clear();
+  {
+    auto writer = makeWriter(path("out"));
+    writer.write(1, mesh, 0.0, {filled(6, 1.0), filled(6, 2.0)}, {filled(2, 3.0)}, {});
+    writer.write(1, mesh, 1.0, {filled(6, 1.0), filled(6, 2.0)}, {filled(2, 3.0)}, {{}});
+  }
+  const QuadMesh back = readExodusQuadMesh(path("out.e"));
+  EXPECT_TRUE(back.sideSets.empty());
+  EXPECT_EQ(back.quads, mesh.quads);
+  EXPECT_EQ(timeValues(path("out.e")), (std::vector<double>{0.0, 1.0}));
+}
+
+TEST_F(ExodusMeshTest, WrongLengthsAreLogicErrors) {
+  const QuadMesh mesh = stripMesh(2);
+  auto writer = makeWriter(path("out"));
+  const auto nodes = filled(6, 0.0), cells = filled(2, 0.0), sides = filled(2, 0.0);
+  EXPECT_THROW(writer.write(1, mesh, 0.0, {nodes}, {cells}, {sides}), std::logic_error);
+  EXPECT_THROW(writer.write(1, mesh, 0.0, {nodes, filled(5, 0.0)}, {cells}, {sides}),
+               std::logic_error);
+  EXPECT_THROW(writer.write(1, mesh, 0.0, {nodes, nodes}, {filled(3, 0.0)}, {sides}),
+               std::logic_error);
+  EXPECT_THROW(writer.write(1, mesh, 0.0, {nodes, nodes}, {cells}, {filled(1, 0.0)}),
+               std::logic_error);
+  writer.write(1, mesh, 0.0, {nodes, nodes}, {cells}, {sides});
+  const QuadMesh bigger = stripMesh(3);
+  EXPECT_THROW(writer.write(1, bigger, 1.0, {filled(8, 0.0), filled(8, 0.0)}, {filled(3, 0.0)},
+                            {filled(3, 0.0)}),
+               std::logic_error);
+}
+
+TEST_F(ExodusMeshTest, LongNamesSurvive) {
+  const std::string longName = "contact_surface_of_the_membrane_with_the_obstacle";
+  QuadMesh mesh = stripMesh(2);
+  mesh.sideSets[longName] = mesh.sideSets["contact"];
+  {
+    ExodusSeriesWriter writer(path("out"), {"displacement_normal_to_the_membrane_plane"}, {},
+                              longName, {"lagrange_multiplier_of_the_contact_constraint"});
+    writer.write(1, mesh, 0.0, {filled(6, 1.0)}, {}, {filled(2, 2.0)});
+  }
+  const QuadMesh back = readExodusQuadMesh(path("out.e"));
+  ASSERT_EQ(back.sideSets.count(longName), 1u);
+  EXPECT_EQ(back.sideSets.at(longName), mesh.sideSets.at("contact"));
+}
+
+TEST_F(ExodusMeshTest, UncreatableFileIsUserErrorNamingPath) {
+  const std::string base = path("no/such/dir/out");
+  auto writer = makeWriter(base);
+  try {
+    writeStep(writer, 1, stripMesh(1), 0.0);
+    FAIL() << "no UserError";
+  } catch (const core::UserError& error) {
+    EXPECT_NE(std::string(error.what()).find(base + ".e"), std::string::npos) << error.what();
+  }
+}
+
+TEST_F(ExodusMeshTest, MissingFileIsUserErrorNamingPath) {
+  expectReadError(path("missing.exo"), {path("missing.exo")});
+}
+
+TEST_F(ExodusMeshTest, NonExodusFileIsUserErrorNamingPath) {
+  std::ofstream(path("notes.exo")) << "this is not a netCDF file\n";
+  expectReadError(path("notes.exo"), {path("notes.exo")});
+}
+
+TEST_F(ExodusMeshTest, NetcdfFileWithoutMeshIsUserError) {
+  // A valid Exodus file with no elements at all.
+  int cpu = 8, io = 8;
+  ex_opts(0);
+  const int exoid = ex_create(path("empty.exo").c_str(), EX_CLOBBER, &cpu, &io);
+  ASSERT_GE(exoid, 0);
+  ASSERT_GE(ex_put_init(exoid, "empty", 2, 0, 0, 0, 0, 0), 0);
+  ASSERT_GE(ex_close(exoid), 0);
+  expectReadError(path("empty.exo"), {path("empty.exo")});
+}
+
+TEST_F(ExodusMeshTest, TriangleBlockIsUserError) {
+  writeRawMesh(path("tri.exo"), 2, {0, 1, 0}, {0, 0, 1}, {}, "TRI3", 3, {1, 2, 3});
+  expectReadError(path("tri.exo"), {path("tri.exo"), "block 7", "TRI3"});
+}
+
+TEST_F(ExodusMeshTest, ThreeDimensionalMeshIsUserError) {
+  writeRawMesh(path("hex.exo"), 3, {0, 1, 1, 0, 0, 1, 1, 0}, {0, 0, 1, 1, 0, 0, 1, 1},
+               {0, 0, 0, 0, 1, 1, 1, 1}, "HEX8", 8, {1, 2, 3, 4, 5, 6, 7, 8});
+  expectReadError(path("hex.exo"), {path("hex.exo"), "3-dimensional"});
+}
+
+TEST_F(ExodusMeshTest, UnnamedSideSetAndClockwiseQuad) {
+  // Quad 1 is counter-clockwise, quad 2 clockwise; both have their bottom edge in the set:
+  // Exodus side 1 of quad 1 (nodes 1-2) and side 4 of quad 2 (nodes 3-2 in its clockwise order).
+  writeRawMesh(path("mixed.exo"), 2, {0, 1, 2, 0, 1, 2}, {0, 0, 0, 1, 1, 1}, {}, "quad", 4,
+               {1, 2, 5, 4, 2, 5, 6, 3}, {1, 2}, {1, 4});
+  const QuadMesh mesh = readExodusQuadMesh(path("mixed.exo"));
+  ASSERT_EQ(mesh.quads.size(), 2u);
+  EXPECT_EQ(mesh.quads[0], (std::array<int, 4>{0, 1, 4, 3}));
+  EXPECT_EQ(mesh.quads[1], (std::array<int, 4>{1, 2, 5, 4}));
+  ASSERT_EQ(mesh.sideSets.count("sideset_42"), 1u);
+  const auto& sides = mesh.sideSets.at("sideset_42");
+  ASSERT_EQ(sides.size(), 2u);
+  for (const auto& [quad, side] : sides) {
+    const auto& q = mesh.quads[quad];
+    EXPECT_EQ(mesh.y[q[side]], 0.0);
+    EXPECT_EQ(mesh.y[q[(side + 1) % 4]], 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace signorini::io
