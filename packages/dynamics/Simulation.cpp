@@ -177,9 +177,12 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     auto scope = I.timers.scope("assembly");
     I.assembler = std::make_unique<fem::Q1Assembler>(*I.mesh, I.mesh->nodesOnSegments(I.problem->dirichletMask));
     const double rho = I.problem->density, kappa = I.problem->stiffness, k = I.newmark->timeStep;
-    I.M = I.assembler->assembleOperator(1.0, 0.0, rho, kappa);
+    std::vector<char> lump;
+    if (I.problem->hasObstacle && deck.sublist("Contact").get<std::string>("Boundary Mass") == "lumped")
+      lump = I.mesh->nodesOnSegments(I.problem->contactMask);
+    I.M = I.assembler->assembleOperator(1.0, 0.0, rho, kappa, lump);
     I.K = I.assembler->assembleOperator(0.0, 1.0, rho, kappa);
-    I.A = I.assembler->assembleOperator(1.0, I.newmark->beta * k * k, rho, kappa);
+    I.A = I.assembler->assembleOperator(1.0, I.newmark->beta * k * k, rho, kappa, lump);
   }
   I.courant = I.problem->waveSpeed() * I.newmark->timeStep / I.mesh->hMin();
   {
@@ -294,14 +297,17 @@ RunSummary Simulation::run() {
   auto writeOutputs = [&](int step, double t, const solvers::ContactQPResult& qr, double tAssembly, double tContact) {
     auto scope = I.timers.scope("output");
     const auto t0 = std::chrono::steady_clock::now();
+    // The QP multiplier is beta k^2 times the physical one (kappa du/dn = -lambda on Gamma_C).
+    const double toPhysical = 1.0 / (I.newmark->beta * I.newmark->timeStep * I.newmark->timeStep);
     double force = 0;
     if (I.coupling)
-      for (int j = 0; j < I.coupling->numSegments(); ++j) force -= I.lambda[j] * I.coupling->segmentLength()[j];
+      for (int j = 0; j < I.coupling->numSegments(); ++j)
+        force -= toPhysical * I.lambda[j] * I.coupling->segmentLength()[j];
     I.assembler->toOverlap(*I.u, uOverlap);
     std::vector<double> row = {double(step), t, double(summary.dofsPerStep), double(qr.active),
                                double(qr.activeSetIterations), double(qr.cgIterations), double(qr.linearSolves),
-                               double(qr.linearIterations), I.energy(*I.u, *I.v), force, qr.maxLambda, qr.minGap,
-                               qr.maxComplementarity, tAssembly, tContact, 0.0};
+                               double(qr.linearIterations), I.energy(*I.u, *I.v), force, toPhysical * qr.maxLambda,
+                               qr.minGap, toPhysical * qr.maxComplementarity, tAssembly, tContact, 0.0};
     for (const auto& p : I.probes) row.push_back(I.assembler->evaluate(uOverlap, p.second[0], p.second[1]));
     if (I.problem->exactSolution) {
       const auto [l2, h1] = I.assembler->errorNorms(*I.u, *I.problem->exactSolution, t);
@@ -315,7 +321,7 @@ RunSummary Simulation::run() {
       std::vector<std::vector<double>> contact(2);
       for (int i : contactEdges) {
         const int j = I.coupling->localEdgeSegment()[i];
-        contact[0].push_back(I.lambda[j]);
+        contact[0].push_back(toPhysical * I.lambda[j]);
         contact[1].push_back(I.gap[j] / I.coupling->segmentLength()[j]);
       }
       exodus->write(0, *I.mesh, t, {&uOverlap, &vOverlap, &aOverlap}, {level}, contactEdges, contact);

@@ -38,19 +38,40 @@ Q1Assembler::Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet)
   }
   size_t maxRow = 1;
   for (size_t c : rowCount) maxRow = std::max(maxRow, c);
-  graph_ = Teuchos::rcp(new Graph(mesh.ownedMap(), overlap, overlap, maxRow));
+  // Globally indexed: the owned rows also couple to nodes that only other ranks' cells touch,
+  // so the column maps must come from the graph, not from the overlap map.
+  graph_ = Teuchos::rcp(new Graph(mesh.ownedMap(), overlap, maxRow));
   graph_->beginAssembly();
-  for (LO e = 0; e < nc; ++e)
-    for (LO r : cellDofs[e]) graph_->insertLocalIndices(r, Teuchos::ArrayView<const LO>(cellDofs[e]));
+  std::vector<GO> g;
+  for (LO e = 0; e < nc; ++e) {
+    g.clear();
+    for (LO d : cellDofs[e]) g.push_back(overlap->getGlobalElement(d));
+    for (GO r : g) graph_->insertGlobalIndices(r, Teuchos::ArrayView<const GO>(g));
+  }
   graph_->endAssembly();
   exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(overlap, mesh.ownedMap()));
   importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(mesh.ownedMap(), overlap));
 }
 
-RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa) const {
+RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,
+                                             const std::vector<char>& lumpMassAt) const {
+  Kokkos::View<int*, DeviceType> lump("lump", dirichlet_.size());
+  {
+    auto h = Kokkos::create_mirror_view(lump);
+    for (size_t i = 0; i < h.extent(0); ++i) h(i) = lumpMassAt.empty() ? 0 : lumpMassAt[i];
+    Kokkos::deep_copy(lump, h);
+  }
   auto A = Teuchos::rcp(new Matrix(graph_));
   A->beginAssembly();
   {
+    // The owned+shared matrix may order its columns differently from the overlap map.
+    const auto overlap = mesh_.overlapMap();
+    const auto colMap = A->getColMap();
+    Kokkos::View<LO*, DeviceType> toCol("toCol", overlap->getNodeNumElements());
+    auto toColHost = Kokkos::create_mirror_view(toCol);
+    for (size_t i = 0; i < toColHost.extent(0); ++i)
+      toColHost(i) = colMap->getLocalElement(overlap->getGlobalElement(static_cast<LO>(i)));
+    Kokkos::deep_copy(toCol, toColHost);
     auto local = A->getLocalMatrixDevice();
     const auto X = mesh_.cornerCoords;
     const auto dofs = mesh_.cornerDofs;
@@ -60,14 +81,17 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
     Kokkos::parallel_for(
         "signorini::assembleOperator", Kokkos::RangePolicy<ExecSpace>(0, mesh_.numLocalCells()),
         KOKKOS_LAMBDA(const LO e) {
-          double Xe[4][2], Ke[4][4] = {};
+          double Xe[4][2], Ke[4][4] = {}, Me[4][4] = {};
           for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
           for (int i = 0; i < 2; ++i)
             for (int j = 0; j < 2; ++j) {
               double N[4], gx[4], gy[4];
               const double w = kGauss2Weight * kGauss2Weight * q1Gradients(Xe, gauss2Point(i), gauss2Point(j), N, gx, gy);
               for (int a = 0; a < 4; ++a)
-                for (int b = 0; b < 4; ++b) Ke[a][b] += w * (cm * N[a] * N[b] + ck * (gx[a] * gx[b] + gy[a] * gy[b]));
+                for (int b = 0; b < 4; ++b) {
+                  Me[a][b] += w * cm * N[a] * N[b];
+                  Ke[a][b] += w * ck * (gx[a] * gx[b] + gy[a] * gy[b]);
+                }
             }
           for (int a = 0; a < 4; ++a)
             for (int ka = 0; ka < 2; ++ka) {
@@ -75,9 +99,18 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
               if (row < 0 || dir(row)) continue;
               for (int b = 0; b < 4; ++b)
                 for (int kb = 0; kb < 2; ++kb) {
-                  LO col = dofs(e, b, kb);
-                  if (col < 0 || dir(col)) continue;
-                  double v = wts(e, a, ka) * wts(e, b, kb) * Ke[a][b];
+                  const LO dof = dofs(e, b, kb);
+                  if (dof < 0 || dir(dof)) continue;
+                  const double wab = wts(e, a, ka) * wts(e, b, kb);
+                  LO col = toCol(dof);
+                  double v = wab * Ke[a][b];
+                  double m = wab * Me[a][b];
+                  if (row != dof && (lump(row) || lump(dof))) {  // move the mass coupling to the diagonal
+                    LO diag = toCol(row);
+                    local.sumIntoValues(row, &diag, 1, &m, false, true);
+                  } else {
+                    v += m;
+                  }
                   local.sumIntoValues(row, &col, 1, &v, false, true);
                 }
             }

@@ -23,7 +23,10 @@ class Q1Assembler {
   const mesh::Q1Mesh& mesh() const { return mesh_; }
   /// massCoeff * M_rho + stiffCoeff * K_kappa with M_ij = int rho phi_i phi_j and
   /// K_ij = int kappa grad phi_i . grad phi_j; Dirichlet rows/columns replaced by the identity.
-  RCP<CrsMatrix> assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa) const;
+  /// With \p lumpMassAt (overlap flags, optional), mass couplings of the flagged nodes are moved to
+  /// the diagonal (row sums kept): lumped mass on the contact boundary against chattering (DESIGN 1.6).
+  RCP<CrsMatrix> assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,
+                                  const std::vector<char>& lumpMassAt = {}) const;
   /// out (owned) = scale * int f(., t) phi_i dx, or += if \p accumulate.
   void assembleLoad(const core::Expression& f, double t, double scale, Vector& out, bool accumulate = false) const;
   /// out (owned) += scale * int_{edges in mask} q(., t) phi_i ds.

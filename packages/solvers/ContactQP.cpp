@@ -56,6 +56,10 @@ core::ParameterList ContactQP::getValidParameters() {
                   1e-15, 1e-2);
   core::addInt(p, "Maximum Active Set Iterations", 50, "Semismooth Newton steps per time step", 1);
   core::addInt(p, "Maximum CG Iterations", 500, "CG iterations on the Schur complement per Newton step", 1);
+  core::addChoice(p, "Boundary Mass", "consistent",
+                  "Mass matrix on the contact boundary: consistent (the paper), or lumped at the nodes of Gamma_C "
+                  "(removes the chattering of impacting nodes, DESIGN 1.6)",
+                  {"consistent", "lumped"});
   core::addChoice(p, "Schur Preconditioner", "lumped",
                   "Preconditioner of CG on Q_AA: the lumped Schur complement B^T diag(A)^{-1} B, or none",
                   {"lumped", "none"});

@@ -1,0 +1,51 @@
+#pragma once
+/// Helpers shared by the tests: small meshes, with and without hanging nodes.
+#include <memory>
+
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_Core.hpp>
+
+#include "BoundarySegments.hpp"
+#include "CoarseMesh.hpp"
+#include "Forest.hpp"
+#include "Q1Mesh.hpp"
+
+namespace signorini::test {
+
+inline MPI_Comm rawComm() {
+  auto comm = Tpetra::getDefaultComm();
+  return *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm, true)->getRawMpiComm();
+}
+
+/// A forest on the rectangle with segments "left", "right", "bottom", "top" (one per side).
+struct TestMesh {
+  std::shared_ptr<mesh::CoarseMesh> coarse;
+  std::unique_ptr<mesh::BoundarySegments> segments;
+  std::unique_ptr<mesh::Forest> forest;
+  std::unique_ptr<mesh::Q1Mesh> mesh;
+
+  TestMesh(double x0, double x1, double y0, double y1, int nx, int ny, int level) {
+    coarse = mesh::CoarseMesh::rectangle(x0, x1, y0, y1, nx, ny);
+    segments = std::make_unique<mesh::BoundarySegments>(
+        std::vector<std::pair<std::string, std::string>>{{"left", "left"}, {"right", "right"}, {"bottom", "bottom"}, {"top", "top"}},
+        *coarse);
+    forest = std::make_unique<mesh::Forest>(coarse, rawComm(), level);
+  }
+  /// Refines the cells whose reference lower-left corner lies in the lower-left quarter of tree 0
+  /// twice (then balances and partitions): hanging nodes on several edges.
+  void refineCorner() {
+    for (int pass = 0; pass < 2; ++pass) {
+      forest->refineIf([](int tree, const p4est_quadrant_t& q) {
+        return tree == 0 && q.x < P4EST_ROOT_LEN / 2 && q.y < P4EST_ROOT_LEN / 2;
+      });
+      forest->balance();
+    }
+    forest->partition();
+  }
+  const mesh::Q1Mesh& build() {
+    mesh = std::make_unique<mesh::Q1Mesh>(*forest, *segments, Tpetra::getDefaultComm());
+    return *mesh;
+  }
+};
+
+}  // namespace signorini::test
