@@ -118,6 +118,14 @@ struct Simulation::Impl {
     out.putScalar(0.0);
     massSolver->solve(b, out);
   }
+  /// The energy the Newmark scheme with alpha = 1/2 conserves without contact and loads:
+  /// kinetic + strain + (beta - 1/4) k^2 / 2 a^T M a.
+  double newmarkEnergy() const {
+    Vector tmp(mesh->ownedMap());
+    M->apply(*a, tmp);
+    const double k = newmark->timeStep;
+    return energy(*u, *v) + (newmark->beta - 0.25) * 0.5 * k * k * tmp.dot(*a);
+  }
   double energy(const Vector& uu, const Vector& vv) const {
     Vector tmp(mesh->ownedMap());
     M->apply(vv, tmp);
@@ -258,7 +266,8 @@ RunSummary Simulation::run() {
   if (progress == 0) progress = std::max(1, nSteps / 20);
 
   std::vector<std::string> columns = {"step", "t", "dofs", "active", "qp_iterations", "cg_iterations",
-                                      "linear_solves", "linear_iterations", "energy", "contact_force",
+                                      "linear_solves", "linear_iterations", "energy", "newmark_energy",
+                                      "contact_force",
                                       "max_lambda", "min_gap", "max_complementarity", "time_assembly",
                                       "time_contact", "time_output"};
   for (const auto& p : I.probes) columns.push_back("probe:" + p.first);
@@ -306,7 +315,7 @@ RunSummary Simulation::run() {
     I.assembler->toOverlap(*I.u, uOverlap);
     std::vector<double> row = {double(step), t, double(summary.dofsPerStep), double(qr.active),
                                double(qr.activeSetIterations), double(qr.cgIterations), double(qr.linearSolves),
-                               double(qr.linearIterations), I.energy(*I.u, *I.v), force, toPhysical * qr.maxLambda,
+                               double(qr.linearIterations), I.energy(*I.u, *I.v), I.newmarkEnergy(), force, toPhysical * qr.maxLambda,
                                qr.minGap, toPhysical * qr.maxComplementarity, tAssembly, tContact, 0.0};
     for (const auto& p : I.probes) row.push_back(I.assembler->evaluate(uOverlap, p.second[0], p.second[1]));
     if (I.problem->exactSolution) {
@@ -326,7 +335,7 @@ RunSummary Simulation::run() {
       }
       exodus->write(0, *I.mesh, t, {&uOverlap, &vOverlap, &aOverlap}, {level}, contactEdges, contact);
     }
-    row[15] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    row[16] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (csv) csv->row(row);
   };
 

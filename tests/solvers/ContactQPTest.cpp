@@ -1,0 +1,171 @@
+// The contact QP (DESIGN 1.2) against an independent dense solution: Q = B^T A^{-1} B formed
+// column by column, every active set enumerated, the unique KKT point kept. Plus the coupling's
+// own facts: each column of B sums to its segment length, segments hold two fine edges.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Teuchos_SerialDenseMatrix.hpp>
+#include <Teuchos_SerialDenseSolver.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "../TestMesh.hpp"
+#include "ContactCoupling.hpp"
+#include "ContactQP.hpp"
+#include "Expression.hpp"
+#include "LinearSolver.hpp"
+#include "Q1Assembler.hpp"
+
+using namespace signorini;
+
+namespace {
+
+constexpr unsigned kLeft = 1u << 0, kRight = 1u << 1, kBottom = 1u << 2;
+
+core::ParameterList validated(core::ParameterList valid, core::ParameterList given = core::ParameterList()) {
+  core::validateDeck(given, valid, "test");
+  return given;
+}
+
+TEST(ContactCoupling, ColumnsSumToSegmentLengths) {
+  for (auto size : {fem::ContactCoupling::SegmentSize::TwoEdges, fem::ContactCoupling::SegmentSize::OneEdge}) {
+    test::TestMesh tm(0.0, 2.0, 0.0, 1.0, 2, 1, 3);  // bottom: 16 fine edges of length 1/8
+    tm.refineCorner();                              // graded near x = 0
+    const auto& m = tm.build();
+    fem::ContactCoupling B(m, kBottom, size, std::vector<char>(m.overlapMap()->getNodeNumElements(), 0));
+    double total = 0;
+    for (int j = 0; j < B.numSegments(); ++j) {
+      total += B.segmentLength()[j];
+      if (size == fem::ContactCoupling::SegmentSize::TwoEdges)
+        EXPECT_GE(B.segmentEdges()[j], 2);
+      else
+        EXPECT_EQ(B.segmentEdges()[j], 1);
+    }
+    EXPECT_NEAR(total, 2.0, 1e-14);
+    Vector one(m.ownedMap());
+    one.putScalar(1.0);
+    const auto colSums = B.applyTranspose(one);  // (B^T 1)_j = int_{E_j} 1 ds = |E_j|
+    for (int j = 0; j < B.numSegments(); ++j) EXPECT_NEAR(colSums[j], B.segmentLength()[j], 1e-14);
+    // gbar of a linear obstacle = |E_j| times its value at the midpoint.
+    const auto gbar = B.weightedObstacle(core::Expression("3*x - 1", "test"), 0.0);
+    for (int j = 0; j < B.numSegments(); ++j)
+      EXPECT_NEAR(gbar[j], B.segmentLength()[j] * (3 * B.segmentMidpoint()[j][0] - 1), 1e-13);
+    // Segments are ordered along the boundary.
+    for (int j = 1; j < B.numSegments(); ++j) EXPECT_GT(B.segmentMidpoint()[j][0], B.segmentMidpoint()[j - 1][0]);
+  }
+}
+
+/// Dense reference: solves the QP by enumerating active sets (m small).
+std::vector<double> bruteForce(const std::vector<double>& Q, const std::vector<double>& q, int m) {
+  // KKT: lambda_I = 0, (Q lambda - q)_A = 0 (G_A = 0), lambda_A <= 0, G = q - Q lambda >= 0 on I.
+  for (unsigned mask = 0; mask < (1u << m); ++mask) {
+    std::vector<int> A;
+    for (int j = 0; j < m; ++j)
+      if (mask & (1u << j)) A.push_back(j);
+    const int na = static_cast<int>(A.size());
+    std::vector<double> lambda(m, 0.0);
+    if (na > 0) {
+      Teuchos::SerialDenseMatrix<int, double> QA(na, na);
+      Teuchos::SerialDenseMatrix<int, double> rhs(na, 1), x(na, 1);
+      for (int a = 0; a < na; ++a) {
+        rhs(a, 0) = q[A[a]];
+        for (int b = 0; b < na; ++b) QA(a, b) = Q[A[a] * m + A[b]];
+      }
+      Teuchos::SerialDenseSolver<int, double> solver;
+      solver.setMatrix(Teuchos::rcpFromRef(QA));
+      solver.setVectors(Teuchos::rcpFromRef(x), Teuchos::rcpFromRef(rhs));
+      if (solver.solve() != 0) continue;
+      for (int a = 0; a < na; ++a) lambda[A[a]] = x(a, 0);
+    }
+    bool ok = true;
+    for (int j = 0; j < m; ++j) {
+      double G = q[j];
+      for (int k = 0; k < m; ++k) G -= Q[j * m + k] * lambda[k];
+      if (lambda[j] > 1e-12 || G < -1e-12) ok = false;
+    }
+    if (ok) return lambda;
+  }
+  ADD_FAILURE() << "no KKT point found by enumeration";
+  return {};
+}
+
+class ContactQPTest : public ::testing::TestWithParam<double> {};
+
+TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
+  const double obstacleHeight = GetParam();
+  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 1, 1, 3);  // 8 x 8 cells, contact on the right: 4 segments
+  const auto& m = tm.build();
+  const auto dir = m.nodesOnSegments(kLeft);
+  fem::Q1Assembler asmb(m, dir);
+  const double k = 0.05;
+  auto A = asmb.assembleOperator(1.0, 0.5 * k * k, 1.0, 1.0);
+  fem::ContactCoupling B(m, kRight, fem::ContactCoupling::SegmentSize::TwoEdges, dir);
+  const int ns = B.numSegments();
+  ASSERT_EQ(ns, 4);
+  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()), m.comm());
+  solver.setOperator(A, 1.0);
+  // Load: the body moves towards the obstacle u >= g with g tilted, so some segments touch.
+  Vector F(m.ownedMap());
+  asmb.assembleLoad(core::Expression("-x*(1 + y)", "test"), 0.0, 1.0, F);
+  const auto gbar = B.weightedObstacle(core::Expression(std::to_string(obstacleHeight) + " + 0.3*y", "test"), 0.0);
+
+  // Dense reference.
+  std::vector<double> Q(ns * ns), q(ns);
+  Vector uf(m.ownedMap()), w(m.ownedMap()), Be(m.ownedMap());
+  solver.solve(F, uf);
+  const auto Btuf = B.applyTranspose(uf);
+  for (int j = 0; j < ns; ++j) q[j] = Btuf[j] - gbar[j];
+  for (int j = 0; j < ns; ++j) {
+    std::vector<double> e(ns, 0.0);
+    e[j] = 1.0;
+    B.apply(e, Be);
+    w.putScalar(0.0);
+    solver.solve(Be, w);
+    const auto col = B.applyTranspose(w);
+    for (int i = 0; i < ns; ++i) Q[i * ns + j] = col[i];
+  }
+  const auto reference = bruteForce(Q, q, ns);
+  ASSERT_EQ(static_cast<int>(reference.size()), ns);
+  int activeRef = 0;
+  for (double l : reference) activeRef += l < 0;
+
+  core::ParameterList cp;
+  cp.set("KKT Tolerance", 1e-12);
+  solvers::ContactQP qp(validated(solvers::ContactQP::getValidParameters(), cp), 1.0);
+  qp.setSystem(*A, B);
+  for (int warm = 0; warm < 2; ++warm) {  // cold start, then warm start from the solution
+    std::vector<double> lambda = warm ? reference : std::vector<double>(ns, 0.0), G;
+    Vector u(m.ownedMap());
+    const auto res = qp.solve(solver, B, F, gbar, lambda, u, G);
+    double scale = 0;
+    for (double l : reference) scale = std::max(scale, std::abs(l));
+    for (int j = 0; j < ns; ++j) EXPECT_NEAR(lambda[j], reference[j], 1e-7 * std::max(scale, 1e-300)) << "segment " << j;
+    EXPECT_EQ(res.active, activeRef);
+    if (warm) EXPECT_EQ(res.activeSetIterations, 1);
+    // Independent KKT check: recompute u = A^{-1}(F - B lambda) and G = B^T u - gbar.
+    Vector rhs(m.ownedMap()), u2(m.ownedMap());
+    rhs.assign(F);
+    B.apply(lambda, rhs, -1.0, true);
+    solver.solve(rhs, u2);
+    const auto G2 = B.applyTranspose(u2);
+    for (int j = 0; j < ns; ++j) {
+      const double gap = (G2[j] - gbar[j]) / B.segmentLength()[j];
+      EXPECT_LE(lambda[j], 0.0);
+      EXPECT_GE(gap, -1e-9);
+      EXPECT_LE(std::abs(lambda[j] * gap), 1e-9 * std::max(scale, 1e-300));
+      EXPECT_NEAR(G[j], G2[j] - gbar[j], 1e-9 * B.segmentLength()[j]);
+    }
+    u2.update(-1.0, u, 1.0);
+    EXPECT_LT(u2.normInf(), 1e-8);
+  }
+  // The cases cover no contact, partial contact and full contact.
+  if (obstacleHeight < -10) EXPECT_EQ(activeRef, 0);
+  if (obstacleHeight == -1.6) EXPECT_TRUE(activeRef > 0 && activeRef < ns);
+  if (obstacleHeight > -1) EXPECT_EQ(activeRef, ns);
+}
+
+// Obstacles: far away (no contact), partly touching, pushing everywhere.
+INSTANTIATE_TEST_SUITE_P(Obstacles, ContactQPTest, ::testing::Values(-100.0, -1.6, -1.3, -0.5));
+
+}  // namespace
