@@ -35,6 +35,9 @@ core::ParameterList outputParameters() {
   core::addBool(p, "Write Exodus", true, "Write <basename>.e (Exodus II time series for ParaView)");
   core::addInt(p, "Exodus Interval", 1, "Write every n-th step to Exodus (the first and last step always)", 1);
   core::addInt(p, "Progress Interval", 0, "Print a progress line every n steps (0: about 20 lines per run)", 0);
+  core::addBool(p, "Measure Contact Overhead", false,
+                "Also solve each step without contact (same A, preconditioner and initial guess) and report its "
+                "time as time_unconstrained: the contact solve costs time_contact / time_unconstrained of it");
   core::addNamedStrings(p, "Probes", "Named points \"x, y\": u interpolated there becomes the CSV column probe:<name>");
   return p;
 }
@@ -269,7 +272,7 @@ RunSummary Simulation::run() {
                                       "linear_solves", "linear_iterations", "energy", "newmark_energy",
                                       "contact_force",
                                       "max_lambda", "min_gap", "max_complementarity", "time_assembly",
-                                      "time_contact", "time_output"};
+                                      "time_contact", "time_output", "time_unconstrained"};
   for (const auto& p : I.probes) columns.push_back("probe:" + p.first);
   if (I.problem->exactSolution) {
     columns.push_back("error_l2");
@@ -303,7 +306,9 @@ RunSummary Simulation::run() {
   const auto start = std::chrono::steady_clock::now();
   Vector uOverlap(I.mesh->overlapMap()), vOverlap(I.mesh->overlapMap()), aOverlap(I.mesh->overlapMap());
 
-  auto writeOutputs = [&](int step, double t, const solvers::ContactQPResult& qr, double tAssembly, double tContact) {
+  const bool measureOverhead = outParams.get<bool>("Measure Contact Overhead");
+  auto writeOutputs = [&](int step, double t, const solvers::ContactQPResult& qr, double tAssembly, double tContact,
+                          double tFree) {
     auto scope = I.timers.scope("output");
     const auto t0 = std::chrono::steady_clock::now();
     // The QP multiplier is beta k^2 times the physical one (kappa du/dn = -lambda on Gamma_C).
@@ -316,7 +321,7 @@ RunSummary Simulation::run() {
     std::vector<double> row = {double(step), t, double(summary.dofsPerStep), double(qr.active),
                                double(qr.activeSetIterations), double(qr.cgIterations), double(qr.linearSolves),
                                double(qr.linearIterations), I.energy(*I.u, *I.v), I.newmarkEnergy(), force, toPhysical * qr.maxLambda,
-                               qr.minGap, toPhysical * qr.maxComplementarity, tAssembly, tContact, 0.0};
+                               qr.minGap, toPhysical * qr.maxComplementarity, tAssembly, tContact, 0.0, tFree};
     for (const auto& p : I.probes) row.push_back(I.assembler->evaluate(uOverlap, p.second[0], p.second[1]));
     if (I.problem->exactSolution) {
       const auto [l2, h1] = I.assembler->errorNorms(*I.u, *I.problem->exactSolution, t);
@@ -341,7 +346,7 @@ RunSummary Simulation::run() {
 
   try {
     solvers::ContactQPResult none;
-    writeOutputs(0, 0.0, none, 0.0, 0.0);
+    writeOutputs(0, 0.0, none, 0.0, 0.0, 0.0);
     Vector F(owned), pred(owned), load(owned), uOld(owned);
     for (int n = 1; n <= nSteps; ++n) {
       const double t = n * k;
@@ -374,9 +379,18 @@ RunSummary Simulation::run() {
         }
       }
       const auto tA2 = std::chrono::steady_clock::now();
+      double tFree = 0;
+      if (measureOverhead) {  // the same solve without contact, for the ratio time_contact / time_unconstrained
+        Vector x(owned);
+        x.assign(pred);
+        I.assembler->zeroDirichlet(x);
+        const auto t0 = std::chrono::steady_clock::now();
+        I.solver->solve(F, x);
+        tFree = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      }
       I.newmark->update(uOld, *I.u, *I.v, *I.a);
       writeOutputs(n, t, qr, std::chrono::duration<double>(tA1 - tA0).count(),
-                   std::chrono::duration<double>(tA2 - tA1).count());
+                   std::chrono::duration<double>(tA2 - tA1).count(), tFree);
       if (n % progress == 0 || n == nSteps) {
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         core::rootOut(rank) << std::fixed << std::setprecision(4) << "  step " << n << "/" << nSteps << "  t = " << t
