@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
+#include "DeckReader.hpp"
 #include "Error.hpp"
 #include "ParameterTools.hpp"
 #include "PhaseTimers.hpp"
@@ -31,14 +31,7 @@ using signorini::core::ParameterList;
 
 /// Reads and validates one deck with the command-line overrides applied.
 ParameterList readDeck(const std::string& path, const std::vector<std::string>& overrides) {
-  ParameterList deck;
-  try {
-    Teuchos::updateParametersFromXmlFile(path, Teuchos::outArg(deck));
-  } catch (std::exception& e) {
-    std::string what = e.what();
-    if (what.size() > 400) what = what.substr(0, 400) + "...";
-    SIGNORINI_USER_ERROR(path << ": cannot read the deck (missing file or malformed XML): " << what);
-  }
+  ParameterList deck = signorini::io::readDeckFile(path);
   const auto valid = signorini::dynamics::Simulation::getValidParameters();
   for (const auto& o : overrides) signorini::core::applyOverride(deck, o, valid);
   signorini::core::validateDeck(deck, valid, path);
@@ -93,10 +86,15 @@ int main(int argc, char** argv) {
       for (const auto& f : summary.files) out << "  wrote " << f << std::endl;
     } catch (signorini::core::UserError& e) {
       ++failures;
-      if (rank == 0) std::cerr << "signorini: error: " << e.what() << std::endl;
+      const std::string what = e.what();
+      if (rank == 0)
+        std::cerr << "signorini: error: " << (what.rfind(path, 0) == 0 ? "" : path + ": ") << what << std::endl;
     } catch (signorini::core::SolverError& e) {
       ++failures;
       if (rank == 0) std::cerr << "signorini: " << path << ": solver failure: " << e.what() << std::endl;
+    } catch (std::exception& e) {  // a bug or a library error: still a clean non-zero exit
+      ++failures;
+      if (rank == 0) std::cerr << "signorini: " << path << ": unexpected error: " << e.what() << std::endl;
     }
   }
   if (failures) out << "signorini: " << failures << " of " << decks.size() << " deck(s) failed" << std::endl;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <sstream>
 
@@ -103,7 +104,7 @@ void validateRecursive(ParameterList& deck, const ParameterList& valid, const st
     const auto& va = ventry.getAny();
     auto da = dentry.getAny();
     if (va.type() == typeid(double) && da.type() == typeid(int)) {  // an int is a fine double
-      deck.set(key, static_cast<double>(Teuchos::any_cast<int>(da)), ventry.docString(), ventry.validator());
+      deck.set(key, static_cast<double>(Teuchos::any_cast<int>(da)));  // validated below
       da = deck.getEntry(key).getAny();
     }
     if (va.type() != da.type())
@@ -233,7 +234,15 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
                                        << (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
       }
       const auto& e = v->getEntry(parts[i]);
-      v = (hasTag(e, kPassThroughTag) || hasTag(e, kNamedStringsTag)) ? nullptr : &v->sublist(parts[i]);
+      if (hasTag(e, kNamedStringsTag)) {  // user-chosen names, string values
+        if (i + 2 != parts.size())
+          SIGNORINI_USER_ERROR("--set '" << spec << "': '" << walked << "' holds named strings, not sublists");
+        ParameterList* target = &deck;
+        for (size_t k = 0; k <= i; ++k) target = &target->sublist(parts[k]);
+        target->set(parts.back(), value);
+        return;
+      }
+      v = hasTag(e, kPassThroughTag) ? nullptr : &v->sublist(parts[i]);
     }
     d = &d->sublist(parts[i]);
   }
@@ -248,7 +257,9 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
   };
   auto parseInt = [&](int& out) {
     char* end = nullptr;
+    errno = 0;
     const long l = std::strtol(value.c_str(), &end, 10);
+    if (errno == ERANGE || l < std::numeric_limits<int>::min() || l > std::numeric_limits<int>::max()) return false;
     out = static_cast<int>(l);
     return !value.empty() && end && *end == '\0';
   };

@@ -214,7 +214,7 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     if (I.coupling->numSegments() == 0)
       SIGNORINI_USER_ERROR("Problem/Contact Segments: the named segments contain no boundary edge of the mesh");
     I.qp = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), I.coarse->diameter());
-    I.qp->setSystem(*I.A, *I.coupling);
+    I.qp->setSystem(*I.A, *I.coupling, I.courant);
     I.lambda.assign(I.coupling->numSegments(), 0.0);
   }
 

@@ -5,13 +5,18 @@
 /// whose KKT multiplier is the weighted gap G = B^T u - gbar >= 0 with u = A^{-1}(F - B l).
 /// Solved by a primal-dual active set (semismooth Newton) method; each Newton step solves
 /// Q_AA d = G_A by conjugate gradients (one A-solve per iteration, u accumulated on the way)
-/// preconditioned by the lumped Schur complement B^T diag(A)^{-1} B restricted to the active set.
+/// preconditioned by a local approximation of Q on the active set: B^T A_s^{-1} B with A_s the
+/// step matrix on a strip along Gamma_C (default), or the lumped B^T diag(A)^{-1} B. With the strip,
+/// A_s^{-1} B p also starts each A-solve, so the exact solves need few iterations.
 #include <string>
 #include <vector>
+
+#include <memory>
 
 #include "ContactCoupling.hpp"
 #include "LinearSolver.hpp"
 #include "ParameterTools.hpp"
+#include "StripSchurApproximation.hpp"
 
 namespace signorini::solvers {
 
@@ -33,8 +38,10 @@ class ContactQP {
   /// KKT tolerance an absolute gap tolerance [length].
   ContactQP(const core::ParameterList& params, double lengthScale);
 
+  ~ContactQP();
   /// Prepares for a new step matrix or contact coupling (the Schur preconditioner).
-  void setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupling);
+  /// \p courant = c k / h_min sets the strip width in node layers ("Strip Width" times it).
+  void setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupling, double courant);
   /// Solves the QP for load F (owned) and weighted obstacle gbar. \p lambda is the warm start
   /// on entry and the multiplier on exit; \p u is the initial guess of the first A-solve on entry
   /// and the displacement on exit; \p G returns the weighted gap.
@@ -50,8 +57,9 @@ class ContactQP {
  private:
   core::ParameterList params_;
   double gapTol_;
-  bool precondition_ = true;
-  std::vector<double> lumped_;  // B^T diag(A)^{-1} B, dense m x m
+  std::string preconditioner_;
+  std::vector<double> approxQ_;  // the local approximation of Q, dense m x m (identity for "none")
+  std::unique_ptr<StripSchurApproximation> strip_;
   std::vector<double> segLen_;
 };
 

@@ -90,10 +90,10 @@ std::vector<double> bruteForce(const std::vector<double>& Q, const std::vector<d
   return {};
 }
 
-class ContactQPTest : public ::testing::TestWithParam<double> {};
+class ContactQPTest : public ::testing::TestWithParam<std::tuple<double, std::string>> {};
 
 TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
-  const double obstacleHeight = GetParam();
+  const double obstacleHeight = std::get<0>(GetParam());
   test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 1, 1, 3);  // 8 x 8 cells, contact on the right: 4 segments
   const auto& m = tm.build();
   const auto dir = m.nodesOnSegments(kLeft);
@@ -132,8 +132,9 @@ TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
 
   core::ParameterList cp;
   cp.set("KKT Tolerance", 1e-12);
+  cp.set("Schur Preconditioner", std::get<1>(GetParam()));
   solvers::ContactQP qp(validated(solvers::ContactQP::getValidParameters(), cp), 1.0);
-  qp.setSystem(*A, B);
+  qp.setSystem(*A, B, 1.0);
   for (int warm = 0; warm < 2; ++warm) {  // cold start, then warm start from the solution
     std::vector<double> lambda = warm ? reference : std::vector<double>(ns, 0.0), G;
     Vector u(m.ownedMap());
@@ -166,6 +167,8 @@ TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
 }
 
 // Obstacles: far away (no contact), partly touching, pushing everywhere.
-INSTANTIATE_TEST_SUITE_P(Obstacles, ContactQPTest, ::testing::Values(-100.0, -1.6, -1.3, -0.5));
+INSTANTIATE_TEST_SUITE_P(Obstacles, ContactQPTest,
+                         ::testing::Combine(::testing::Values(-100.0, -1.6, -1.3, -0.5),
+                                            ::testing::Values("strip", "lumped", "none")));
 
 }  // namespace

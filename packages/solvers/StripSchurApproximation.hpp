@@ -1,0 +1,37 @@
+#pragma once
+/// \file StripSchurApproximation.hpp
+/// A local approximation of the Schur complement Q = B^T A^{-1} B (DESIGN 1.6): A restricted to
+/// a strip of a few layers of nodes along the contact boundary (homogeneous Dirichlet at its
+/// inner edge), factored once per mesh with Amesos2/KLU2. Provides
+///  - Qs = B^T A_s^{-1} B (dense m x m, replicated): a preconditioner for CG on Q_AA, whose
+///    entries decay like exp(-1.4 d/k) so a strip of about 6 c k captures them;
+///  - W_s p = A_s^{-1} B p (zero outside the strip): an initial guess for the exact A-solve.
+/// Amesos2 headers stay in the .cpp (compile time).
+#include <memory>
+#include <vector>
+
+#include "ContactCoupling.hpp"
+
+namespace signorini::solvers {
+
+class StripSchurApproximation {
+ public:
+  /// \param layers number of node layers of the strip (>= 1) counted from the contact nodes.
+  StripSchurApproximation(const CrsMatrix& A, const fem::ContactCoupling& B, int layers);
+  ~StripSchurApproximation();
+
+  /// B^T A_s^{-1} B, row-major m x m, identical on all ranks.
+  const std::vector<double>& matrix() const { return Qs_; }
+  /// out (owned map of A) = A_s^{-1} B p, zero outside the strip.
+  void applyStripInverse(const std::vector<double>& p, Vector& out) const;
+  /// Number of strip nodes over all ranks.
+  long long stripSize() const { return stripSize_; }
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::vector<double> Qs_;
+  long long stripSize_ = 0;
+};
+
+}  // namespace signorini::solvers

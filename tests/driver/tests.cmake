@@ -1,0 +1,160 @@
+# End-to-end tests of the signorini driver on bad input (label "driver").
+# Each case runs `signorini` on 2 MPI ranks through run_bad_deck.cmake, which checks the exit
+# status of EVERY rank, the message (regular expressions) and that the output directory is left
+# empty (or holds exactly the expected files). The decks in driver/decks are copies of the tiny
+# valid deck good.xml with ONE defect each (see the comment at the top of each file).
+set(SIGNORINI_DRIVER_TEST_DIR ${CMAKE_CURRENT_LIST_DIR})
+set(SIGNORINI_DRIVER_DECKS ${CMAKE_CURRENT_LIST_DIR}/decks)
+
+# signorini_add_driver_test(NAME EXIT <status>|nonzero ARGS <signorini args>...
+#                           [REGEX <re>...] [FILES <file>...] [NP n])
+# ARGS may use {OUT} for the test's fresh output directory. Every REGEX must match stdout+stderr;
+# FILES are the only files allowed (and required) in the output directory afterwards.
+function(signorini_add_driver_test name)
+  cmake_parse_arguments(D "" "EXIT;NP" "ARGS;REGEX;FILES" ${ARGN})
+  if(NOT D_NP)
+    set(D_NP 2)
+  endif()
+  string(REPLACE ";" "|" args "${D_ARGS}")
+  string(REPLACE ";" "<AND>" regex "${D_REGEX}")
+  string(REPLACE ";" "|" files "${D_FILES}")
+  add_test(NAME driver_${name}
+    COMMAND ${CMAKE_COMMAND}
+      "-DSIGNORINI=$<TARGET_FILE:signorini>"
+      "-DMPIEXEC=${SIGNORINI_MPIEXEC}"
+      "-DNP=${D_NP}"
+      "-DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/driver/${name}"
+      "-DWRAPPER=${SIGNORINI_DRIVER_TEST_DIR}/rank_status.sh"
+      "-DARGS=${args}"
+      "-DEXPECT_EXIT=${D_EXIT}"
+      "-DEXPECT_REGEX=${regex}"
+      "-DEXPECT_FILES=${files}"
+      -DTIMEOUT=50
+      -P ${SIGNORINI_DRIVER_TEST_DIR}/run_bad_deck.cmake)
+  set_tests_properties(driver_${name} PROPERTIES TIMEOUT 60 PROCESSORS ${D_NP} LABELS driver)
+endfunction()
+
+# A bad deck: exit status 1 on every rank, the message, nothing written.
+function(signorini_add_bad_deck_test name deck)
+  signorini_add_driver_test(${name} EXIT 1 ARGS --output-dir {OUT} ${deck} REGEX ${ARGN})
+endfunction()
+
+set(decks ${SIGNORINI_DRIVER_DECKS})
+
+# Controls: the base deck (and its Exodus variant) are valid, so each bad deck fails because of
+# its one defect.
+signorini_add_driver_test(good_deck EXIT 0
+  ARGS --output-dir {OUT} ${decks}/good.xml
+  REGEX "good[.]xml done: 4 steps"
+  FILES good.steps.csv good.e)
+signorini_add_driver_test(good_exodus_deck EXIT 0
+  ARGS --output-dir {OUT} ${decks}/good-exodus.xml
+  REGEX "good-exodus[.]xml done: 4 steps"
+  FILES good-exodus.steps.csv good-exodus.e)
+
+# Reading the deck.
+signorini_add_bad_deck_test(malformed_xml ${decks}/malformed.xml
+  "malformed[.]xml: malformed XML deck"
+  "not well-formed|XML parse error")
+signorini_add_bad_deck_test(missing_deck ${decks}/does-not-exist.xml
+  "does-not-exist[.]xml: cannot open the deck"
+  "missing or unreadable file")
+
+# Validation against Simulation::getValidParameters().
+signorini_add_bad_deck_test(unknown_key ${decks}/unknown-key.xml
+  "unknown-key[.]xml: unknown parameter 'Time Stepp' in sublist 'Time Integration'"
+  "did you mean 'Time Step'")
+signorini_add_bad_deck_test(wrong_type ${decks}/wrong-type.xml
+  "wrong-type[.]xml: 'Time Integration/Time Step' has type string but must be double")
+signorini_add_bad_deck_test(zero_time_step ${decks}/zero-time-step.xml
+  "zero-time-step[.]xml: 'Time Integration/Time Step' = 0 is not allowed")
+signorini_add_bad_deck_test(negative_time_step ${decks}/negative-time-step.xml
+  "negative-time-step[.]xml: 'Time Integration/Time Step' = -0[.]0025 is not allowed")
+# A value that is not a number of the declared type ("0.01s") must not be read as 0.01 silently.
+signorini_add_bad_deck_test(unparsable_number ${decks}/unparsable-number.xml
+  "error: .*unparsable-number[.]xml.*Final Time")
+# An int is accepted for a double, and must then be range-checked like one (not crash).
+signorini_add_bad_deck_test(int_out_of_range_for_double ${decks}/int-out-of-range-for-double.xml
+  "int-out-of-range-for-double[.]xml: 'Time Integration/Alpha' = 3 is not allowed")
+
+# Newmark: 2 beta >= alpha >= 1/2.
+signorini_add_bad_deck_test(newmark_alpha_too_small ${decks}/alpha-too-small.xml
+  "Time Integration/Alpha = 0[.]4 violates 2 Beta >= Alpha >= 1/2")
+signorini_add_bad_deck_test(newmark_beta_too_small ${decks}/beta-too-small.xml
+  "Time Integration/Beta = 0[.]2 violates 2 Beta >= Alpha >= 1/2")
+
+# Boundary segments naming a side set the mesh does not have.
+signorini_add_bad_deck_test(missing_side_set ${decks}/missing-side-set.xml
+  "Mesh/Boundary Segments/contact: side set 'rigth' does not exist"
+  "its side sets: bottom, left, right, top")
+signorini_add_bad_deck_test(exodus_missing_side_set ${decks}/exodus-missing-side-set.xml
+  "Mesh/Boundary Segments/contact: side set 'east' does not exist in .*unit-square-4x4[.]exo"
+  "its side sets: bottom, left, right, top")
+
+signorini_add_bad_deck_test(exodus_missing_file ${decks}/exodus-missing-file.xml
+  "Exodus II mesh file '[^']*no-such-mesh[.]exo' does not exist")
+
+# Problem set-up.
+signorini_add_bad_deck_test(unknown_segment_name ${decks}/unknown-segment-name.xml
+  "Problem/Contact Segments: no boundary segment named 'contakt'"
+  "did you mean 'contact'")
+signorini_add_bad_deck_test(initial_penetration ${decks}/penetrating.xml
+  "Problem/Initial Displacement penetrates the obstacle at t = 0")
+signorini_add_bad_deck_test(bad_expression ${decks}/bad-expression.xml
+  "Problem/Obstacle: cannot parse expression 'sin[(]pi[*]y - 1[.]05'")
+
+# Output directory that cannot be created or written (the test's own output directory, also
+# the working directory, must stay empty).
+signorini_add_driver_test(unwritable_output_dir_under_file EXIT 1
+  ARGS --output-dir /dev/null/out ${decks}/good.xml
+  REGEX "Output/Directory: cannot write to '/dev/null/out'")
+signorini_add_driver_test(unwritable_output_dir_in_proc EXIT 1
+  ARGS --output-dir /proc/signorini-not-writable ${decks}/good.xml
+  REGEX "Output/Directory: cannot write to '/proc/signorini-not-writable'")
+
+# --set overrides are validated like the deck.
+signorini_add_driver_test(set_unknown_key EXIT 1
+  ARGS --output-dir {OUT} --set "Time Integration/Time Stp=0.001" ${decks}/good.xml
+  REGEX "--set 'Time Integration/Time Stp=0[.]001': unknown parameter 'Time Stp'"
+        "did you mean 'Time Step'")
+signorini_add_driver_test(set_bad_double EXIT 1
+  ARGS --output-dir {OUT} --set "Time Integration/Time Step=fast" ${decks}/good.xml
+  REGEX "--set 'Time Integration/Time Step=fast': 'fast' is not a valid double")
+
+# Bad usage: exit status 2.
+signorini_add_driver_test(usage_no_deck EXIT 2
+  REGEX "usage: signorini")
+signorini_add_driver_test(usage_unknown_option EXIT 2
+  ARGS --bogus ${decks}/good.xml
+  REGEX "unknown option --bogus" "usage: signorini")
+signorini_add_driver_test(usage_option_without_value EXIT 2
+  ARGS --output-dir
+  REGEX "--output-dir needs a value")
+
+# Batches: a failing deck does not stop the others, but the exit status says something failed.
+signorini_add_driver_test(batch_bad_then_good EXIT 1
+  ARGS --output-dir {OUT} ${decks}/unknown-key.xml ${decks}/good.xml
+  REGEX "unknown parameter 'Time Stepp'"
+        "good[.]xml done: 4 steps"
+        "1 of 2 deck[(]s[)] failed"
+  FILES good.steps.csv good.e)
+signorini_add_driver_test(batch_good_then_bad EXIT 1
+  ARGS --output-dir {OUT} ${decks}/good.xml ${decks}/penetrating.xml
+  REGEX "good[.]xml done: 4 steps"
+        "Problem/Initial Displacement penetrates the obstacle"
+        "1 of 2 deck[(]s[)] failed"
+  FILES good.steps.csv good.e)
+
+# A solver failure in the middle of the run (after steps 0 and 1 were written): every rank
+# exits 1 and the partial outputs are removed.
+signorini_add_driver_test(solver_failure_mid_run EXIT 1
+  ARGS --output-dir {OUT} ${decks}/solver-failure.xml
+  REGEX "step 1/4"
+        "solver-failure[.]xml: solver failure: linear solver .* did not reach the relative tolerance")
+
+# --print-parameters: exit 0, every parameter with its full path, nothing written.
+signorini_add_driver_test(print_parameters EXIT 0
+  ARGS --print-parameters
+  REGEX "Time Integration/Time Step : double = 0[.]0025"
+        "Mesh/Boundary Segments/  [(]sublist[)]"
+        "Output/Write Exodus : bool")
