@@ -28,7 +28,10 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
   for (LO i = 0; i < owned; ++i) gids[i] = static_cast<GO>(lnodes->global_offset + i);
   for (LO i = owned; i < numLocalNodes; ++i) gids[i] = static_cast<GO>(lnodes->nonlocal_nodes[i - owned]);
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  ownedMap_ = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids.data(), owned), 0, comm));
+  // lnodes numbers the owned nodes contiguously by rank: a contiguous map (Amesos2 and MueLu's
+  // coarse solver need one).
+  ownedMap_ = Teuchos::rcp(new Map(invalid, static_cast<size_t>(owned), 0, comm));
+  SIGNORINI_ASSERT(owned == 0 || ownedMap_->getMinGlobalIndex() == gids[0], "lnodes owned nodes are not contiguous");
   overlapMap_ = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids.data(), numLocalNodes), 0, comm));
 
   numCells_ = static_cast<LO>(p4est->local_num_quadrants);

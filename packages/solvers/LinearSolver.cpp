@@ -60,9 +60,15 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
     Teuchos::ParameterList mueluParams;
     mueluParams.set("verbosity", "none");
     mueluParams.set("smoother: type", "CHEBYSHEV");
-    mueluParams.set("coarse: max size", 2000);
+    // The coarsest level is small and relaxed, not factored: MueLu 13.2's default KLU2 coarse
+    // solve failed to converge on 2 ranks for small problems.
+    mueluParams.set("coarse: max size", 200);
+    mueluParams.set("coarse: type", "RELAXATION");
+    mueluParams.sublist("coarse: params").set("relaxation: type", "Symmetric Gauss-Seidel");
+    mueluParams.sublist("coarse: params").set("relaxation: sweeps", 4);
     mueluParams.setParameters(I.params.sublist("MueLu"));
-    RCP<Operator> op = Anc;
+    // MueLu gets a plain CrsMatrix copy (not the FECrsMatrix itself).
+    RCP<Operator> op = Teuchos::rcp(new CrsMatrix(*A, Teuchos::Copy));
     I.prec = MueLu::CreateTpetraPreconditioner(op, mueluParams);
   } else if (choice == "Jacobi") {
     using RowMatrix = Tpetra::RowMatrix<Scalar, LO, GO, Node>;

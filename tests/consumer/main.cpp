@@ -1,0 +1,12 @@
+// Uses an installed signorini library: evaluates a deck expression.
+#include <cmath>
+#include <cstdio>
+
+#include <Expression.hpp>
+
+int main() {
+  signorini::core::Expression g("sin(pi*y) - 1.05", "consumer");
+  const double v = g(1.0, 0.5, 0.0);
+  std::printf("g(1, 0.5) = %g\n", v);
+  return std::abs(v + 0.05) < 1e-14 ? 0 : 1;
+}
