@@ -6,6 +6,7 @@
 /// Each deck is read and validated on every rank (so a bad deck fails everywhere at once),
 /// the mesh and problem are set up, and the run writes <basename>.steps.csv and <basename>.e.
 /// A failing deck is reported and the next one still runs; the exit status is non-zero if any failed.
+#include <iomanip>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -83,6 +84,10 @@ int main(int argc, char** argv) {
       const auto summary = sim.run();
       out << "signorini: " << path << " done: " << summary.steps << " steps, " << summary.dofsPerStep
           << " unknowns per step, " << summary.wallSeconds << " s" << std::endl;
+      out << "  phase seconds:";
+      for (const auto& [phase, seconds] : summary.phaseSeconds)
+        out << " " << phase << " " << std::fixed << std::setprecision(3) << seconds;
+      out << std::endl;
       for (const auto& f : summary.files) out << "  wrote " << f << std::endl;
     } catch (signorini::core::UserError& e) {
       ++failures;

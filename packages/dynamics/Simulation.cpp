@@ -214,6 +214,7 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     if (I.coupling->numSegments() == 0)
       SIGNORINI_USER_ERROR("Problem/Contact Segments: the named segments contain no boundary edge of the mesh");
     I.qp = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), I.coarse->diameter());
+    auto scope = I.timers.scope("preconditioner");  // the Schur preconditioner (strip factorisation)
     I.qp->setSystem(*I.A, *I.coupling, I.courant);
     I.lambda.assign(I.coupling->numSegments(), 0.0);
   }
@@ -412,6 +413,7 @@ RunSummary Simulation::run() {
   if (exodus)
     for (const auto& f : exodus->close()) summary.files.push_back(f);
   summary.steps = nSteps;
+  summary.phaseSeconds = I.timers.all();
   summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;
 }

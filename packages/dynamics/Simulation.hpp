@@ -2,6 +2,8 @@
 /// \file Simulation.hpp
 /// One run of a deck: the dynamic Signorini problem stepped by Newmark with a contact QP per
 /// step (paper Algorithm 3.3 on a uniform mesh), with per-step CSV and Exodus output.
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,8 @@ struct RunSummary {
   long long dofsPerStep = 0;
   double wallSeconds = 0;
   std::vector<std::string> files;
+  /// Wall seconds per phase (mesh, assembly, preconditioner, contact, output) over the whole run.
+  std::map<std::string, double> phaseSeconds;
 };
 
 class Simulation {

@@ -3,6 +3,7 @@
 #include <Amesos2.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Export.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
@@ -108,12 +109,47 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
       for (size_t k = 0; k < idx.extent(0); ++k) h(s, bcol->getGlobalElement(idx(k))) = vals(k);
     }
   }
-  impl_->W = Teuchos::rcp(new MultiVector(impl_->stripMap, std::max(m, 1)));
-  if (m > 0) {
-    auto BsPtr = Teuchos::rcpFromRef(Bs);
-    auto solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", As, impl_->W, BsPtr);
+  // Factor on rank 0 alone: Amesos2 13.2's KLU2 solves distributed matrices wrongly here (a
+  // residual of order one on 2 ranks), so the strip system is gathered, factored and solved on
+  // a one-rank communicator, and the solution scattered back.
+  const int mm = std::max(m, 1);
+  const GO nGlobal = static_cast<GO>(stripSize_);
+  auto rootMap = Teuchos::rcp(new Map(nGlobal, comm->getRank() == 0 ? static_cast<size_t>(nGlobal) : 0, 0, comm));
+  Tpetra::Export<LO, GO, Node> toRoot(impl_->stripMap, rootMap);
+  CrsMatrix Aroot(rootMap, 0);
+  Aroot.doExport(*As, toRoot, Tpetra::INSERT);
+  Aroot.fillComplete(rootMap, rootMap);
+  MultiVector Broot(rootMap, mm), Wroot(rootMap, mm);
+  Broot.doExport(Bs, toRoot, Tpetra::INSERT);
+  auto self = comm->split(comm->getRank() == 0 ? 0 : 1, 0);
+  if (comm->getRank() == 0 && m > 0) {
+    auto selfMap = Teuchos::rcp(new Map(nGlobal, 0, self));
+    auto Aself = Teuchos::rcp(new CrsMatrix(selfMap, Aroot.getNodeMaxNumRowEntries()));
+    const auto rootCols = Aroot.getColMap();
+    std::vector<GO> rowCols;
+    for (LO i = 0; i < static_cast<LO>(nGlobal); ++i) {
+      Aroot.getLocalRowView(i, idx, vals);
+      rowCols.resize(idx.extent(0));
+      for (size_t k = 0; k < idx.extent(0); ++k) rowCols[k] = rootCols->getGlobalElement(idx(k));
+      Aself->insertGlobalValues(static_cast<GO>(i), Teuchos::ArrayView<const GO>(rowCols),
+                                Teuchos::ArrayView<const double>(vals.data(), vals.extent(0)));
+    }
+    Aself->fillComplete();
+    auto Bself = Teuchos::rcp(new MultiVector(selfMap, mm));
+    auto Wself = Teuchos::rcp(new MultiVector(selfMap, mm));
+    {
+      auto from = Broot.getLocalViewHost(Tpetra::Access::ReadOnly);
+      auto to = Bself->getLocalViewHost(Tpetra::Access::OverwriteAll);
+      Kokkos::deep_copy(to, from);
+    }
+    auto solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", Aself, Wself, Bself);
     solver->symbolicFactorization().numericFactorization().solve();
+    auto from = Wself->getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto to = Wroot.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    Kokkos::deep_copy(to, from);
   }
+  impl_->W = Teuchos::rcp(new MultiVector(impl_->stripMap, mm));
+  impl_->W->doImport(Wroot, Tpetra::Import<LO, GO, Node>(rootMap, impl_->stripMap), Tpetra::INSERT);
   // Qs = B_s^T W (local sums over owned strip rows, then summed over ranks).
   std::vector<double> local(static_cast<size_t>(m) * m, 0.0);
   {
