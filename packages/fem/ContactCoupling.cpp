@@ -7,6 +7,8 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_FECrsGraph.hpp>
+#include <Tpetra_FECrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -14,6 +16,8 @@
 
 namespace signorini::fem {
 namespace {
+
+constexpr double kGauss3Point[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
 
 MPI_Comm rawComm(const Comm& comm) {
   const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
@@ -131,20 +135,70 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
 
   const int m = numSegments();
   segmentMap_ = Teuchos::rcp(new Map(m, comm_->getRank() == 0 ? m : 0, 0, comm_));
-  B_ = Teuchos::rcp(new CrsMatrix(mesh.ownedMap(), 4));
   localEdgeSegment_.assign(bedges.size(), -1);
+  for (size_t k = 0; k < localIds.size(); ++k) localEdgeSegment_[localIds[k]] = edgeSegment_[myOffset + static_cast<int>(k)];
+
+  // B as a finite element matrix: rows are nodes (owned + shared), columns are segments.
   const auto overlap = mesh.overlapMap();
+  using Graph = Tpetra::FECrsGraph<LO, GO, Node>;
+  using FEMatrix = Tpetra::FECrsMatrix<Scalar, LO, GO, Node>;
+  auto graph = Teuchos::rcp(new Graph(mesh.ownedMap(), overlap, 4));
+  graph->beginAssembly();
   for (size_t k = 0; k < localIds.size(); ++k) {
     const auto& be = bedges[localIds[k]];
-    const GO seg = edgeSegment_[myOffset + static_cast<int>(k)];
-    localEdgeSegment_[localIds[k]] = static_cast<int>(seg);
-    const double half = 0.5 * be.length();
-    for (int p = 0; p < 2; ++p) {
-      if (dirichlet[be.node[p]]) continue;
-      B_->insertGlobalValues(overlap->getGlobalElement(be.node[p]), Teuchos::tuple(seg), Teuchos::tuple(half));
-    }
+    const GO seg = localEdgeSegment_[localIds[k]];
+    for (int p = 0; p < 2; ++p)
+      if (!dirichlet[be.node[p]]) graph->insertGlobalIndices(overlap->getGlobalElement(be.node[p]), Teuchos::tuple(seg));
   }
-  B_->fillComplete(segmentMap_, mesh.ownedMap());
+  graph->endAssembly(segmentMap_, mesh.ownedMap());
+  auto B = Teuchos::rcp(new FEMatrix(graph));
+  B->beginAssembly();
+  {
+    const LO ne = static_cast<LO>(localIds.size());
+    Kokkos::View<double* [2][2], DeviceType> X("edgeX", ne);
+    Kokkos::View<LO* [2], DeviceType> rows("edgeRows", ne);
+    Kokkos::View<LO*, DeviceType> col("edgeCol", ne);
+    auto Xh = Kokkos::create_mirror_view(X);
+    auto rowsh = Kokkos::create_mirror_view(rows);
+    auto colh = Kokkos::create_mirror_view(col);
+    const auto colMap = B->getColMap();
+    for (LO k = 0; k < ne; ++k) {
+      const auto& be = bedges[localIds[k]];
+      for (int p = 0; p < 2; ++p) {
+        Xh(k, p, 0) = be.x[p][0];
+        Xh(k, p, 1) = be.x[p][1];
+        rowsh(k, p) = dirichlet[be.node[p]] ? -1 : be.node[p];
+      }
+      colh(k) = colMap->getLocalElement(localEdgeSegment_[localIds[k]]);
+    }
+    Kokkos::deep_copy(X, Xh);
+    Kokkos::deep_copy(rows, rowsh);
+    Kokkos::deep_copy(col, colh);
+    auto local = B->getLocalMatrixDevice();
+    // int_E phi_i ds = |E| / 2 for both end points of a straight edge.
+    Kokkos::parallel_for(
+        "signorini::assembleContactCoupling", Kokkos::RangePolicy<ExecSpace>(0, ne), KOKKOS_LAMBDA(const LO k) {
+          const double dx = X(k, 1, 0) - X(k, 0, 0), dy = X(k, 1, 1) - X(k, 0, 1);
+          double half = 0.5 * Kokkos::Experimental::sqrt(dx * dx + dy * dy);
+          LO c = col(k);
+          for (int p = 0; p < 2; ++p)
+            if (rows(k, p) >= 0) local.sumIntoValues(rows(k, p), &c, 1, &half, false, true);
+        });
+  }
+  B->endAssembly();
+  B_ = B;
+
+  // Replicated edge data for the weighted obstacle kernel.
+  edgeCoords_ = Kokkos::View<double* [4], DeviceType>("contactEdges", ne);
+  edgeSegmentView_ = Kokkos::View<int*, DeviceType>("contactEdgeSegment", ne);
+  auto ech = Kokkos::create_mirror_view(edgeCoords_);
+  auto esh = Kokkos::create_mirror_view(edgeSegmentView_);
+  for (int e = 0; e < ne; ++e) {
+    for (int d = 0; d < 4; ++d) ech(e, d) = edges_[e][d];
+    esh(e) = edgeSegment_[e];
+  }
+  Kokkos::deep_copy(edgeCoords_, ech);
+  Kokkos::deep_copy(edgeSegmentView_, esh);
 }
 
 void ContactCoupling::apply(const std::vector<double>& lambda, Vector& y, double scale, bool accumulate) const {
@@ -169,16 +223,27 @@ std::vector<double> ContactCoupling::applyTranspose(const Vector& u) const {
 }
 
 std::vector<double> ContactCoupling::weightedObstacle(const core::Expression& g, double t) const {
-  static const double gp[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
-  static const double gw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
-  std::vector<double> out(numSegments(), 0.0);
-  for (size_t e = 0; e < edges_.size(); ++e) {
+  const int ne = static_cast<int>(edges_.size()), m = numSegments();
+  // g sampled at 3 Gauss points per edge on the host, integrated by a kernel.
+  Kokkos::View<double* [3], DeviceType> gq("gq", ne);
+  auto gqh = Kokkos::create_mirror_view(gq);
+  for (int e = 0; e < ne; ++e) {
     const auto& x = edges_[e];
-    const double len = std::hypot(x[2] - x[0], x[3] - x[1]);
     for (int q = 0; q < 3; ++q)
-      out[edgeSegment_[e]] += gw[q] * len * g(x[0] + gp[q] * (x[2] - x[0]), x[1] + gp[q] * (x[3] - x[1]), t);
+      gqh(e, q) = g(x[0] + kGauss3Point[q] * (x[2] - x[0]), x[1] + kGauss3Point[q] * (x[3] - x[1]), t);
   }
-  return out;
+  Kokkos::deep_copy(gq, gqh);
+  Kokkos::View<double*, DeviceType> gbar("gbar", m);
+  const auto X = edgeCoords_;
+  const auto seg = edgeSegmentView_;
+  Kokkos::parallel_for(
+      "signorini::weightedObstacle", Kokkos::RangePolicy<ExecSpace>(0, ne), KOKKOS_LAMBDA(const int e) {
+        const double len = Kokkos::Experimental::sqrt((X(e, 2) - X(e, 0)) * (X(e, 2) - X(e, 0)) + (X(e, 3) - X(e, 1)) * (X(e, 3) - X(e, 1)));
+        const double sum = (5.0 * gq(e, 0) + 8.0 * gq(e, 1) + 5.0 * gq(e, 2)) / 18.0;
+        Kokkos::atomic_add(&gbar(seg(e)), len * sum);
+      });
+  auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), gbar);
+  return std::vector<double>(h.data(), h.data() + m);
 }
 
 std::vector<double> ContactCoupling::lumpedSchurComplement(const Vector& d) const {

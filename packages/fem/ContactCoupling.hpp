@@ -53,6 +53,8 @@ class ContactCoupling {
   std::vector<int> localEdgeSegment_;
   std::vector<std::array<double, 4>> edges_;  // all contact edges (x0, y0, x1, y1), replicated
   std::vector<int> edgeSegment_;              // segment of each replicated edge
+  Kokkos::View<double* [4], DeviceType> edgeCoords_;  // the same, for kernels
+  Kokkos::View<int*, DeviceType> edgeSegmentView_;
 };
 
 }  // namespace signorini::fem

@@ -190,21 +190,44 @@ void Q1Assembler::assembleLoad(const core::Expression& f, double t, double scale
 
 void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned mask, double scale, Vector& out) const {
   if (mask == 0) return;
-  Vector overlap(mesh_.overlapMap());
+  // Edges of the segments in mask with q sampled at 2 Gauss points (host), integrated by a kernel.
+  std::vector<int> ids;
+  for (size_t i = 0; i < mesh_.boundaryEdges().size(); ++i)
+    if (mesh_.boundaryEdges()[i].segments & mask) ids.push_back(static_cast<int>(i));
+  const LO ne = static_cast<LO>(ids.size());
+  Kokkos::View<double* [2], DeviceType> qg("qg", ne);
+  Kokkos::View<double*, DeviceType> len("len", ne);
+  Kokkos::View<LO* [2], DeviceType> nodes("nodes", ne);
   {
-    auto y = overlap.getLocalViewHost(Tpetra::Access::OverwriteAll);
-    Kokkos::deep_copy(y, 0.0);
-    for (const auto& be : mesh_.boundaryEdges()) {
-      if (!(be.segments & mask)) continue;
-      const double len = be.length();
+    auto qh = Kokkos::create_mirror_view(qg);
+    auto lh = Kokkos::create_mirror_view(len);
+    auto nh = Kokkos::create_mirror_view(nodes);
+    for (LO k = 0; k < ne; ++k) {
+      const auto& be = mesh_.boundaryEdges()[ids[k]];
       for (int g = 0; g < 2; ++g) {
         const double s = gauss2Point(g);
-        const double x = (1 - s) * be.x[0][0] + s * be.x[1][0], yy = (1 - s) * be.x[0][1] + s * be.x[1][1];
-        const double v = scale * kGauss2Weight * len * q(x, yy, t);
-        if (!dirichlet_[be.node[0]]) y(be.node[0], 0) += v * (1 - s);
-        if (!dirichlet_[be.node[1]]) y(be.node[1], 0) += v * s;
+        qh(k, g) = q((1 - s) * be.x[0][0] + s * be.x[1][0], (1 - s) * be.x[0][1] + s * be.x[1][1], t);
+        nh(k, g) = be.node[g];
       }
+      lh(k) = be.length();
     }
+    Kokkos::deep_copy(qg, qh);
+    Kokkos::deep_copy(len, lh);
+    Kokkos::deep_copy(nodes, nh);
+  }
+  Vector overlap(mesh_.overlapMap());
+  {
+    auto y = overlap.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+    Kokkos::deep_copy(y, 0.0);
+    const auto dir = dirichletView_;
+    Kokkos::parallel_for(
+        "signorini::boundaryLoad", Kokkos::RangePolicy<ExecSpace>(0, ne), KOKKOS_LAMBDA(const LO k) {
+          for (int g = 0; g < 2; ++g) {
+            const double s = gauss2Point(g), v = scale * kGauss2Weight * len(k) * qg(k, g);
+            if (!dir(nodes(k, 0))) Kokkos::atomic_add(&y(nodes(k, 0), 0), v * (1 - s));
+            if (!dir(nodes(k, 1))) Kokkos::atomic_add(&y(nodes(k, 1), 0), v * s);
+          }
+        });
   }
   out.doExport(overlap, *exporter_, Tpetra::ADD);
 }
