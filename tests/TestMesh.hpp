@@ -2,20 +2,16 @@
 /// Helpers shared by the tests: small meshes, with and without hanging nodes.
 #include <memory>
 
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Core.hpp>
 
 #include "BoundarySegments.hpp"
 #include "CoarseMesh.hpp"
 #include "Forest.hpp"
+#include "MpiComm.hpp"
 #include "Q1Mesh.hpp"
 
 namespace signorini::test {
 
-inline MPI_Comm rawComm() {
-  auto comm = Tpetra::getDefaultComm();
-  return *Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm, true)->getRawMpiComm();
-}
 
 /// A forest on the rectangle with segments "left", "right", "bottom", "top" (one per side).
 struct TestMesh {
@@ -29,7 +25,7 @@ struct TestMesh {
     segments = std::make_unique<mesh::BoundarySegments>(
         std::vector<std::pair<std::string, std::string>>{{"left", "left"}, {"right", "right"}, {"bottom", "bottom"}, {"top", "top"}},
         *coarse);
-    forest = std::make_unique<mesh::Forest>(coarse, rawComm(), level);
+    forest = std::make_unique<mesh::Forest>(coarse, core::rawMpiComm(*Tpetra::getDefaultComm()), level);
   }
   /// Refines the cells whose reference lower-left corner lies in the lower-left quarter of tree 0
   /// twice (then balances and partitions): hanging nodes on several edges.

@@ -2,23 +2,17 @@
 
 #include <map>
 
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "Error.hpp"
+#include "MpiComm.hpp"
 
 namespace signorini::dynamics {
 namespace {
 
-MPI_Comm rawComm(const Comm& comm) {
-  const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
-  SIGNORINI_ASSERT(mpi != nullptr, "signorini needs an MPI communicator");
-  return *mpi->getRawMpiComm();
-}
-
 template <class T>
 std::vector<T> gatherToRoot(const Comm& comm, const std::vector<T>& mine, MPI_Datatype type, std::vector<int>* countsOut = nullptr) {
-  MPI_Comm c = rawComm(comm);
+  MPI_Comm c = core::rawMpiComm(comm);
   int n = static_cast<int>(mine.size()), size, rank;
   MPI_Comm_size(c, &size);
   MPI_Comm_rank(c, &rank);

@@ -9,7 +9,6 @@
 #include <sstream>
 
 #include <Teuchos_CommHelpers.hpp>
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -19,6 +18,7 @@
 #include "Error.hpp"
 #include "Forest.hpp"
 #include "LinearSolver.hpp"
+#include "MpiComm.hpp"
 #include "Newmark.hpp"
 #include "PhaseTimers.hpp"
 #include "ProblemData.hpp"
@@ -164,8 +164,7 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     I.probes.push_back({name, {x, y}});
   }
 
-  const auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm, true);
-  I.forest = std::make_unique<mesh::Forest>(I.coarse, *mpi->getRawMpiComm(), meshParams.get<int>("Refinement Level"));
+  I.forest = std::make_unique<mesh::Forest>(I.coarse, core::rawMpiComm(*comm), meshParams.get<int>("Refinement Level"));
   {
     auto scope = I.timers.scope("mesh");
     I.mesh = std::make_unique<mesh::Q1Mesh>(*I.forest, *I.segments, comm);

@@ -5,7 +5,6 @@
 #include <map>
 
 #include <Teuchos_CommHelpers.hpp>
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_FECrsGraph.hpp>
 #include <Tpetra_FECrsMatrix.hpp>
@@ -13,21 +12,16 @@
 #include <Tpetra_Vector.hpp>
 
 #include "Error.hpp"
+#include "MpiComm.hpp"
 
 namespace signorini::fem {
 namespace {
 
 constexpr double kGauss3Point[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
 
-MPI_Comm rawComm(const Comm& comm) {
-  const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
-  SIGNORINI_ASSERT(mpi != nullptr, "signorini needs an MPI communicator");
-  return *mpi->getRawMpiComm();
-}
-
 /// Gathers variable-length double arrays from all ranks, concatenated in rank order.
 std::vector<double> allGather(const Comm& comm, const std::vector<double>& mine) {
-  MPI_Comm c = rawComm(comm);
+  MPI_Comm c = core::rawMpiComm(comm);
   int n = static_cast<int>(mine.size()), size;
   MPI_Comm_size(c, &size);
   std::vector<int> counts(size), offsets(size, 0);
@@ -53,7 +47,7 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
     }
   // Offset of this rank's edges in the gathered list.
   int myCount = static_cast<int>(localIds.size()), myOffset = 0;
-  MPI_Exscan(&myCount, &myOffset, 1, MPI_INT, MPI_SUM, rawComm(*comm_));
+  MPI_Exscan(&myCount, &myOffset, 1, MPI_INT, MPI_SUM, core::rawMpiComm(*comm_));
   if (comm_->getRank() == 0) myOffset = 0;
   const std::vector<double> all = allGather(*comm_, mine);
   const int ne = static_cast<int>(all.size() / 4);
