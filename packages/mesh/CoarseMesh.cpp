@@ -128,6 +128,16 @@ std::array<double, 2> CoarseMesh::mapPoint(int t, double s, double r) const {
   return p;
 }
 
+double CoarseMesh::jacobianDeterminant(int t, double s, double r) const {
+  const auto& c = treeCorners_[t];
+  double J[2][2];
+  for (int d = 0; d < 2; ++d) {
+    J[d][0] = (1 - r) * (c[1][d] - c[0][d]) + r * (c[3][d] - c[2][d]);
+    J[d][1] = (1 - s) * (c[2][d] - c[0][d]) + s * (c[3][d] - c[1][d]);
+  }
+  return J[0][0] * J[1][1] - J[0][1] * J[1][0];
+}
+
 std::vector<std::string> CoarseMesh::setNames() const {
   std::set<std::string> s;
   for (const auto& t : faceSets_)

@@ -37,6 +37,8 @@ class CoarseMesh {
   const std::array<double, 2>& treeCorner(int t, int c) const { return treeCorners_[t][c]; }
   /// Physical point of reference coordinates (s, r) in [0,1]^2 of tree t (bilinear map).
   std::array<double, 2> mapPoint(int t, double s, double r) const;
+  /// det of the Jacobian of the tree map at (s, r): physical area per reference area.
+  double jacobianDeterminant(int t, double s, double r) const;
   /// Names of the side sets containing face f (0:-x 1:+x 2:-y 3:+y) of tree t.
   const std::vector<std::string>& faceSets(int t, int f) const { return faceSets_[t][f]; }
   /// All side set names, for messages.

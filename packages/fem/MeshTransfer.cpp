@@ -1,0 +1,121 @@
+#include "MeshTransfer.hpp"
+
+#include <Tpetra_Export.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "Error.hpp"
+#include "Q1Kernels.hpp"
+
+namespace signorini::fem {
+namespace {
+constexpr double kGp[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
+constexpr double kGw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+}  // namespace
+
+MeshTransfer::MeshTransfer(const mesh::Forest& oldForest, const mesh::Q1Mesh& oldMesh,
+                           const std::vector<const Vector*>& fields, const mesh::Forest& newForest,
+                           const mesh::Q1Mesh& newMesh)
+    : newMesh_(newMesh), coarse_(newForest.coarse()), numFields_(static_cast<int>(fields.size())) {
+  // Payload of each old cell: the corner values (z-order, hanging constraints resolved) of each field.
+  const LO nc = oldMesh.numLocalCells();
+  std::vector<double> payload(static_cast<size_t>(nc) * 4 * numFields_);
+  const auto& D = oldMesh.cornerDofsHost;
+  const auto& W = oldMesh.cornerWeightsHost;
+  for (int f = 0; f < numFields_; ++f) {
+    Vector overlap(oldMesh.overlapMap());
+    overlap.doImport(*fields[f], Tpetra::Import<LO, GO, Node>(oldMesh.ownedMap(), oldMesh.overlapMap()), Tpetra::INSERT);
+    auto h = overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (LO e = 0; e < nc; ++e)
+      for (int c = 0; c < 4; ++c) {
+        double v = 0;
+        for (int k = 0; k < 2; ++k)
+          if (D(e, c, k) >= 0) v += W(e, c, k) * h(D(e, c, k), 0);
+        payload[(static_cast<size_t>(e) * numFields_ + f) * 4 + c] = v;
+      }
+  }
+  overlap_ = std::make_unique<mesh::ForestOverlap>(oldForest, newForest, payload, 4 * numFields_);
+}
+
+double MeshTransfer::valueAt(const mesh::OverlapCell& q, int field, double s, double r) const {
+  const double ls = (s - q.s0) / q.size, lr = (r - q.r0) / q.size;
+  const double* c = q.payload + 4 * field;
+  return (1 - ls) * (1 - lr) * c[0] + ls * (1 - lr) * c[1] + (1 - ls) * lr * c[2] + ls * lr * c[3];
+}
+
+std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAssembler) const {
+  const auto& D = newMesh_.cornerDofsHost;
+  const auto& W = newMesh_.cornerWeightsHost;
+  std::vector<RCP<Vector>> loads;
+  std::vector<Vector> overlap;
+  for (int f = 0; f < numFields_; ++f) {
+    overlap.emplace_back(newMesh_.overlapMap());
+    overlap.back().putScalar(0.0);
+  }
+  std::vector<decltype(overlap[0].getLocalViewHost(Tpetra::Access::ReadWrite))> views;
+  for (auto& o : overlap) views.push_back(o.getLocalViewHost(Tpetra::Access::ReadWrite));
+  const auto& dir = newAssembler.dirichletFlags();
+  for (int e = 0; e < overlap_->numTargetCells(); ++e) {
+    const auto& K = overlap_->target(e);
+    double be[8][4] = {};  // [field][corner]
+    SIGNORINI_ASSERT(numFields_ <= 8, "too many fields");
+    for (const auto& Q : overlap_->overlapping(e)) {
+      const auto& R = Q.size < K.size ? Q : K;  // the cell of the common refinement
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          const double s = R.s0 + kGp[i] * R.size, r = R.r0 + kGp[j] * R.size;
+          const double w = kGw[i] * kGw[j] * R.size * R.size * coarse_.jacobianDeterminant(K.tree, s, r);
+          const double ks = (s - K.s0) / K.size, kr = (r - K.r0) / K.size;
+          const double N[4] = {(1 - ks) * (1 - kr), ks * (1 - kr), (1 - ks) * kr, ks * kr};
+          for (int f = 0; f < numFields_; ++f) {
+            const double u = valueAt(Q, f, s, r);
+            for (int c = 0; c < 4; ++c) be[f][c] += w * u * N[c];
+          }
+        }
+    }
+    for (int f = 0; f < numFields_; ++f)
+      for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 2; ++k) {
+          const LO d = D(e, c, k);
+          if (d >= 0 && !dir[d]) views[f](d, 0) += W(e, c, k) * be[f][c];
+        }
+  }
+  views.clear();
+  Tpetra::Export<LO, GO, Node> exporter(newMesh_.overlapMap(), newMesh_.ownedMap());
+  for (int f = 0; f < numFields_; ++f) {
+    auto b = Teuchos::rcp(new Vector(newMesh_.ownedMap()));
+    b->doExport(overlap[f], exporter, Tpetra::ADD);
+    loads.push_back(b);
+  }
+  return loads;
+}
+
+std::vector<RCP<Vector>> MeshTransfer::interpolate() const {
+  const auto& D = newMesh_.cornerDofsHost;
+  const LO owned = static_cast<LO>(newMesh_.ownedMap()->getNodeNumElements());
+  std::vector<RCP<Vector>> out;
+  std::vector<char> set(owned, 0);
+  for (int f = 0; f < numFields_; ++f) out.push_back(Teuchos::rcp(new Vector(newMesh_.ownedMap())));
+  std::vector<decltype(out[0]->getLocalViewHost(Tpetra::Access::ReadWrite))> views;
+  for (auto& o : out) views.push_back(o->getLocalViewHost(Tpetra::Access::ReadWrite));
+  const double tol = 1e-12;
+  for (int e = 0; e < overlap_->numTargetCells(); ++e) {
+    const auto& K = overlap_->target(e);
+    const auto cells = overlap_->overlapping(e);
+    for (int c = 0; c < 4; ++c) {
+      const LO d = D(e, c, 0);
+      if (D(e, c, 1) >= 0 || d >= owned) continue;  // hanging or not owned
+      const double s = K.s0 + ((c & 1) ? K.size : 0), r = K.r0 + ((c & 2) ? K.size : 0);
+      for (const auto& Q : cells)
+        if (s >= Q.s0 - tol && s <= Q.s0 + Q.size + tol && r >= Q.r0 - tol && r <= Q.r0 + Q.size + tol) {
+          for (int f = 0; f < numFields_; ++f) views[f](d, 0) = valueAt(Q, f, s, r);
+          set[d] = 1;
+          break;
+        }
+    }
+  }
+  for (LO i = 0; i < owned; ++i) SIGNORINI_ASSERT(set[i], "owned node " << i << " not reached by interpolation");
+  return out;
+}
+
+}  // namespace signorini::fem

@@ -1,0 +1,35 @@
+#pragma once
+/// \file MeshTransfer.hpp
+/// Transfer I_h of finite element fields from the mesh of step n-1 to the mesh of step n
+/// (paper Sec. 3.2, DESIGN 1.2): the L2 projection, computed exactly on the common refinement of
+/// the two meshes (both refine one coarse mesh), or nodal interpolation. Works across MPI ranks
+/// with differently partitioned meshes (mesh::ForestOverlap).
+#include <vector>
+
+#include "ForestOverlap.hpp"
+#include "Q1Assembler.hpp"
+
+namespace signorini::fem {
+
+class MeshTransfer {
+ public:
+  /// Prepares the transfer of \p fields (owned vectors on the old mesh).
+  MeshTransfer(const mesh::Forest& oldForest, const mesh::Q1Mesh& oldMesh, const std::vector<const Vector*>& fields,
+               const mesh::Forest& newForest, const mesh::Q1Mesh& newMesh);
+
+  /// b_i = int u_old phi_i for each field (owned vectors on the new mesh, Dirichlet rows zeroed by
+  /// \p newAssembler): the right-hand sides of the L2 projection M x = b. Exact for Q1 fields
+  /// (3 x 3 Gauss points on each cell of the common refinement).
+  std::vector<RCP<Vector>> projectionLoads(const Q1Assembler& newAssembler) const;
+  /// Nodal interpolation of each field at the new mesh's nodes (owned vectors).
+  std::vector<RCP<Vector>> interpolate() const;
+
+ private:
+  const mesh::Q1Mesh& newMesh_;
+  const mesh::CoarseMesh& coarse_;
+  int numFields_;
+  std::unique_ptr<mesh::ForestOverlap> overlap_;
+  double valueAt(const mesh::OverlapCell& q, int field, double s, double r) const;
+};
+
+}  // namespace signorini::fem

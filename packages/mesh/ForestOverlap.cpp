@@ -1,0 +1,141 @@
+#include "ForestOverlap.hpp"
+
+#include <algorithm>
+
+#include <p4est_bits.h>
+
+#include "Error.hpp"
+
+namespace signorini::mesh {
+namespace {
+
+constexpr int kMaxLevel = P4EST_QMAXLEVEL;
+
+uint64_t firstId(const p4est_quadrant_t& q) {
+  p4est_quadrant_t fd;
+  p4est_quadrant_first_descendant(&q, &fd, kMaxLevel);
+  return p4est_quadrant_linear_id(&fd, kMaxLevel);
+}
+
+uint64_t span(int level) { return uint64_t(1) << (2 * (kMaxLevel - level)); }
+
+bool less(int ta, uint64_t a, int tb, uint64_t b) { return ta < tb || (ta == tb && a < b); }
+
+}  // namespace
+
+ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const std::vector<double>& payload,
+                             int payloadSize)
+    : payloadSize_(payloadSize) {
+  p4est_t* src = source.p4est();
+  p4est_t* dst = target.p4est();
+  MPI_Comm comm = dst->mpicomm;
+  const int size = dst->mpisize;
+  // Target partition markers: rank r owns positions in [marker r, marker r+1).
+  std::vector<std::pair<int, uint64_t>> marker(size + 1);
+  for (int r = 0; r <= size; ++r) {
+    const auto& g = dst->global_first_position[r];
+    marker[r] = {static_cast<int>(g.p.which_tree), r == size ? 0 : p4est_quadrant_linear_id(&g, kMaxLevel)};
+  }
+  marker[size] = {static_cast<int>(src->connectivity->num_trees), 0};
+
+  // Pack every local source cell for each target rank whose range it intersects.
+  const int record = 4 + payloadSize;  // tree, x-id, y-id, level, payload (as doubles)
+  std::vector<std::vector<double>> out(size);
+  const double root = static_cast<double>(P4EST_ROOT_LEN);
+  int e = 0;
+  for (p4est_topidx_t t = src->first_local_tree; t <= src->last_local_tree; ++t) {
+    p4est_tree_t* tree = p4est_tree_array_index(src->trees, t);
+    for (size_t qi = 0; qi < tree->quadrants.elem_count; ++qi, ++e) {
+      const auto* q = p4est_quadrant_array_index(&tree->quadrants, qi);
+      const uint64_t f = firstId(*q), l = f + span(q->level) - 1;
+      // Target ranks r with marker[r] <= (t, l) and marker[r+1] > (t, f), skipping empty ranks.
+      const auto pos = std::make_pair(static_cast<int>(t), f);
+      int r = static_cast<int>(std::upper_bound(marker.begin(), marker.end(), pos,
+                                                [](const auto& a, const auto& b) {
+                                                  return less(a.first, a.second, b.first, b.second);
+                                                }) -
+                               marker.begin()) - 1;
+      for (r = std::max(r, 0); r < size && !less(static_cast<int>(t), l, marker[r].first, marker[r].second); ++r) {
+        const bool empty = !less(marker[r].first, marker[r].second, marker[r + 1].first, marker[r + 1].second);
+        if (empty || !less(static_cast<int>(t), f, marker[r + 1].first, marker[r + 1].second)) continue;
+        auto& o = out[r];
+        o.push_back(static_cast<double>(t));
+        o.push_back(q->x / root);
+        o.push_back(q->y / root);
+        o.push_back(q->level);
+        for (int k = 0; k < payloadSize; ++k) o.push_back(payload[static_cast<size_t>(e) * payloadSize + k]);
+      }
+    }
+  }
+  std::vector<int> sendCounts(size), recvCounts(size), sendOff(size, 0), recvOff(size, 0);
+  for (int r = 0; r < size; ++r) sendCounts[r] = static_cast<int>(out[r].size());
+  MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, comm);
+  for (int r = 1; r < size; ++r) {
+    sendOff[r] = sendOff[r - 1] + sendCounts[r - 1];
+    recvOff[r] = recvOff[r - 1] + recvCounts[r - 1];
+  }
+  std::vector<double> sendBuf(sendOff[size - 1] + sendCounts[size - 1]);
+  for (int r = 0; r < size; ++r) std::copy(out[r].begin(), out[r].end(), sendBuf.begin() + sendOff[r]);
+  std::vector<double> recvBuf(recvOff[size - 1] + recvCounts[size - 1]);
+  MPI_Alltoallv(sendBuf.data(), sendCounts.data(), sendOff.data(), MPI_DOUBLE, recvBuf.data(), recvCounts.data(),
+                recvOff.data(), MPI_DOUBLE, comm);
+
+  // Unpack and sort by position.
+  const size_t n = recvBuf.size() / record;
+  std::vector<size_t> order(n);
+  std::vector<Key> keys(n);
+  for (size_t i = 0; i < n; ++i) {
+    const double* rec = &recvBuf[i * record];
+    p4est_quadrant_t q;
+    P4EST_QUADRANT_INIT(&q);
+    q.level = static_cast<int8_t>(rec[3]);
+    q.x = static_cast<p4est_qcoord_t>(std::llround(rec[1] * root));
+    q.y = static_cast<p4est_qcoord_t>(std::llround(rec[2] * root));
+    const uint64_t f = firstId(q);
+    keys[i] = {static_cast<int>(rec[0]), f, f + span(q.level) - 1};
+    order[i] = i;
+  }
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+    return less(keys[a].tree, keys[a].first, keys[b].tree, keys[b].first);
+  });
+  receivedPayload_.resize(n * static_cast<size_t>(payloadSize));
+  received_.resize(n);
+  receivedCells_.resize(n);
+  for (size_t k = 0; k < n; ++k) {
+    const size_t i = order[k];
+    const double* rec = &recvBuf[i * record];
+    received_[k] = keys[i];
+    std::copy(rec + 4, rec + record, receivedPayload_.begin() + k * payloadSize);
+    const int level = static_cast<int>(rec[3]);
+    receivedCells_[k] = {keys[i].tree, level, rec[1], rec[2], 1.0 / (1 << level),
+                         payloadSize ? &receivedPayload_[k * payloadSize] : nullptr};
+  }
+
+  // For each local target cell, the received cells whose range intersects its range.
+  for (p4est_topidx_t t = dst->first_local_tree; t <= dst->last_local_tree; ++t) {
+    p4est_tree_t* tree = p4est_tree_array_index(dst->trees, t);
+    for (size_t qi = 0; qi < tree->quadrants.elem_count; ++qi) {
+      const auto* q = p4est_quadrant_array_index(&tree->quadrants, qi);
+      const uint64_t f = firstId(*q), l = f + span(q->level) - 1;
+      // First received cell with last >= f in this tree: cells are disjoint and sorted, so search by first.
+      auto it = std::upper_bound(received_.begin(), received_.end(), std::make_pair(static_cast<int>(t), f),
+                                 [](const auto& v, const Key& k) { return less(v.first, v.second, k.tree, k.first); });
+      if (it != received_.begin()) {
+        auto prev = std::prev(it);
+        if (prev->tree == static_cast<int>(t) && prev->last >= f) it = prev;
+      }
+      auto end = it;
+      while (end != received_.end() && end->tree == static_cast<int>(t) && end->first <= l) ++end;
+      SIGNORINI_ASSERT(end != it, "target cell without an overlapping source cell");
+      targetRange_.push_back({static_cast<size_t>(it - received_.begin()), static_cast<size_t>(end - received_.begin())});
+      targetCells_.push_back({static_cast<int>(t), q->level, q->x / root, q->y / root, 1.0 / (1 << q->level), nullptr});
+    }
+  }
+}
+
+std::vector<OverlapCell> ForestOverlap::overlapping(int e) const {
+  const auto [b, en] = targetRange_[e];
+  return std::vector<OverlapCell>(receivedCells_.begin() + b, receivedCells_.begin() + en);
+}
+
+}  // namespace signorini::mesh

@@ -1,0 +1,51 @@
+#pragma once
+/// \file ForestOverlap.hpp
+/// Which cells of one forest overlap which cells of another forest on the same coarse mesh
+/// (two meshes T^{n-1}, T^n of a time step sequence), across MPI ranks: every cell of the
+/// source forest, with a payload of doubles, is sent to the ranks whose target partition
+/// (p4est's space-filling-curve ranges) it intersects (DESIGN 1.7). Each target cell then sees
+/// either the one source cell containing it or the source cells inside it: their intersection
+/// is the common refinement of the two meshes.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "Forest.hpp"
+
+namespace signorini::mesh {
+
+/// A source cell as seen on the target rank: position in the tree's reference square and payload.
+struct OverlapCell {
+  int tree;
+  int level;
+  double s0, r0, size;  ///< reference square [s0, s0 + size] x [r0, r0 + size] of its tree
+  const double* payload;
+};
+
+class ForestOverlap {
+ public:
+  /// \param payload  payloadSize doubles per local source cell (local cell order); may be empty
+  ///                 when payloadSize is 0.
+  ForestOverlap(const Forest& source, const Forest& target, const std::vector<double>& payload, int payloadSize);
+
+  /// The source cells overlapping local target cell e (their payload pointers stay valid as long
+  /// as this object lives).
+  std::vector<OverlapCell> overlapping(int e) const;
+  int numTargetCells() const { return static_cast<int>(targetRange_.size()); }
+  /// Reference square of local target cell e in its tree and its tree and level.
+  const OverlapCell& target(int e) const { return targetCells_[e]; }
+
+ private:
+  struct Key {
+    int tree;
+    uint64_t first, last;  // Morton ids of the first and last finest descendants
+  };
+  int payloadSize_;
+  std::vector<Key> received_;          // source cells received, sorted by (tree, first)
+  std::vector<OverlapCell> receivedCells_;
+  std::vector<double> receivedPayload_;
+  std::vector<std::pair<size_t, size_t>> targetRange_;  // [begin, end) in received_ per target cell
+  std::vector<OverlapCell> targetCells_;
+};
+
+}  // namespace signorini::mesh

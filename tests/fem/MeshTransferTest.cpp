@@ -1,0 +1,96 @@
+// Transfer between the meshes of two time steps: the L2 projection on the common refinement
+// reproduces fields that lie in both spaces, is the identity for identical meshes, conserves the
+// integral; nodal interpolation reproduces fields of the new space. Meshes partitioned differently.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "../TestMesh.hpp"
+#include "LinearSolver.hpp"
+#include "MeshTransfer.hpp"
+#include "Q1Assembler.hpp"
+
+using namespace signorini;
+
+namespace {
+
+void interpolate(const mesh::Q1Mesh& m, const std::function<double(double, double)>& f, Vector& v) {
+  auto h = v.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (size_t i = 0; i < h.extent(0); ++i) h(i, 0) = f(m.nodeCoords()[i][0], m.nodeCoords()[i][1]);
+}
+
+/// Solves M x = b on the new mesh (the L2 projection).
+RCP<Vector> project(const fem::Q1Assembler& asmb, const Vector& b) {
+  auto M = asmb.assembleOperator(1.0, 0.0, 1.0, 1.0);
+  core::ParameterList p;
+  p.set("Relative Tolerance", 1e-13);
+  p.set("Preconditioner", "Jacobi");
+  core::validateDeck(p, solvers::LinearSolver::getValidParameters(), "test");
+  solvers::LinearSolver solver(p, asmb.mesh().comm());
+  solver.setOperator(M, 0.0);
+  auto x = Teuchos::rcp(new Vector(b.getMap()));
+  solver.solve(b, *x);
+  return x;
+}
+
+double maxDiff(const Vector& a, const Vector& b) {
+  Vector d(a, Teuchos::Copy);
+  d.update(-1.0, b, 1.0);
+  return d.normInf();
+}
+
+struct Pair {
+  test::TestMesh coarseSide{0.0, 2.0, 0.0, 1.0, 2, 1, 2};
+  test::TestMesh fineSide{0.0, 2.0, 0.0, 1.0, 2, 1, 2};
+  Pair() { fineSide.refineCorner(); }
+};
+
+class MeshTransferTest : public ::testing::TestWithParam<bool> {};  // true: coarse -> fine
+
+TEST_P(MeshTransferTest, ReproducesFieldsOfBothSpacesAndConservesTheIntegral) {
+  Pair pair;
+  auto& from = GetParam() ? pair.coarseSide : pair.fineSide;
+  auto& to = GetParam() ? pair.fineSide : pair.coarseSide;
+  const auto& oldMesh = from.build();
+  const auto& newMesh = to.build();
+  auto bilinear = [](double x, double y) { return 1 + 2 * x - 3 * y + 0.5 * x * y; };
+  auto smooth = [](double x, double y) { return std::sin(3 * x) * std::cos(2 * y); };
+  Vector a(oldMesh.ownedMap()), b(oldMesh.ownedMap()), expected(newMesh.ownedMap());
+  interpolate(oldMesh, bilinear, a);
+  interpolate(oldMesh, smooth, b);
+  fem::MeshTransfer transfer(*from.forest, oldMesh, {&a, &b}, *to.forest, newMesh);
+  fem::Q1Assembler newAsmb(newMesh, std::vector<char>(newMesh.overlapMap()->getNodeNumElements(), 0));
+  const auto loads = transfer.projectionLoads(newAsmb);
+  interpolate(newMesh, bilinear, expected);
+  EXPECT_LT(maxDiff(*project(newAsmb, *loads[0]), expected), 1e-10);
+  const auto nodal = transfer.interpolate();
+  EXPECT_LT(maxDiff(*nodal[0], expected), 1e-13);
+  // sum_i b_i = int u_old (the shape functions sum to one): the projection conserves the integral.
+  fem::Q1Assembler oldAsmb(oldMesh, std::vector<char>(oldMesh.overlapMap()->getNodeNumElements(), 0));
+  auto Mold = oldAsmb.assembleOperator(1.0, 0.0, 1.0, 1.0);
+  Vector oneOld(oldMesh.ownedMap()), tmp(oldMesh.ownedMap()), oneNew(newMesh.ownedMap());
+  oneOld.putScalar(1.0);
+  oneNew.putScalar(1.0);
+  Mold->apply(b, tmp);
+  EXPECT_NEAR(loads[1]->dot(oneNew), tmp.dot(oneOld), 1e-13);
+}
+
+TEST(MeshTransfer, IsTheIdentityBetweenEqualMeshes) {
+  test::TestMesh m1(0.0, 1.0, 0.0, 1.0, 2, 2, 2);
+  m1.refineCorner();
+  const auto& mesh = m1.build();
+  mesh::Forest copy(*m1.forest);
+  Vector u(mesh.ownedMap());
+  interpolate(mesh, [](double x, double y) { return std::exp(x) * std::sin(5 * y); }, u);
+  fem::MeshTransfer transfer(*m1.forest, mesh, {&u}, copy, mesh);
+  fem::Q1Assembler asmb(mesh, std::vector<char>(mesh.overlapMap()->getNodeNumElements(), 0));
+  EXPECT_LT(maxDiff(*project(asmb, *transfer.projectionLoads(asmb)[0]), u), 1e-10);
+  EXPECT_LT(maxDiff(*transfer.interpolate()[0], u), 1e-15);
+}
+
+INSTANTIATE_TEST_SUITE_P(Directions, MeshTransferTest, ::testing::Values(true, false));
+
+}  // namespace
