@@ -1,6 +1,11 @@
 #include "Forest.hpp"
 
+#include <set>
+#include <tuple>
+
 #include <p4est_extended.h>
+
+#include "Error.hpp"
 #include <sc.h>
 
 namespace signorini::mesh {
@@ -37,6 +42,75 @@ void Forest::refineIf(const std::function<bool(int tree, const p4est_quadrant_t&
   p4est_refine(p4est_, 0, refineCallback, nullptr);
   p4est_->user_pointer = saved;
 }
+
+namespace {
+using CellKey = std::tuple<int, p4est_qcoord_t, p4est_qcoord_t, int>;
+
+std::set<CellKey> flaggedCells(p4est_t* p4est, const std::vector<char>& flags) {
+  std::set<CellKey> keys;
+  size_t e = 0;
+  for (p4est_topidx_t t = p4est->first_local_tree; t <= p4est->last_local_tree; ++t) {
+    p4est_tree_t* tree = p4est_tree_array_index(p4est->trees, t);
+    for (size_t qi = 0; qi < tree->quadrants.elem_count; ++qi, ++e) {
+      const auto* q = p4est_quadrant_array_index(&tree->quadrants, qi);
+      if (flags.at(e)) keys.insert({static_cast<int>(t), q->x, q->y, q->level});
+    }
+  }
+  return keys;
+}
+
+struct CoarsenContext {
+  std::set<CellKey> keys;
+  int minLevel;
+};
+
+int coarsenCallback(p4est_t* p, p4est_topidx_t tree, p4est_quadrant_t* children[]) {
+  const auto& ctx = *static_cast<const CoarsenContext*>(p->user_pointer);
+  if (children[0]->level <= ctx.minLevel) return 0;
+  for (int c = 0; c < P4EST_CHILDREN; ++c)
+    if (!ctx.keys.count({static_cast<int>(tree), children[c]->x, children[c]->y, children[c]->level})) return 0;
+  return 1;
+}
+}  // namespace
+
+void Forest::refineMarked(const std::vector<char>& flags) {
+  SIGNORINI_ASSERT(flags.size() == static_cast<size_t>(numLocalCells()), "one flag per local cell");
+  const auto keys = flaggedCells(p4est_, flags);
+  refineIf([&](int tree, const p4est_quadrant_t& q) { return keys.count({tree, q.x, q.y, q.level}) > 0; });
+}
+
+void Forest::coarsenMarked(const std::vector<char>& flags, int minLevel) {
+  SIGNORINI_ASSERT(flags.size() == static_cast<size_t>(numLocalCells()), "one flag per local cell");
+  // Families may be split between ranks: share the flagged cells, partition so that families
+  // are local, then coarsen.
+  std::vector<int> mine;
+  for (const auto& [t, x, y, l] : flaggedCells(p4est_, flags)) mine.insert(mine.end(), {t, x, y, l});
+  int n = static_cast<int>(mine.size());
+  std::vector<int> counts(p4est_->mpisize), offsets(p4est_->mpisize, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, p4est_->mpicomm);
+  for (int r = 1; r < p4est_->mpisize; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<int> all(offsets.back() + counts.back());
+  MPI_Allgatherv(mine.data(), n, MPI_INT, all.data(), counts.data(), offsets.data(), MPI_INT, p4est_->mpicomm);
+  CoarsenContext ctx{{}, minLevel};
+  for (size_t i = 0; i + 3 < all.size(); i += 4) ctx.keys.insert({all[i], all[i + 1], all[i + 2], all[i + 3]});
+  p4est_partition(p4est_, 1, nullptr);
+  void* saved = p4est_->user_pointer;
+  p4est_->user_pointer = &ctx;
+  p4est_coarsen(p4est_, 0, coarsenCallback, nullptr);
+  p4est_->user_pointer = saved;
+}
+
+unsigned Forest::checksum() const {
+  unsigned c = p4est_checksum(p4est_);
+  MPI_Bcast(&c, 1, MPI_UNSIGNED, 0, p4est_->mpicomm);
+  return c;
+}
+
+bool Forest::sameCells(const Forest& other) const {
+  return numGlobalCells() == other.numGlobalCells() && checksum() == other.checksum();
+}
+
+size_t Forest::bytes() const { return p4est_memory_used(p4est_); }
 
 void Forest::balance() { p4est_balance(p4est_, P4EST_CONNECT_FULL, nullptr); }
 

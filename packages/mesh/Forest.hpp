@@ -4,6 +4,7 @@
 /// ranks of an MPI communicator along p4est's space-filling curve.
 #include <functional>
 #include <memory>
+#include <vector>
 
 #include <mpi.h>
 #include <p4est.h>
@@ -32,6 +33,17 @@ class Forest {
 
   /// Refines every local cell for which \p refine(tree, quadrant) is true (once, not recursively).
   void refineIf(const std::function<bool(int tree, const p4est_quadrant_t& q)>& refine);
+  /// Refines the local cells whose flag (local cell order) is set, once.
+  void refineMarked(const std::vector<char>& flags);
+  /// Replaces each family of four sibling cells that are all flagged by their parent, never
+  /// going below \p minLevel.
+  void coarsenMarked(const std::vector<char>& flags, int minLevel);
+  /// A checksum of the cells, independent of the partition, the same on every rank.
+  unsigned checksum() const;
+  /// True if both forests have the same cells (checksum and count).
+  bool sameCells(const Forest& other) const;
+  /// Bytes of memory this rank uses for the forest.
+  size_t bytes() const;
   /// Enforces the 2:1 face balance (at most one hanging node per edge; paper Algorithm 5.2).
   void balance();
   /// Re-partitions the cells evenly over the ranks.

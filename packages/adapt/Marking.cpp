@@ -1,0 +1,94 @@
+#include "Marking.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+
+#include "Error.hpp"
+
+namespace signorini::adapt {
+namespace {
+
+/// Order-preserving integer key of a non-negative double.
+uint64_t key(double x) {
+  SIGNORINI_ASSERT(x >= 0 && std::isfinite(x), "indicators must be finite and non-negative");
+  uint64_t k;
+  std::memcpy(&k, &x, sizeof k);
+  return k;
+}
+
+/// The largest threshold key t with accept(t) true, given accept is monotone (true for small t).
+template <class Accept>
+uint64_t bisect(Accept accept) {
+  uint64_t lo = 0, hi = key(std::numeric_limits<double>::max());
+  while (lo < hi) {
+    const uint64_t mid = lo + (hi - lo + 1) / 2;
+    if (accept(mid))
+      lo = mid;
+    else
+      hi = mid - 1;
+  }
+  return lo;
+}
+
+long long globalCount(const std::vector<double>& v, uint64_t threshold, bool above, MPI_Comm comm) {
+  long long local = 0, global = 0;
+  for (double x : v) local += above ? (key(x) >= threshold) : (key(x) <= threshold);
+  MPI_Allreduce(&local, &global, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  return global;
+}
+
+long long globalSize(const std::vector<double>& v, MPI_Comm comm) {
+  long long local = static_cast<long long>(v.size()), global = 0;
+  MPI_Allreduce(&local, &global, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  return global;
+}
+
+}  // namespace
+
+std::vector<char> markFixedFraction(const std::vector<double>& indicators, double fraction, MPI_Comm comm) {
+  const long long wanted = static_cast<long long>(std::ceil(fraction * globalSize(indicators, comm)));
+  std::vector<char> flags(indicators.size(), 0);
+  if (wanted <= 0) return flags;
+  const uint64_t t = bisect([&](uint64_t th) { return globalCount(indicators, th, true, comm) >= wanted; });
+  for (size_t i = 0; i < flags.size(); ++i) flags[i] = key(indicators[i]) >= t;
+  return flags;
+}
+
+std::vector<char> markBulk(const std::vector<double>& indicators, double fraction, MPI_Comm comm) {
+  double local = 0, total = 0;
+  for (double x : indicators) local += x;
+  MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, comm);
+  std::vector<char> flags(indicators.size(), 0);
+  if (!(total > 0) || fraction <= 0) return flags;
+  const uint64_t t = bisect([&](uint64_t th) {
+    double s = 0, g = 0;
+    for (double x : indicators)
+      if (key(x) >= th) s += x;
+    MPI_Allreduce(&s, &g, 1, MPI_DOUBLE, MPI_SUM, comm);
+    return g >= fraction * total;
+  });
+  for (size_t i = 0; i < flags.size(); ++i) flags[i] = key(indicators[i]) >= t;
+  return flags;
+}
+
+std::vector<char> markSmallest(const std::vector<double>& indicators, double fraction, MPI_Comm comm) {
+  const long long allowed = static_cast<long long>(std::floor(fraction * globalSize(indicators, comm)));
+  std::vector<char> flags(indicators.size(), 0);
+  if (allowed <= 0) return flags;
+  // The largest threshold with at most `allowed` cells at or below it.
+  uint64_t lo = 0, hi = key(std::numeric_limits<double>::max());
+  if (globalCount(indicators, 0, false, comm) > allowed) return flags;
+  while (lo < hi) {
+    const uint64_t mid = lo + (hi - lo + 1) / 2;
+    if (globalCount(indicators, mid, false, comm) <= allowed)
+      lo = mid;
+    else
+      hi = mid - 1;
+  }
+  for (size_t i = 0; i < flags.size(); ++i) flags[i] = key(indicators[i]) <= lo;
+  return flags;
+}
+
+}  // namespace signorini::adapt

@@ -1,0 +1,23 @@
+#pragma once
+/// \file Marking.hpp
+/// Marking strategies on cell indicators (DESIGN 1.3), global over all MPI ranks and
+/// independent of the partition: thresholds are found by bisection on the bit patterns of the
+/// (non-negative) indicators with one reduction per bisection step.
+#include <vector>
+
+#include <mpi.h>
+
+namespace signorini::adapt {
+
+/// Flags the cells with the largest indicators: at least ceil(fraction * N) cells of the N cells
+/// of all ranks (more only when indicators tie at the threshold). The paper's strategy (50%).
+std::vector<char> markFixedFraction(const std::vector<double>& indicators, double fraction, MPI_Comm comm);
+
+/// Doerfler/bulk marking: the cells with the largest indicators whose sum reaches
+/// fraction * (sum of all indicators); indicators are squared cell contributions eta_K^2.
+std::vector<char> markBulk(const std::vector<double>& indicators, double fraction, MPI_Comm comm);
+
+/// Flags the cells with the smallest indicators: at most floor(fraction * N) cells (for coarsening).
+std::vector<char> markSmallest(const std::vector<double>& indicators, double fraction, MPI_Comm comm);
+
+}  // namespace signorini::adapt

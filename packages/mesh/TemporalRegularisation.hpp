@@ -1,0 +1,23 @@
+#pragma once
+/// \file TemporalRegularisation.hpp
+/// Paper Algorithm 5.3 (DESIGN 1.3): no cell of a step's mesh may be more than one level coarser
+/// than a cell of a neighbouring step's mesh that it overlaps ("multiple hanging nodes in time").
+#include <vector>
+
+#include "Forest.hpp"
+
+namespace signorini::mesh {
+
+/// Refines \p target until none of its cells is more than one level coarser than an overlapping
+/// cell of \p neighbour, keeping 2:1 balance. Returns the number of refinement passes made.
+int regulariseInTime(const Forest& neighbour, Forest& target);
+
+/// Algorithm 5.3 over a sequence of step meshes: forward sweeps (each mesh against its
+/// predecessor) and backward sweeps (against its successor), repeated until nothing changes
+/// (a backward refinement can create a forward violation), then re-partitioning.
+void regulariseSequence(std::vector<Forest*>& meshes);
+
+/// Largest level difference (neighbour level - target level) over overlapping cells, all ranks.
+int maxLevelExcess(const Forest& neighbour, const Forest& target);
+
+}  // namespace signorini::mesh

@@ -1,0 +1,85 @@
+// Refinement, balance (Algorithm 5.2) and temporal regularisation (Algorithm 5.3) on forests.
+#include <gtest/gtest.h>
+
+#include <p4est_bits.h>
+#include <p4est_lnodes.h>
+
+#include "../TestMesh.hpp"
+#include "TemporalRegularisation.hpp"
+
+using namespace signorini;
+
+namespace {
+
+/// Refines, `times` times, the cells touching the point (s, r) of tree 0's reference square.
+void refineAt(mesh::Forest& f, double s, double r, int times) {
+  for (int i = 0; i < times; ++i) {
+    f.refineIf([&](int tree, const p4est_quadrant_t& q) {
+      const double len = static_cast<double>(P4EST_QUADRANT_LEN(q.level)) / P4EST_ROOT_LEN;
+      const double x = q.x / static_cast<double>(P4EST_ROOT_LEN), y = q.y / static_cast<double>(P4EST_ROOT_LEN);
+      return tree == 0 && s >= x && s <= x + len && r >= y && r <= y + len;
+    });
+  }
+}
+
+TEST(Balance, LeavesAtMostOneHangingNodePerEdge) {
+  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 1, 1, 1);
+  refineAt(*tm.forest, 0.3, 0.3, 6);  // a deep local refinement: multiple hanging nodes before balancing
+  tm.forest->balance();
+  tm.forest->partition();
+  // p4est lnodes (degree 1) accepts only 2:1 balanced forests and encodes one hanging node per
+  // face; building the Q1 numbering checks the hanging-corner structure.
+  const auto& m = tm.build();
+  int hangingCorners = 0;
+  for (LO e = 0; e < m.numLocalCells(); ++e)
+    for (int c = 0; c < 4; ++c) hangingCorners += m.cornerDofsHost(e, c, 1) >= 0;
+  int global = 0;
+  MPI_Allreduce(&hangingCorners, &global, 1, MPI_INT, MPI_SUM, tm.forest->comm());
+  EXPECT_GT(global, 0);
+  // 2:1 balanced: balancing again changes nothing.
+  mesh::Forest copy(*tm.forest);
+  copy.balance();
+  EXPECT_TRUE(copy.sameCells(*tm.forest));
+}
+
+TEST(TemporalRegularisation, NoCellIsMoreThanOneLevelCoarserThanItsNeighbourSteps) {
+  test::TestMesh a(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
+  std::vector<std::unique_ptr<mesh::Forest>> steps;
+  for (int n = 0; n < 4; ++n) steps.push_back(std::make_unique<mesh::Forest>(*a.forest));
+  // Step 1 is refined deeply near a point, step 3 near another: steps 0, 2 are coarse there.
+  refineAt(*steps[1], 0.2, 0.7, 4);
+  refineAt(*steps[3], 0.8, 0.1, 3);
+  for (auto& f : steps) {
+    f->balance();
+    f->partition();
+  }
+  EXPECT_GE(mesh::maxLevelExcess(*steps[1], *steps[2]), 2);
+  std::vector<mesh::Forest*> seq;
+  for (auto& f : steps) seq.push_back(f.get());
+  mesh::regulariseSequence(seq);
+  for (size_t n = 0; n + 1 < steps.size(); ++n) {
+    EXPECT_LE(mesh::maxLevelExcess(*steps[n], *steps[n + 1]), 1) << "forward " << n;
+    EXPECT_LE(mesh::maxLevelExcess(*steps[n + 1], *steps[n]), 1) << "backward " << n;
+  }
+  // Regularising refines only: every step still contains its own refinement.
+  EXPECT_GE(steps[1]->numGlobalCells(), a.forest->numGlobalCells());
+}
+
+TEST(Forest, MarkedRefinementAndCoarseningAndSameCells) {
+  test::TestMesh a(0.0, 1.0, 0.0, 1.0, 2, 2, 2);  // 64 cells
+  mesh::Forest f(*a.forest);
+  EXPECT_TRUE(f.sameCells(*a.forest));
+  std::vector<char> all(f.numLocalCells(), 1);
+  f.refineMarked(all);
+  EXPECT_EQ(f.numGlobalCells(), 4 * a.forest->numGlobalCells());
+  EXPECT_FALSE(f.sameCells(*a.forest));
+  f.coarsenMarked(std::vector<char>(f.numLocalCells(), 1), 2);
+  EXPECT_EQ(f.numGlobalCells(), a.forest->numGlobalCells());
+  f.partition();
+  EXPECT_TRUE(f.sameCells(*a.forest));
+  f.coarsenMarked(std::vector<char>(f.numLocalCells(), 1), 2);  // not below the minimum level
+  EXPECT_EQ(f.numGlobalCells(), a.forest->numGlobalCells());
+  EXPECT_GT(f.bytes(), 0u);
+}
+
+}  // namespace
