@@ -23,6 +23,7 @@
 #include "PhaseTimers.hpp"
 #include "ProblemData.hpp"
 #include "Q1Assembler.hpp"
+#include "MeshTransfer.hpp"
 #include "ResultWriter.hpp"
 
 namespace signorini::dynamics {
@@ -94,6 +95,19 @@ core::ParameterList Simulation::getValidParameters() {
   return p;
 }
 
+/// Everything that depends on one mesh: numbering, matrices, solvers, contact coupling.
+struct Discretisation {
+  std::shared_ptr<mesh::Forest> forest;
+  std::unique_ptr<mesh::Q1Mesh> mesh;
+  std::unique_ptr<fem::Q1Assembler> assembler;
+  RCP<CrsMatrix> M, K, A;
+  std::unique_ptr<solvers::LinearSolver> solver, massSolver;
+  std::unique_ptr<fem::ContactCoupling> coupling;
+  std::unique_ptr<solvers::ContactQP> qp;
+  double courant = 0;
+  long builtAtStep = 0;  ///< identifies the mesh in the Exodus series
+};
+
 struct Simulation::Impl {
   RCP<const Comm> comm;
   core::ParameterList deck;
@@ -102,39 +116,138 @@ struct Simulation::Impl {
   std::unique_ptr<mesh::BoundarySegments> segments;
   std::unique_ptr<fem::ProblemData> problem;
   std::unique_ptr<Newmark> newmark;
-  std::unique_ptr<mesh::Forest> forest;
-  std::unique_ptr<mesh::Q1Mesh> mesh;
-  std::unique_ptr<fem::Q1Assembler> assembler;
-  RCP<CrsMatrix> M, K, A;
-  std::unique_ptr<solvers::LinearSolver> solver, massSolver;
-  std::unique_ptr<fem::ContactCoupling> coupling;
-  std::unique_ptr<solvers::ContactQP> qp;
-  RCP<Vector> u, v, a;
-  std::vector<double> lambda, gap;
+  std::shared_ptr<mesh::Forest> initialForest;
   std::vector<std::pair<std::string, std::array<double, 2>>> probes;
   core::PhaseTimers timers;
-  double courant = 0;
 
-  void projectL2(const core::Expression& f, Vector& out) {
-    Vector b(mesh->ownedMap());
-    assembler->assembleLoad(f, 0.0, 1.0, b);
+  std::unique_ptr<Discretisation> build(std::shared_ptr<mesh::Forest> forest, long step) {
+    auto d = std::make_unique<Discretisation>();
+    d->forest = forest;
+    d->builtAtStep = step;
+    {
+      auto scope = timers.scope("mesh");
+      d->mesh = std::make_unique<mesh::Q1Mesh>(*forest, *segments, comm);
+    }
+    {
+      auto scope = timers.scope("assembly");
+      d->assembler = std::make_unique<fem::Q1Assembler>(*d->mesh, d->mesh->nodesOnSegments(problem->dirichletMask));
+      const double rho = problem->density, kappa = problem->stiffness, k = newmark->timeStep;
+      std::vector<char> lump;
+      if (problem->hasObstacle && deck.sublist("Contact").get<std::string>("Boundary Mass") == "lumped")
+        lump = d->mesh->nodesOnSegments(problem->contactMask);
+      d->M = d->assembler->assembleOperator(1.0, 0.0, rho, kappa, lump);
+      d->K = d->assembler->assembleOperator(0.0, 1.0, rho, kappa);
+      d->A = d->assembler->assembleOperator(1.0, newmark->beta * k * k, rho, kappa, lump);
+    }
+    d->courant = problem->waveSpeed() * newmark->timeStep / d->mesh->hMin();
+    auto scope = timers.scope("preconditioner");
+    d->solver = std::make_unique<solvers::LinearSolver>(deck.sublist("Linear Solver"), comm);
+    d->solver->setOperator(d->A, d->courant);
+    auto massParams = deck.sublist("Linear Solver");
+    massParams.set("Preconditioner", "Jacobi");
+    d->massSolver = std::make_unique<solvers::LinearSolver>(massParams, comm);
+    d->massSolver->setOperator(d->M, 0.0);
+    if (problem->hasObstacle) {
+      const auto size = deck.sublist("Contact").get<std::string>("Multiplier Segments") == "H = h"
+                            ? fem::ContactCoupling::SegmentSize::OneEdge
+                            : fem::ContactCoupling::SegmentSize::TwoEdges;
+      d->coupling = std::make_unique<fem::ContactCoupling>(*d->mesh, problem->contactMask, size,
+                                                           d->assembler->dirichletFlags());
+      if (d->coupling->numSegments() == 0)
+        SIGNORINI_USER_ERROR("Problem/Contact Segments: the named segments contain no boundary edge of the mesh");
+      d->qp = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), coarse->diameter());
+      d->qp->setSystem(*d->A, *d->coupling, d->courant);
+    }
+    return d;
+  }
+
+  /// L2 projection of an expression at t = 0 (M x = int f phi).
+  void projectL2(Discretisation& d, const core::Expression& f, Vector& out) {
+    Vector b(d.mesh->ownedMap());
+    d.assembler->assembleLoad(f, 0.0, 1.0, b);
     out.putScalar(0.0);
-    massSolver->solve(b, out);
+    d.massSolver->solve(b, out);
+  }
+
+  /// Initial state on d: u0, v0 projected, a0 from (rho a0, phi) + a(u0, phi) = (f(0), phi) + Neumann.
+  void initialState(Discretisation& d, Vector& u, Vector& v, Vector& a) {
+    projectL2(d, problem->initialDisplacement, u);
+    projectL2(d, problem->initialVelocity, v);
+    Vector rhs(d.mesh->ownedMap()), Ku(d.mesh->ownedMap());
+    d.assembler->assembleLoad(problem->bodyForce, 0.0, 1.0, rhs);
+    d.assembler->addBoundaryLoad(problem->neumannData, 0.0, problem->neumannMask, 1.0, rhs);
+    d.K->apply(u, Ku);
+    rhs.update(-1.0, Ku, 1.0);
+    a.putScalar(0.0);
+    d.massSolver->solve(rhs, a);
+  }
+
+  /// Throws a user error if u penetrates the obstacle at t = 0.
+  void checkInitialGap(Discretisation& d, const Vector& u) {
+    if (!d.coupling) return;
+    auto gap = d.coupling->applyTranspose(u);
+    const auto gbar = d.coupling->weightedObstacle(problem->obstacle, 0.0);
+    const auto& len = d.coupling->segmentLength();
+    for (int j = 0; j < d.coupling->numSegments(); ++j)
+      if ((gap[j] - gbar[j]) / len[j] < -d.qp->gapTolerance()) {
+        const auto& mp = d.coupling->segmentMidpoint()[j];
+        SIGNORINI_USER_ERROR("Problem/Initial Displacement penetrates the obstacle at t = 0: the mean gap on the contact "
+                             "segment at (" << mp[0] << ", " << mp[1] << ") is " << (gap[j] - gbar[j]) / len[j]);
+      }
+  }
+
+  double energy(const Discretisation& d, const Vector& u, const Vector& v) const {
+    Vector tmp(d.mesh->ownedMap());
+    d.M->apply(v, tmp);
+    const double kin = 0.5 * tmp.dot(v);
+    d.K->apply(u, tmp);
+    return kin + 0.5 * tmp.dot(u);
   }
   /// The energy the Newmark scheme with alpha = 1/2 conserves without contact and loads:
   /// kinetic + strain + (beta - 1/4) k^2 / 2 a^T M a.
-  double newmarkEnergy() const {
-    Vector tmp(mesh->ownedMap());
-    M->apply(*a, tmp);
+  double newmarkEnergy(const Discretisation& d, const Vector& u, const Vector& v, const Vector& a) const {
+    Vector tmp(d.mesh->ownedMap());
+    d.M->apply(a, tmp);
     const double k = newmark->timeStep;
-    return energy(*u, *v) + (newmark->beta - 0.25) * 0.5 * k * k * tmp.dot(*a);
+    return energy(d, u, v) + (newmark->beta - 0.25) * 0.5 * k * k * tmp.dot(a);
   }
-  double energy(const Vector& uu, const Vector& vv) const {
-    Vector tmp(mesh->ownedMap());
-    M->apply(vv, tmp);
-    const double kin = 0.5 * tmp.dot(vv);
-    K->apply(uu, tmp);
-    return kin + 0.5 * tmp.dot(uu);
+
+  /// Moves (u, v, a) from the old discretisation to the new one; the multipliers follow the
+  /// segment midpoints (they only warm-start the next QP).
+  void transfer(const Discretisation& from, Discretisation& to, bool interpolate, RCP<Vector>& u, RCP<Vector>& v,
+                RCP<Vector>& a, std::vector<double>& lambda) {
+    auto scope = timers.scope("transfer");
+    fem::MeshTransfer t(*from.forest, *from.mesh, {u.get(), v.get(), a.get()}, *to.forest, *to.mesh);
+    std::vector<RCP<Vector>> fields;
+    if (interpolate) {
+      fields = t.interpolate();
+      for (auto& f : fields) to.assembler->zeroDirichlet(*f);
+    } else {
+      fields = t.projectionLoads(*to.assembler);
+      for (auto& b : fields) {
+        auto x = Teuchos::rcp(new Vector(to.mesh->ownedMap()));
+        to.massSolver->solve(*b, *x);
+        b = x;
+      }
+    }
+    u = fields[0];
+    v = fields[1];
+    a = fields[2];
+    if (from.coupling && to.coupling) {
+      const auto& oldMid = from.coupling->segmentMidpoint();
+      std::vector<double> next(to.coupling->numSegments(), 0.0);
+      for (int j = 0; j < to.coupling->numSegments(); ++j) {
+        const auto& p = to.coupling->segmentMidpoint()[j];
+        double best = 1e300;
+        for (size_t i = 0; i < oldMid.size(); ++i) {
+          const double d2 = std::hypot(oldMid[i][0] - p[0], oldMid[i][1] - p[1]);
+          if (d2 < best) best = d2, next[j] = lambda[i] * to.coupling->segmentLength()[j] / from.coupling->segmentLength()[i];
+        }
+      }
+      lambda = next;
+    } else {
+      lambda.assign(to.coupling ? to.coupling->numSegments() : 0, 0.0);
+    }
   }
 };
 
@@ -164,91 +277,27 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     I.probes.push_back({name, {x, y}});
   }
 
-  I.forest = std::make_unique<mesh::Forest>(I.coarse, core::rawMpiComm(*comm), meshParams.get<int>("Refinement Level"));
-  {
-    auto scope = I.timers.scope("mesh");
-    I.mesh = std::make_unique<mesh::Q1Mesh>(*I.forest, *I.segments, comm);
-  }
+  I.initialForest = std::make_shared<mesh::Forest>(I.coarse, core::rawMpiComm(*comm), meshParams.get<int>("Refinement Level"));
+  // Set-up checks on the initial mesh, before any output exists.
+  auto d = I.build(I.initialForest, 0);
   int overlapLocal = 0, overlapGlobal = 0;
-  for (const auto& be : I.mesh->boundaryEdges())
+  for (const auto& be : d->mesh->boundaryEdges())
     if ((be.segments & I.problem->dirichletMask) && (be.segments & I.problem->contactMask)) overlapLocal = 1;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, overlapLocal, Teuchos::outArg(overlapGlobal));
   if (overlapGlobal)
     SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a Dirichlet and a contact segment");
   for (const auto& [name, p] : I.probes) {
     double s, r;
-    int found = I.mesh->locate(p[0], p[1], s, r) >= 0 ? 1 : 0;
+    int found = d->mesh->locate(p[0], p[1], s, r) >= 0 ? 1 : 0;
     int any = 0;
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, found, Teuchos::outArg(any));
     if (!any) SIGNORINI_USER_ERROR("Output/Probes/" << name << ": point (" << p[0] << ", " << p[1] << ") is outside the mesh");
   }
-
   {
-    auto scope = I.timers.scope("assembly");
-    I.assembler = std::make_unique<fem::Q1Assembler>(*I.mesh, I.mesh->nodesOnSegments(I.problem->dirichletMask));
-    const double rho = I.problem->density, kappa = I.problem->stiffness, k = I.newmark->timeStep;
-    std::vector<char> lump;
-    if (I.problem->hasObstacle && deck.sublist("Contact").get<std::string>("Boundary Mass") == "lumped")
-      lump = I.mesh->nodesOnSegments(I.problem->contactMask);
-    I.M = I.assembler->assembleOperator(1.0, 0.0, rho, kappa, lump);
-    I.K = I.assembler->assembleOperator(0.0, 1.0, rho, kappa);
-    I.A = I.assembler->assembleOperator(1.0, I.newmark->beta * k * k, rho, kappa, lump);
+    Vector u(d->mesh->ownedMap()), v(d->mesh->ownedMap()), a(d->mesh->ownedMap());
+    I.initialState(*d, u, v, a);
+    I.checkInitialGap(*d, u);
   }
-  I.courant = I.problem->waveSpeed() * I.newmark->timeStep / I.mesh->hMin();
-  {
-    auto scope = I.timers.scope("preconditioner");
-    I.solver = std::make_unique<solvers::LinearSolver>(deck.sublist("Linear Solver"), comm);
-    I.solver->setOperator(I.A, I.courant);
-    auto massParams = deck.sublist("Linear Solver");
-    massParams.set("Preconditioner", "Jacobi");
-    I.massSolver = std::make_unique<solvers::LinearSolver>(massParams, comm);
-    I.massSolver->setOperator(I.M, 0.0);
-  }
-  if (I.problem->hasObstacle) {
-    const auto size = deck.sublist("Contact").get<std::string>("Multiplier Segments") == "H = h"
-                          ? fem::ContactCoupling::SegmentSize::OneEdge
-                          : fem::ContactCoupling::SegmentSize::TwoEdges;
-    I.coupling = std::make_unique<fem::ContactCoupling>(*I.mesh, I.problem->contactMask, size,
-                                                        I.assembler->dirichletFlags());
-    if (I.coupling->numSegments() == 0)
-      SIGNORINI_USER_ERROR("Problem/Contact Segments: the named segments contain no boundary edge of the mesh");
-    I.qp = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), I.coarse->diameter());
-    auto scope = I.timers.scope("preconditioner");  // the Schur preconditioner (strip factorisation)
-    I.qp->setSystem(*I.A, *I.coupling, I.courant);
-    I.lambda.assign(I.coupling->numSegments(), 0.0);
-  }
-
-  // Initial state: L2 projections of u0, v0 (paper Algorithm 3.3) and a0 from
-  // (rho a0, phi) + a(u0, phi) = (f(0), phi) + Neumann load.
-  const auto owned = I.mesh->ownedMap();
-  I.u = Teuchos::rcp(new Vector(owned));
-  I.v = Teuchos::rcp(new Vector(owned));
-  I.a = Teuchos::rcp(new Vector(owned));
-  I.projectL2(I.problem->initialDisplacement, *I.u);
-  I.projectL2(I.problem->initialVelocity, *I.v);
-  {
-    Vector rhs(owned), Ku(owned);
-    I.assembler->assembleLoad(I.problem->bodyForce, 0.0, 1.0, rhs);
-    I.assembler->addBoundaryLoad(I.problem->neumannData, 0.0, I.problem->neumannMask, 1.0, rhs);
-    I.K->apply(*I.u, Ku);
-    rhs.update(-1.0, Ku, 1.0);
-    I.a->putScalar(0.0);
-    I.massSolver->solve(rhs, *I.a);
-  }
-  if (I.coupling) {
-    I.gap = I.coupling->applyTranspose(*I.u);
-    const auto gbar = I.coupling->weightedObstacle(I.problem->obstacle, 0.0);
-    const auto& len = I.coupling->segmentLength();
-    for (int j = 0; j < I.coupling->numSegments(); ++j) {
-      I.gap[j] -= gbar[j];
-      if (I.gap[j] / len[j] < -I.qp->gapTolerance()) {
-        const auto& mp = I.coupling->segmentMidpoint()[j];
-        SIGNORINI_USER_ERROR("Problem/Initial Displacement penetrates the obstacle at t = 0: the mean gap on the contact "
-                             "segment at (" << mp[0] << ", " << mp[1] << ") is " << I.gap[j] / len[j]);
-      }
-    }
-  }
-
   I.outDir = outputDir.empty() ? out.get<std::string>("Directory") : outputDir;
   I.basename = out.get<std::string>("Basename").empty() ? stemOf(deckPath) : out.get<std::string>("Basename");
   ensureWritableDirectory(I.outDir, *comm);
@@ -256,32 +305,48 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
 
 Simulation::~Simulation() = default;
 
+std::shared_ptr<mesh::Forest> Simulation::initialForest() const { return impl_->initialForest; }
+int Simulation::numSteps() const { return impl_->newmark->numSteps(); }
+RCP<const Comm> Simulation::comm() const { return impl_->comm; }
+const std::string& Simulation::outputBase() const {
+  static thread_local std::string base;
+  base = impl_->outDir + "/" + impl_->basename;
+  return base;
+}
+
 RunSummary Simulation::run() {
+  std::vector<std::shared_ptr<mesh::Forest>> meshes(numSteps(), impl_->initialForest);
+  return runPass(meshes, StepHook(), PassOptions());
+}
+
+RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>& meshes, const StepHook& hook,
+                               const PassOptions& options) {
   auto& I = *impl_;
   const int rank = I.comm->getRank();
-  const auto owned = I.mesh->ownedMap();
   const auto& outParams = I.deck.sublist("Output");
-  const std::string base = I.outDir + "/" + I.basename;
+  const std::string base = I.outDir + "/" + (options.basename.empty() ? I.basename : options.basename);
   const int nSteps = I.newmark->numSteps();
+  SIGNORINI_ASSERT(static_cast<int>(meshes.size()) == nSteps, "one mesh per time step");
   const double k = I.newmark->timeStep, beta = I.newmark->beta;
   const int exodusInterval = outParams.get<int>("Exodus Interval");
   int progress = outParams.get<int>("Progress Interval");
   if (progress == 0) progress = std::max(1, nSteps / 20);
+  I.timers.clear();
 
   std::vector<std::string> columns = {"step", "t", "dofs", "active", "qp_iterations", "cg_iterations",
                                       "linear_solves", "linear_iterations", "energy", "newmark_energy",
-                                      "contact_force",
-                                      "max_lambda", "min_gap", "max_complementarity", "time_assembly",
-                                      "time_contact", "time_output", "time_unconstrained"};
+                                      "contact_force", "max_lambda", "min_gap", "max_complementarity",
+                                      "time_assembly", "time_contact", "time_output", "time_unconstrained"};
   for (const auto& p : I.probes) columns.push_back("probe:" + p.first);
   if (I.problem->exactSolution) {
     columns.push_back("error_l2");
     columns.push_back("error_h1");
   }
+  columns.insert(columns.end(), options.extraColumns.begin(), options.extraColumns.end());
   std::unique_ptr<io::CsvWriter> csv;
   int csvOk = 1;
   std::string csvError;
-  if (rank == 0) {
+  if (rank == 0 && options.writeCsv) {
     try {
       csv = std::make_unique<io::CsvWriter>(base + ".steps.csv", columns);
     } catch (core::UserError& e) {
@@ -292,90 +357,115 @@ RunSummary Simulation::run() {
   Teuchos::broadcast(*I.comm, 0, 1, &csvOk);
   if (!csvOk) SIGNORINI_USER_ERROR((rank == 0 ? csvError : std::string("cannot create the CSV output")));
   std::unique_ptr<ResultWriter> exodus;
-  if (outParams.get<bool>("Write Exodus"))
-    exodus = std::make_unique<ResultWriter>(base, std::vector<std::string>{"u", "v", "a"},
-                                            std::vector<std::string>{"level"},
+  std::vector<std::string> cellNames = {"level"};
+  if (!options.cellFieldName.empty()) cellNames.push_back(options.cellFieldName);
+  if (outParams.get<bool>("Write Exodus") && options.writeExodus)
+    exodus = std::make_unique<ResultWriter>(base, std::vector<std::string>{"u", "v", "a"}, cellNames,
                                             std::vector<std::string>{"lambda", "gap"}, I.comm);
-  std::vector<int> contactEdges;
-  if (I.coupling)
-    for (size_t i = 0; i < I.coupling->localEdgeSegment().size(); ++i)
-      if (I.coupling->localEdgeSegment()[i] >= 0) contactEdges.push_back(static_cast<int>(i));
 
   RunSummary summary;
-  summary.dofsPerStep = static_cast<long long>(owned->getGlobalNumElements());
   const auto start = std::chrono::steady_clock::now();
-  Vector uOverlap(I.mesh->overlapMap()), vOverlap(I.mesh->overlapMap()), aOverlap(I.mesh->overlapMap());
-
   const bool measureOverhead = outParams.get<bool>("Measure Contact Overhead");
+  // The QP multiplier is beta k^2 times the physical one (kappa du/dn = -lambda on Gamma_C).
+  const double toPhysical = 1.0 / (beta * k * k);
+
+  std::unique_ptr<Discretisation> d = I.build(meshes[0], 1);
+  RCP<Vector> u = Teuchos::rcp(new Vector(d->mesh->ownedMap())), v = Teuchos::rcp(new Vector(d->mesh->ownedMap())),
+              a = Teuchos::rcp(new Vector(d->mesh->ownedMap()));
+  I.initialState(*d, *u, *v, *a);
+  I.checkInitialGap(*d, *u);
+  std::vector<double> lambda(d->coupling ? d->coupling->numSegments() : 0, 0.0), gap;
+  if (d->coupling) {
+    gap = d->coupling->applyTranspose(*u);
+    const auto gbar = d->coupling->weightedObstacle(I.problem->obstacle, 0.0);
+    for (size_t j = 0; j < gap.size(); ++j) gap[j] -= gbar[j];
+  }
+
   auto writeOutputs = [&](int step, double t, const solvers::ContactQPResult& qr, double tAssembly, double tContact,
-                          double tFree) {
+                          double tFree, const StepExtras& extras) {
     auto scope = I.timers.scope("output");
     const auto t0 = std::chrono::steady_clock::now();
-    // The QP multiplier is beta k^2 times the physical one (kappa du/dn = -lambda on Gamma_C).
-    const double toPhysical = 1.0 / (I.newmark->beta * I.newmark->timeStep * I.newmark->timeStep);
+    const auto dofs = static_cast<double>(d->mesh->numGlobalNodes());
     double force = 0;
-    if (I.coupling)
-      for (int j = 0; j < I.coupling->numSegments(); ++j)
-        force -= toPhysical * I.lambda[j] * I.coupling->segmentLength()[j];
-    I.assembler->toOverlap(*I.u, uOverlap);
-    std::vector<double> row = {double(step), t, double(summary.dofsPerStep), double(qr.active),
-                               double(qr.activeSetIterations), double(qr.cgIterations), double(qr.linearSolves),
-                               double(qr.linearIterations), I.energy(*I.u, *I.v), I.newmarkEnergy(), force, toPhysical * qr.maxLambda,
-                               qr.minGap, toPhysical * qr.maxComplementarity, tAssembly, tContact, 0.0, tFree};
-    for (const auto& p : I.probes) row.push_back(I.assembler->evaluate(uOverlap, p.second[0], p.second[1]));
+    if (d->coupling)
+      for (int j = 0; j < d->coupling->numSegments(); ++j) force -= toPhysical * lambda[j] * d->coupling->segmentLength()[j];
+    Vector uOverlap(d->mesh->overlapMap());
+    d->assembler->toOverlap(*u, uOverlap);
+    std::vector<double> row = {double(step), t, dofs, double(qr.active), double(qr.activeSetIterations),
+                               double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),
+                               I.energy(*d, *u, *v), I.newmarkEnergy(*d, *u, *v, *a), force,
+                               toPhysical * qr.maxLambda, qr.minGap, toPhysical * qr.maxComplementarity, tAssembly,
+                               tContact, 0.0, tFree};
+    for (const auto& p : I.probes) row.push_back(d->assembler->evaluate(uOverlap, p.second[0], p.second[1]));
     if (I.problem->exactSolution) {
-      const auto [l2, h1] = I.assembler->errorNorms(*I.u, *I.problem->exactSolution, t);
+      const auto [l2, h1] = d->assembler->errorNorms(*u, *I.problem->exactSolution, t);
       row.push_back(l2);
       row.push_back(h1);
     }
+    for (size_t c = 0; c < options.extraColumns.size(); ++c)
+      row.push_back(c < extras.columns.size() ? extras.columns[c] : 0.0);
     if (exodus && (step % exodusInterval == 0 || step == nSteps)) {
-      I.assembler->toOverlap(*I.v, vOverlap);
-      I.assembler->toOverlap(*I.a, aOverlap);
-      std::vector<double> level(I.mesh->cellLevel().begin(), I.mesh->cellLevel().end());
+      Vector vOverlap(d->mesh->overlapMap()), aOverlap(d->mesh->overlapMap());
+      d->assembler->toOverlap(*v, vOverlap);
+      d->assembler->toOverlap(*a, aOverlap);
+      std::vector<std::vector<double>> cell = {std::vector<double>(d->mesh->cellLevel().begin(), d->mesh->cellLevel().end())};
+      if (!options.cellFieldName.empty())
+        cell.push_back(extras.cellField.empty() ? std::vector<double>(d->mesh->numLocalCells(), 0.0) : extras.cellField);
+      std::vector<int> contactEdges;
       std::vector<std::vector<double>> contact(2);
-      for (int i : contactEdges) {
-        const int j = I.coupling->localEdgeSegment()[i];
-        contact[0].push_back(toPhysical * I.lambda[j]);
-        contact[1].push_back(I.gap[j] / I.coupling->segmentLength()[j]);
-      }
-      exodus->write(0, *I.mesh, t, {&uOverlap, &vOverlap, &aOverlap}, {level}, contactEdges, contact);
+      if (d->coupling)
+        for (size_t i = 0; i < d->coupling->localEdgeSegment().size(); ++i) {
+          const int j = d->coupling->localEdgeSegment()[i];
+          if (j < 0) continue;
+          contactEdges.push_back(static_cast<int>(i));
+          contact[0].push_back(toPhysical * lambda[j]);
+          contact[1].push_back(gap[j] / d->coupling->segmentLength()[j]);
+        }
+      exodus->write(d->builtAtStep, *d->mesh, t, {&uOverlap, &vOverlap, &aOverlap}, cell, contactEdges, contact);
     }
     row[16] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (csv) csv->row(row);
   };
 
   try {
-    solvers::ContactQPResult none;
-    writeOutputs(0, 0.0, none, 0.0, 0.0, 0.0);
-    Vector F(owned), pred(owned), load(owned), uOld(owned);
+    writeOutputs(0, 0.0, solvers::ContactQPResult(), 0.0, 0.0, 0.0, StepExtras());
     for (int n = 1; n <= nSteps; ++n) {
       const double t = n * k;
+      if (n > 1 && meshes[n - 1] != d->forest && !meshes[n - 1]->sameCells(*d->forest)) {
+        auto next = I.build(meshes[n - 1], n);
+        I.transfer(*d, *next, options.interpolateTransfer, u, v, a, lambda);
+        d = std::move(next);
+        ++summary.meshChanges;
+      }
+      const auto owned = d->mesh->ownedMap();
+      summary.totalDofs += static_cast<long long>(d->mesh->numGlobalNodes());
+      Vector F(owned), pred(owned), load(owned), uOld(owned);
       const auto tA0 = std::chrono::steady_clock::now();
       {
         auto scope = I.timers.scope("assembly");
         // F^n = beta k^2 (f(t_n) + Neumann) + M (u + k v + (1/2 - beta) k^2 a)
-        I.newmark->predictor(*I.u, *I.v, *I.a, pred);
-        I.M->apply(pred, F);
-        I.assembler->assembleLoad(I.problem->bodyForce, t, beta * k * k, load);
-        I.assembler->addBoundaryLoad(I.problem->neumannData, t, I.problem->neumannMask, beta * k * k, load);
+        I.newmark->predictor(*u, *v, *a, pred);
+        d->M->apply(pred, F);
+        d->assembler->assembleLoad(I.problem->bodyForce, t, beta * k * k, load);
+        d->assembler->addBoundaryLoad(I.problem->neumannData, t, I.problem->neumannMask, beta * k * k, load);
         F.update(1.0, load, 1.0);
-        I.assembler->zeroDirichlet(F);
+        d->assembler->zeroDirichlet(F);
       }
       const auto tA1 = std::chrono::steady_clock::now();
-      uOld.assign(*I.u);
+      uOld.assign(*u);
       solvers::ContactQPResult qr;
       {
         auto scope = I.timers.scope("contact");
-        I.u->assign(pred);
-        I.assembler->zeroDirichlet(*I.u);
-        if (I.coupling) {
-          const auto gbar = I.coupling->weightedObstacle(I.problem->obstacle, t);
-          qr = I.qp->solve(*I.solver, *I.coupling, F, gbar, I.lambda, *I.u, I.gap);
+        u->assign(pred);
+        d->assembler->zeroDirichlet(*u);
+        if (d->coupling) {
+          const auto gbar = d->coupling->weightedObstacle(I.problem->obstacle, t);
+          qr = d->qp->solve(*d->solver, *d->coupling, F, gbar, lambda, *u, gap);
         } else {
-          const long its0 = I.solver->totalIterations();
-          I.solver->solve(F, *I.u);
+          const long its0 = d->solver->totalIterations();
+          d->solver->solve(F, *u);
           qr.linearSolves = 1;
-          qr.linearIterations = static_cast<int>(I.solver->totalIterations() - its0);
+          qr.linearIterations = static_cast<int>(d->solver->totalIterations() - its0);
         }
       }
       const auto tA2 = std::chrono::steady_clock::now();
@@ -383,18 +473,24 @@ RunSummary Simulation::run() {
       if (measureOverhead) {  // the same solve without contact, for the ratio time_contact / time_unconstrained
         Vector x(owned);
         x.assign(pred);
-        I.assembler->zeroDirichlet(x);
+        d->assembler->zeroDirichlet(x);
         const auto t0 = std::chrono::steady_clock::now();
-        I.solver->solve(F, x);
+        d->solver->solve(F, x);
         tFree = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       }
-      I.newmark->update(uOld, *I.u, *I.v, *I.a);
+      StepExtras extras;
+      if (hook) {
+        auto scope = I.timers.scope("estimator");
+        extras = hook(StepView{n, t, k, beta, *d->forest, *d->mesh, *d->assembler, d->coupling.get(), *I.problem, *u,
+                               pred, lambda, *d->massSolver});
+      }
+      I.newmark->update(uOld, *u, *v, *a);
       writeOutputs(n, t, qr, std::chrono::duration<double>(tA1 - tA0).count(),
-                   std::chrono::duration<double>(tA2 - tA1).count(), tFree);
+                   std::chrono::duration<double>(tA2 - tA1).count(), tFree, extras);
       if (n % progress == 0 || n == nSteps) {
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         core::rootOut(rank) << std::fixed << std::setprecision(4) << "  step " << n << "/" << nSteps << "  t = " << t
-                            << "  dofs = " << summary.dofsPerStep << "  active = " << qr.active
+                            << "  dofs = " << d->mesh->numGlobalNodes() << "  active = " << qr.active
                             << "  qp it = " << qr.activeSetIterations << "  lin it = " << qr.linearIterations
                             << std::setprecision(1) << "  elapsed " << elapsed << " s  remaining ~"
                             << elapsed / n * (nSteps - n) << " s" << std::endl;
@@ -412,6 +508,7 @@ RunSummary Simulation::run() {
   if (exodus)
     for (const auto& f : exodus->close()) summary.files.push_back(f);
   summary.steps = nSteps;
+  summary.dofsPerStep = static_cast<long long>(d->mesh->numGlobalNodes());
   summary.phaseSeconds = I.timers.all();
   summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;

@@ -7,24 +7,64 @@
 #include <string>
 #include <vector>
 
+#include <functional>
+
+#include "ContactCoupling.hpp"
+#include "Forest.hpp"
+#include "LinearSolver.hpp"
 #include "ParameterTools.hpp"
+#include "ProblemData.hpp"
+#include "Q1Assembler.hpp"
 #include "Types.hpp"
 
 namespace signorini::dynamics {
 
-/// What a finished run reports back (rank 0 has the file names).
+/// What a finished run (or pass over [0, T]) reports back (rank 0 has the file names).
 struct RunSummary {
   int steps = 0;
-  long long dofsPerStep = 0;
+  long long dofsPerStep = 0;   ///< unknowns of the last step
+  long long totalDofs = 0;     ///< sum over the steps n = 1..N of the unknowns of T^n
+  long meshChanges = 0;        ///< steps whose mesh differed from the previous step's
   double wallSeconds = 0;
   std::vector<std::string> files;
   /// Wall seconds per phase (mesh, assembly, preconditioner, contact, output) over the whole run.
   std::map<std::string, double> phaseSeconds;
 };
 
+/// What a per-step hook sees right after step n was solved (references valid during the call).
+struct StepView {
+  int step;
+  double time, timeStep, beta;
+  const mesh::Forest& forest;
+  const mesh::Q1Mesh& mesh;
+  const fem::Q1Assembler& assembler;
+  const fem::ContactCoupling* coupling;  ///< null without obstacle
+  const fem::ProblemData& problem;
+  const Vector& u;                       ///< u_h^n
+  const Vector& predictor;               ///< I_h u^{n-1} + k I_h v^{n-1} + (1/2 - beta) k^2 I_h a^{n-1}
+  const std::vector<double>& lambda;     ///< scaled QP multipliers
+  solvers::LinearSolver& spdSolver;      ///< a CG solver for SPD systems on this mesh (Jacobi)
+};
+/// Extra per-step results from a hook: CSV columns (in the order of PassOptions::extraColumns)
+/// and one cell field for Exodus.
+struct StepExtras {
+  std::vector<double> columns;
+  std::vector<double> cellField;
+};
+using StepHook = std::function<StepExtras(const StepView&)>;
+
+/// How a pass writes its outputs.
+struct PassOptions {
+  std::string basename;                   ///< empty: the deck's basename
+  bool writeCsv = true, writeExodus = true;
+  std::vector<std::string> extraColumns;  ///< names of StepExtras::columns
+  std::string cellFieldName;              ///< name of StepExtras::cellField in Exodus (empty: none)
+  bool interpolateTransfer = false;       ///< nodal interpolation instead of the L2 projection
+};
+
 class Simulation {
  public:
-  /// The whole deck: sublists Problem, Mesh, Time Integration, Contact, Linear Solver, Output.
+  /// The deck sublists Problem, Mesh, Time Integration, Contact, Linear Solver, Output.
   static core::ParameterList getValidParameters();
 
   /// \param deck      validated deck (core::validateDeck with getValidParameters()).
@@ -36,8 +76,20 @@ class Simulation {
              RCP<const Comm> comm);
   ~Simulation();
 
-  /// Runs all time steps and writes the outputs; on failure no output file is left under a final name.
+  /// Runs all time steps on the deck's uniform mesh and writes the outputs; on failure no output
+  /// file is left under a final name.
   RunSummary run();
+  /// One pass over [0, T] with the mesh meshes[n-1] in step n (paper Algorithm 3.3): the initial
+  /// values are projected onto meshes[0]; when a step's mesh differs from the previous one, a new
+  /// discretisation is built and (u, v, a) are transferred (L2 projection or interpolation);
+  /// otherwise nothing mesh-dependent is rebuilt. \p hook (may be empty) runs after each step.
+  RunSummary runPass(const std::vector<std::shared_ptr<mesh::Forest>>& meshes, const StepHook& hook,
+                     const PassOptions& options);
+  /// The deck's initial (uniform) mesh.
+  std::shared_ptr<mesh::Forest> initialForest() const;
+  int numSteps() const;
+  RCP<const Comm> comm() const;
+  const std::string& outputBase() const;  ///< output folder + "/" + basename
 
  private:
   struct Impl;
