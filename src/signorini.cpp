@@ -17,7 +17,7 @@
 #include "Error.hpp"
 #include "ParameterTools.hpp"
 #include "PhaseTimers.hpp"
-#include "Simulation.hpp"
+#include "AdaptiveSimulation.hpp"
 
 namespace {
 
@@ -33,7 +33,7 @@ using signorini::core::ParameterList;
 /// Reads and validates one deck with the command-line overrides applied.
 ParameterList readDeck(const std::string& path, const std::vector<std::string>& overrides) {
   ParameterList deck = signorini::io::readDeckFile(path);
-  const auto valid = signorini::dynamics::Simulation::getValidParameters();
+  const auto valid = signorini::adapt::AdaptiveSimulation::getValidParameters();
   for (const auto& o : overrides) signorini::core::applyOverride(deck, o, valid);
   signorini::core::validateDeck(deck, valid, path);
   return deck;
@@ -55,7 +55,7 @@ int main(int argc, char** argv) {
       out << kUsage;
       return 0;
     } else if (arg == "--print-parameters") {
-      signorini::core::printParameters(out, signorini::dynamics::Simulation::getValidParameters());
+      signorini::core::printParameters(out, signorini::adapt::AdaptiveSimulation::getValidParameters());
       return 0;
     } else if (arg == "--output-dir" || arg == "--set") {
       if (i + 1 == argc) {
@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     out << "signorini: running " << path << " on " << comm->getSize() << " rank(s)" << std::endl;
     try {
       const auto deck = readDeck(path, overrides);
-      signorini::dynamics::Simulation sim(deck, path, outputDir, comm);
+      signorini::adapt::AdaptiveSimulation sim(deck, path, outputDir, comm);
       const auto summary = sim.run();
       out << "signorini: " << path << " done: " << summary.steps << " steps, " << summary.dofsPerStep
           << " unknowns per step, " << summary.wallSeconds << " s" << std::endl;

@@ -79,25 +79,43 @@ void Forest::refineMarked(const std::vector<char>& flags) {
   refineIf([&](int tree, const p4est_quadrant_t& q) { return keys.count({tree, q.x, q.y, q.level}) > 0; });
 }
 
-void Forest::coarsenMarked(const std::vector<char>& flags, int minLevel) {
-  SIGNORINI_ASSERT(flags.size() == static_cast<size_t>(numLocalCells()), "one flag per local cell");
-  // Families may be split between ranks: share the flagged cells, partition so that families
-  // are local, then coarsen.
+namespace {
+/// The flagged cells of all ranks.
+std::set<CellKey> allFlaggedCells(p4est_t* p4est, const std::vector<char>& flags) {
   std::vector<int> mine;
-  for (const auto& [t, x, y, l] : flaggedCells(p4est_, flags)) mine.insert(mine.end(), {t, x, y, l});
+  for (const auto& [t, x, y, l] : flaggedCells(p4est, flags)) mine.insert(mine.end(), {t, x, y, l});
   int n = static_cast<int>(mine.size());
-  std::vector<int> counts(p4est_->mpisize), offsets(p4est_->mpisize, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, p4est_->mpicomm);
-  for (int r = 1; r < p4est_->mpisize; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<int> counts(p4est->mpisize), offsets(p4est->mpisize, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, p4est->mpicomm);
+  for (int r = 1; r < p4est->mpisize; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
   std::vector<int> all(offsets.back() + counts.back());
-  MPI_Allgatherv(mine.data(), n, MPI_INT, all.data(), counts.data(), offsets.data(), MPI_INT, p4est_->mpicomm);
-  CoarsenContext ctx{{}, minLevel};
-  for (size_t i = 0; i + 3 < all.size(); i += 4) ctx.keys.insert({all[i], all[i + 1], all[i + 2], all[i + 3]});
-  p4est_partition(p4est_, 1, nullptr);
-  void* saved = p4est_->user_pointer;
-  p4est_->user_pointer = &ctx;
-  p4est_coarsen(p4est_, 0, coarsenCallback, nullptr);
-  p4est_->user_pointer = saved;
+  MPI_Allgatherv(mine.data(), n, MPI_INT, all.data(), counts.data(), offsets.data(), MPI_INT, p4est->mpicomm);
+  std::set<CellKey> keys;
+  for (size_t i = 0; i + 3 < all.size(); i += 4) keys.insert({all[i], all[i + 1], all[i + 2], all[i + 3]});
+  return keys;
+}
+}  // namespace
+
+void Forest::coarsenMarked(const std::vector<char>& flags, int minLevel) {
+  refineAndCoarsen(std::vector<char>(flags.size(), 0), flags, minLevel);
+}
+
+void Forest::refineAndCoarsen(const std::vector<char>& refine, const std::vector<char>& coarsen, int minLevel) {
+  SIGNORINI_ASSERT(refine.size() == static_cast<size_t>(numLocalCells()) &&
+                       coarsen.size() == static_cast<size_t>(numLocalCells()),
+                   "one flag per local cell");
+  // Families may be split between ranks: share the flagged cells, partition so that families
+  // are local, coarsen, then refine by position.
+  const auto refineKeys = allFlaggedCells(p4est_, refine);
+  CoarsenContext ctx{allFlaggedCells(p4est_, coarsen), minLevel};
+  if (!ctx.keys.empty()) {
+    p4est_partition(p4est_, 1, nullptr);
+    void* saved = p4est_->user_pointer;
+    p4est_->user_pointer = &ctx;
+    p4est_coarsen(p4est_, 0, coarsenCallback, nullptr);
+    p4est_->user_pointer = saved;
+  }
+  refineIf([&](int tree, const p4est_quadrant_t& q) { return refineKeys.count({tree, q.x, q.y, q.level}) > 0; });
 }
 
 unsigned Forest::checksum() const {

@@ -38,6 +38,9 @@ class Forest {
   /// Replaces each family of four sibling cells that are all flagged by their parent, never
   /// going below \p minLevel.
   void coarsenMarked(const std::vector<char>& flags, int minLevel);
+  /// Coarsens the families all flagged in \p coarsen (not below \p minLevel), then refines the
+  /// cells flagged in \p refine (both in local cell order of the forest as it is on entry).
+  void refineAndCoarsen(const std::vector<char>& refine, const std::vector<char>& coarsen, int minLevel);
   /// A checksum of the cells, independent of the partition, the same on every rank.
   unsigned checksum() const;
   /// True if both forests have the same cells (checksum and count).

@@ -1,0 +1,160 @@
+#include "AdaptiveSimulation.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <set>
+
+#include <Tpetra_Vector.hpp>
+
+#include "CsvWriter.hpp"
+#include "Error.hpp"
+#include "Marking.hpp"
+#include "PhaseTimers.hpp"
+#include "ResidualEstimator.hpp"
+#include "TemporalRegularisation.hpp"
+
+namespace signorini::adapt {
+
+core::ParameterList AdaptiveSimulation::getValidParameters() {
+  auto p = dynamics::Simulation::getValidParameters();
+  core::ParameterList a("Adaptivity");
+  core::addChoice(a, "Strategy", "none",
+                  "Refinement between cycles: \"fixed fraction\" (the paper's), \"bulk\" (Doerfler), \"uniform\" "
+                  "(every cell: the comparison runs), or \"none\" (one pass on the deck's mesh, no estimator)",
+                  {"none", "fixed fraction", "bulk", "uniform"});
+  core::addDouble(a, "Refinement Fraction", 0.5,
+                  "Fixed fraction: share of cells refined; bulk: share of the squared estimate captured", 0.0, 1.0);
+  core::addDouble(a, "Coarsening Fraction", 0.0,
+                  "Share of cells with the smallest indicators coarsened (families of four; never below the deck's "
+                  "level); the paper used none",
+                  0.0, 1.0);
+  core::addInt(a, "Cycles", 5, "Number of passes over [0, T] (each pass is one cycle of Algorithm 5.1)", 1, 100);
+  core::addDouble(a, "Maximum Total Unknowns", 0.0,
+                  "Stop after the cycle whose total unknowns (sum over steps) reach this number; 0: no limit", 0.0);
+  core::addDouble(a, "Tolerance", 0.0, "Stop after the cycle whose estimate max_n eta^n is below this; 0: off", 0.0);
+  core::addInt(a, "Maximum Level", 14, "Cells are not refined beyond this level", 0, 25);
+  core::addChoice(a, "Transfer", "L2 projection", "I_h between step meshes (paper Sec. 3.2)",
+                  {"L2 projection", "interpolation"});
+  core::addBool(a, "Write All Cycles", false,
+                "Write Exodus results for every cycle (<basename>.cycle<l>.e); else only for the last cycle");
+  p.set("Adaptivity", a, "Algorithm 5.1: cycles, marking, stopping");
+  p.set("Estimator", estimate::ResidualEstimator::getValidParameters(), "The a posteriori estimator (paper Sec. 4)");
+  return p;
+}
+
+AdaptiveSimulation::AdaptiveSimulation(const core::ParameterList& deck, const std::string& deckPath,
+                                       const std::string& outputDir, RCP<const Comm> comm)
+    : deck_(deck), sim_(std::make_unique<dynamics::Simulation>(deck, deckPath, outputDir, comm)) {}
+
+AdaptiveSimulation::~AdaptiveSimulation() = default;
+
+dynamics::RunSummary AdaptiveSimulation::run() {
+  const auto& ap = deck_.sublist("Adaptivity");
+  const std::string strategy = ap.get<std::string>("Strategy");
+  if (strategy == "none") return sim_->run();
+
+  const auto comm = sim_->comm();
+  const int rank = comm->getRank();
+  MPI_Comm raw = sim_->initialForest()->comm();
+  const int nSteps = sim_->numSteps();
+  const int cycles = ap.get<int>("Cycles");
+  const int maxLevel = ap.get<int>("Maximum Level");
+  const int baseLevel = deck_.sublist("Mesh").get<int>("Refinement Level");
+  const double fraction = ap.get<double>("Refinement Fraction");
+  const double coarsen = ap.get<double>("Coarsening Fraction");
+  estimate::ResidualEstimator estimator(deck_.sublist("Estimator"));
+  const std::string base = sim_->outputBase();
+
+  std::unique_ptr<io::CsvWriter> cyclesCsv;
+  if (rank == 0)
+    cyclesCsv = std::make_unique<io::CsvWriter>(
+        base + ".cycles.csv",
+        std::vector<std::string>{"cycle", "total_dofs", "eta", "wall_seconds", "total_cells", "bytes_per_cell"});
+  std::vector<std::shared_ptr<mesh::Forest>> meshes(nSteps, sim_->initialForest());
+  dynamics::RunSummary last;
+  try {
+    for (int l = 0; l < cycles; ++l) {
+      const auto start = std::chrono::steady_clock::now();
+      std::vector<std::shared_ptr<mesh::Forest>> next(nSteps);
+      double etaMax = 0;
+      dynamics::StepHook hook = [&](const dynamics::StepView& s) {
+        const auto r = estimator.estimate(estimate::EstimatorInput{
+            s.forest, s.mesh, s.assembler, s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor,
+            s.lambda, [&](const RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
+              solvers::LinearSolver cg(deck_.sublist("Linear Solver"), comm);
+              cg.setOperator(A, 0.0);
+              cg.solve(b, x);
+            }});
+        etaMax = std::max(etaMax, r.eta);
+        // T^n_{l+1}: T^n_l refined by the strategy, 2:1 balanced (Algorithm 5.2).
+        std::vector<char> flags;
+        if (strategy == "uniform")
+          flags.assign(r.cellIndicator.size(), 1);
+        else if (strategy == "bulk")
+          flags = markBulk(r.cellIndicator, fraction, raw);
+        else
+          flags = markFixedFraction(r.cellIndicator, fraction, raw);
+        for (size_t e = 0; e < flags.size(); ++e)
+          if (s.mesh.cellLevel()[e] >= maxLevel) flags[e] = 0;
+        auto refined = std::make_shared<mesh::Forest>(s.forest);
+        std::vector<char> small(flags.size(), 0);
+        if (coarsen > 0 && strategy != "uniform") {
+          small = markSmallest(r.cellIndicator, coarsen, raw);
+          for (size_t e = 0; e < small.size(); ++e) small[e] = small[e] && !flags[e];
+        }
+        refined->refineAndCoarsen(flags, small, baseLevel);
+        refined->balance();
+        refined->partition();
+        const int n = s.step;
+        next[n - 1] = (n > 1 && next[n - 2]->sameCells(*refined)) ? next[n - 2] : refined;
+        std::vector<double> indicator(r.cellIndicator.size());
+        for (size_t e = 0; e < indicator.size(); ++e) indicator[e] = std::sqrt(r.cellIndicator[e]);
+        return dynamics::StepExtras{{r.etaStar, r.s0, r.s1, r.eta}, indicator};
+      };
+      dynamics::PassOptions options;
+      const bool lastPlanned = l == cycles - 1;
+      options.basename = lastPlanned ? "" : sim_->outputBase().substr(sim_->outputBase().find_last_of('/') + 1) +
+                                                ".cycle" + std::to_string(l);
+      options.writeExodus = lastPlanned || ap.get<bool>("Write All Cycles");
+      options.extraColumns = {"eta_star", "s0", "s1", "eta"};
+      options.cellFieldName = "indicator";
+      options.interpolateTransfer = ap.get<std::string>("Transfer") == "interpolation";
+      last = sim_->runPass(meshes, hook, options);
+      // Memory of the stored meshes of this cycle.
+      std::set<const mesh::Forest*> unique;
+      long long cells = 0;
+      double bytes = 0;
+      for (const auto& m : meshes) {
+        cells += m->numGlobalCells();
+        if (unique.insert(m.get()).second) bytes += static_cast<double>(m->bytes());
+      }
+      double bytesGlobal = 0;
+      MPI_Allreduce(&bytes, &bytesGlobal, 1, MPI_DOUBLE, MPI_SUM, raw);
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      cycles_.push_back({l, last.totalDofs, etaMax, wall, cells, bytesGlobal / static_cast<double>(cells)});
+      if (cyclesCsv)
+        cyclesCsv->row({double(l), double(last.totalDofs), etaMax, wall, double(cells), bytesGlobal / cells});
+      core::rootOut(rank) << "signorini: cycle " << l << ": total unknowns " << last.totalDofs << ", eta " << etaMax
+                          << ", " << wall << " s" << std::endl;
+      const double maxDofs = ap.get<double>("Maximum Total Unknowns"), tol = ap.get<double>("Tolerance");
+      if ((maxDofs > 0 && last.totalDofs >= maxDofs) || (tol > 0 && etaMax <= tol)) break;
+      if (l + 1 < cycles) {
+        // Algorithm 5.3, then the next cycle's meshes.
+        std::vector<mesh::Forest*> seq;
+        for (auto& m : next) seq.push_back(m.get());
+        mesh::regulariseSequence(seq);
+        meshes = next;
+      }
+    }
+  } catch (...) {
+    if (cyclesCsv) cyclesCsv->abandon();
+    throw;
+  }
+  if (cyclesCsv) {
+    cyclesCsv->commit();
+    last.files.push_back(cyclesCsv->path());
+  }
+  return last;
+}
+
+}  // namespace signorini::adapt

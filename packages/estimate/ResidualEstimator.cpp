@@ -1,0 +1,489 @@
+/// \file ResidualEstimator.cpp
+/// The residual estimator of paper Sec. 4 with the corrections of DESIGN 1.3.
+///
+/// eta_*^2 = sum_K eta_K^2, eta_K^2 = h_K^2 ||r||_K^2 + h_K ||R||^2_{dK}, h_K = longest diagonal of K:
+///  - cell part (Kokkos kernel over the cells, 3x3 Gauss): r = beta k^2 f + rho (predictor - u_h)
+///    + beta k^2 kappa Laplace(u_h), the Laplacian of the bilinear field through the inverse
+///    bilinear map (non-zero on non-rectangular cells);
+///  - interior edges (host, p4est_iterate over faces with the face ghost layer): R = -(beta k^2 / 2) J,
+///    J = [kappa du_h/dn]. Every cell K adjacent to an edge E gets h_K ||R||^2_E = h_K (beta k^2 / 2)^2
+///    ||J||^2_E, so E adds (h_K + h_K') (beta k^2)^2 ||J||^2_E / 4 in total: the jump is shared
+///    half and half (the 1/2 in R), each half weighted with its own cell's h_K. A 2:1 face is
+///    split into its two fine edges; on each, J uses the coarse cell's flux evaluated on that half,
+///    and the coarse cell collects both halves;
+///  - boundary edges (Q1Mesh::boundaryEdges()): the whole h_K ||R||^2_E goes to the edge's cell.
+/// s0^2 = |sum_j lambda_j int_{E_j} (g - u_h)_+ ds| (each rank its own contact edges, summed), and
+/// each fine contact edge's |lambda_j int_E (g - u_h)_+| is added to its cell's indicator (these
+/// shares sum to s0^2 because the multipliers are <= 0).
+#include "ResidualEstimator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <p4est_ghost.h>
+#include <p4est_iterate.h>
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "Error.hpp"
+#include "Q1Kernels.hpp"
+
+namespace signorini::estimate {
+
+namespace {
+
+/// 3-point Gauss rule on [0,1] (exact for quintics): cell residuals (3x3), edge terms, s0.
+constexpr double kG3[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
+constexpr double kW3[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+
+/// Laplacian of the bilinear (isoparametric Q1) field with corner values u on the cell with
+/// corners X (z-order), at the reference point (s, r).
+///
+/// With the map x(s, r) = sum_c X_c N_c and J = dx/d(s,r) (columns a = x_s, b = x_r), the chain
+/// rule gives for the reference Hessian H_ref(u) = J^T H(u) J + sum_i u_{x_i} H_ref(x_i).
+/// For bilinear u and x only the mixed derivatives are non-zero: u_sr = u0 - u1 - u2 + u3 and
+/// x_sr = X0 - X1 - X2 + X3. Hence J^T H(u) J = [[0, m], [m, 0]] with m = u_sr - grad(u) . x_sr,
+/// and Laplace(u) = tr H(u) = tr([[0, m], [m, 0]] (J^T J)^{-1}) = -2 m (a . b) / det(J)^2.
+/// It vanishes on parallelograms only if u_sr does (never for the bilinear shape functions unless
+/// a . b = 0, i.e. rectangles), and on every cell for the linear fields the space contains
+/// (then m = 0).
+KOKKOS_INLINE_FUNCTION double q1Laplacian(const double X[4][2], const double u[4], double s, double r) {
+  double N[4], dNds[4], dNdr[4];
+  fem::q1Shape(s, r, N, dNds, dNdr);
+  double a0 = 0, a1 = 0, b0 = 0, b1 = 0;  // a = x_s, b = x_r
+  for (int c = 0; c < 4; ++c) {
+    a0 += X[c][0] * dNds[c];
+    a1 += X[c][1] * dNds[c];
+    b0 += X[c][0] * dNdr[c];
+    b1 += X[c][1] * dNdr[c];
+  }
+  const double det = a0 * b1 - b0 * a1;
+  double us = 0, ur = 0;
+  for (int c = 0; c < 4; ++c) us += u[c] * dNds[c], ur += u[c] * dNdr[c];
+  // grad u = J^{-T} (u_s, u_r)
+  const double ux = (b1 * us - a1 * ur) / det, uy = (-b0 * us + a0 * ur) / det;
+  const double usr = u[0] - u[1] - u[2] + u[3];
+  const double xsr0 = X[0][0] - X[1][0] - X[2][0] + X[3][0], xsr1 = X[0][1] - X[1][1] - X[2][1] + X[3][1];
+  const double m = usr - ux * xsr0 - uy * xsr1;
+  return -2.0 * m * (a0 * b0 + a1 * b1) / (det * det);
+}
+
+/// Longest diagonal of a cell (h_K).
+KOKKOS_INLINE_FUNCTION double cellDiameter(const double X[4][2]) {
+  const double d0 = (X[3][0] - X[0][0]) * (X[3][0] - X[0][0]) + (X[3][1] - X[0][1]) * (X[3][1] - X[0][1]);
+  const double d1 = (X[2][0] - X[1][0]) * (X[2][0] - X[1][0]) + (X[2][1] - X[1][1]) * (X[2][1] - X[1][1]);
+  return Kokkos::Experimental::sqrt(d0 > d1 ? d0 : d1);
+}
+
+/// What the face terms need of one cell: its corners and the corner values of u_h (hanging
+/// corners already resolved). Plain data: exchanged as the ghost payload (12 doubles).
+struct CellPayload {
+  double X[4][2];
+  double u[4];
+};
+
+/// Reference point of face f (0:-x 1:+x 2:-y 3:+y) at parameter tau, which runs from corner
+/// p4est_face_corners[f][0] (tau = 0) to p4est_face_corners[f][1] (tau = 1).
+void faceReference(int f, double tau, double& s, double& r) {
+  if (f < 2) {
+    s = f == 0 ? 0.0 : 1.0;
+    r = tau;
+  } else {
+    s = tau;
+    r = f == 2 ? 0.0 : 1.0;
+  }
+}
+
+/// Unit outward normal of face f of a cell (the face is straight).
+void outwardNormal(const CellPayload& c, int f, double n[2]) {
+  const double* p0 = c.X[p4est_face_corners[f][0]];
+  const double* p1 = c.X[p4est_face_corners[f][1]];
+  const double tx = p1[0] - p0[0], ty = p1[1] - p0[1], len = std::hypot(tx, ty);
+  n[0] = ty / len;
+  n[1] = -tx / len;
+  double cx = 0, cy = 0;
+  for (int k = 0; k < 4; ++k) cx += 0.25 * c.X[k][0], cy += 0.25 * c.X[k][1];
+  if (n[0] * (0.5 * (p0[0] + p1[0]) - cx) + n[1] * (0.5 * (p0[1] + p1[1]) - cy) < 0) n[0] = -n[0], n[1] = -n[1];
+}
+
+/// Parameter tau of the physical point P on face f of a cell (orthogonal projection on the face).
+double faceParameter(const CellPayload& c, int f, const double P[2]) {
+  const double* p0 = c.X[p4est_face_corners[f][0]];
+  const double* p1 = c.X[p4est_face_corners[f][1]];
+  const double tx = p1[0] - p0[0], ty = p1[1] - p0[1];
+  return ((P[0] - p0[0]) * tx + (P[1] - p0[1]) * ty) / (tx * tx + ty * ty);
+}
+
+/// grad u_h . n at parameter tau of face f of the cell.
+double normalDerivative(const CellPayload& c, int f, double tau, const double n[2]) {
+  double s, r, N[4], gx[4], gy[4];
+  faceReference(f, tau, s, r);
+  fem::q1Gradients(c.X, s, r, N, gx, gy);
+  double dx = 0, dy = 0;
+  for (int k = 0; k < 4; ++k) dx += c.u[k] * gx[k], dy += c.u[k] * gy[k];
+  return dx * n[0] + dy * n[1];
+}
+
+/// Context of the p4est_iterate face callback.
+struct FaceContext {
+  const std::vector<CellPayload>* local;
+  const std::vector<CellPayload>* ghosts;
+  std::vector<double>* edgeTerm;  ///< per local cell: sum over its interior edges of h_K ||R||^2_E
+  double kappa, halfBk2;          ///< kappa and beta k^2 / 2
+};
+
+/// One cell on one side of a face: its payload and its local index (-1 for a ghost).
+struct FaceCell {
+  const CellPayload* data;
+  LO local;
+  int face;
+};
+
+FaceCell faceCell(const FaceContext& ctx, p4est_t* p4est, p4est_topidx_t tree, int face, int8_t isGhost,
+                  p4est_locidx_t quadid) {
+  if (isGhost) {
+    SIGNORINI_ASSERT(quadid >= 0 && static_cast<size_t>(quadid) < ctx.ghosts->size(),
+                     "face neighbour missing from the ghost layer");
+    return {&(*ctx.ghosts)[quadid], -1, face};
+  }
+  const p4est_tree_t* t = p4est_tree_array_index(p4est->trees, tree);
+  const LO e = static_cast<LO>(t->quadrants_offset + quadid);
+  return {&(*ctx.local)[e], e, face};
+}
+
+/// The jump term of the fine edge that is the whole face of cell A (the finer or equal side)
+/// and part (or all) of the face of cell B. With J = [kappa du_h/dn] = kappa (grad u_A - grad u_B) . n_A
+/// and R = -(beta k^2 / 2) J, each side's cell K in {A, B} that is local receives h_K ||R||^2_E:
+/// the edge contributes (h_A + h_B) (beta k^2 / 2)^2 ||J||^2_E to eta_*^2 in total. On a hanging
+/// face the coarse cell B receives this for each of its two halves, with its own flux evaluated
+/// on that half.
+void addEdgeJump(const FaceContext& ctx, const FaceCell& A, const FaceCell& B) {
+  if (A.local < 0 && B.local < 0) return;
+  const CellPayload& a = *A.data;
+  const CellPayload& b = *B.data;
+  const double* P0 = a.X[p4est_face_corners[A.face][0]];
+  const double* P1 = a.X[p4est_face_corners[A.face][1]];
+  const double len = std::hypot(P1[0] - P0[0], P1[1] - P0[1]);
+  double n[2];
+  outwardNormal(a, A.face, n);
+  const double b0 = faceParameter(b, B.face, P0), b1 = faceParameter(b, B.face, P1);
+  double integral = 0;
+  for (int g = 0; g < 3; ++g) {
+    const double jump =
+        ctx.kappa * (normalDerivative(a, A.face, kG3[g], n) - normalDerivative(b, B.face, b0 + kG3[g] * (b1 - b0), n));
+    integral += kW3[g] * jump * jump;
+  }
+  const double rSquared = ctx.halfBk2 * ctx.halfBk2 * integral * len;  // ||R||^2_E
+  if (A.local >= 0) (*ctx.edgeTerm)[A.local] += cellDiameter(a.X) * rSquared;
+  if (B.local >= 0) (*ctx.edgeTerm)[B.local] += cellDiameter(b.X) * rSquared;
+}
+
+void faceCallback(p4est_iter_face_info_t* info, void* user) {
+  const FaceContext& ctx = *static_cast<const FaceContext*>(user);
+  if (info->sides.elem_count != 2) return;  // domain boundary: from Q1Mesh::boundaryEdges()
+  const auto* s0 = static_cast<const p4est_iter_face_side_t*>(sc_array_index(&info->sides, 0));
+  const auto* s1 = static_cast<const p4est_iter_face_side_t*>(sc_array_index(&info->sides, 1));
+  p4est_t* p4est = info->p4est;
+  if (!s0->is_hanging && !s1->is_hanging) {
+    addEdgeJump(ctx, faceCell(ctx, p4est, s0->treeid, s0->face, s0->is.full.is_ghost, s0->is.full.quadid),
+                faceCell(ctx, p4est, s1->treeid, s1->face, s1->is.full.is_ghost, s1->is.full.quadid));
+    return;
+  }
+  // 2:1 face: one side has two half-size cells, the other one full cell (in 2D never both hanging).
+  const auto* fine = s0->is_hanging ? s0 : s1;
+  const auto* coarse = s0->is_hanging ? s1 : s0;
+  SIGNORINI_ASSERT(!coarse->is_hanging, "both sides of a face are hanging");
+  const FaceCell big =
+      faceCell(ctx, p4est, coarse->treeid, coarse->face, coarse->is.full.is_ghost, coarse->is.full.quadid);
+  for (int i = 0; i < 2; ++i) {
+    if (fine->is.hanging.quadid[i] < 0) continue;  // not in the ghost layer: touches no local cell here
+    const FaceCell small =
+        faceCell(ctx, p4est, fine->treeid, fine->face, fine->is.hanging.is_ghost[i], fine->is.hanging.quadid[i]);
+    addEdgeJump(ctx, small, big);
+  }
+}
+
+/// int_0^1 max(d(tau), 0) dtau for a function d on [0, 1] (the edge parameter): four pieces, each
+/// split at a sign change of d (regula falsi, then Illinois steps: exact in one step for linear d),
+/// 3-point Gauss on every part. Exact when d is linear (g linear along the edge).
+template <class F>
+double positivePartIntegral(const F& d) {
+  constexpr int pieces = 4;
+  auto gauss = [&](double a, double b) {
+    double s = 0;
+    for (int g = 0; g < 3; ++g) s += kW3[g] * std::max(d(a + kG3[g] * (b - a)), 0.0);
+    return (b - a) * s;
+  };
+  double total = 0;
+  for (int p = 0; p < pieces; ++p) {
+    double a = static_cast<double>(p) / pieces, b = static_cast<double>(p + 1) / pieces;
+    double da = d(a), db = d(b);
+    if ((da > 0 && db < 0) || (da < 0 && db > 0)) {
+      const double a0 = a, b0 = b;
+      const bool positiveLeft = da > 0;
+      double root = a - da * (b - a) / (db - da);
+      for (int it = 0, side = 0; it < 100; ++it) {
+        const double dr = d(root);
+        if (dr == 0.0 || b - a < 1e-15) break;
+        if ((dr > 0) == (da > 0)) {
+          a = root, da = dr;
+          if (side == -1) db *= 0.5;
+          side = -1;
+        } else {
+          b = root, db = dr;
+          if (side == 1) da *= 0.5;
+          side = 1;
+        }
+        const double next = a - da * (b - a) / (db - da);
+        if (std::abs(next - root) <= 1e-15) {
+          root = next;
+          break;
+        }
+        root = next;
+      }
+      total += positiveLeft ? gauss(a0, root) : gauss(root, b0);
+    } else {
+      total += gauss(a, b);  // one sign at the ends; interior bumps are caught by the Gauss points
+    }
+  }
+  return total;
+}
+
+}  // namespace
+
+core::ParameterList ResidualEstimator::getValidParameters() {
+  core::ParameterList p("Estimator");
+  core::addBool(p, "Compute S1", true,
+                "Evaluate s1 = ||(g - u_h)_+||_{1/2,Gamma_C} through the harmonic continuation of the nodal "
+                "positive part (one extra linear solve in steps where it is non-zero); false sets s1 = 0");
+  return p;
+}
+
+ResidualEstimator::ResidualEstimator(const core::ParameterList& params) : params_(params) {
+  core::validateDeck(params_, getValidParameters(), "Estimator");
+}
+
+EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
+  const mesh::Q1Mesh& mesh = in.mesh;
+  const fem::ProblemData& problem = in.problem;
+  const LO nc = mesh.numLocalCells();
+  SIGNORINI_ASSERT(in.forest.numLocalCells() == nc, "the forest and the Q1 mesh do not match");
+  SIGNORINI_ASSERT(&in.assembler.mesh() == &mesh, "the assembler belongs to another mesh");
+  const double bk2 = in.beta * in.timeStep * in.timeStep;
+  const double rho = problem.density, kappa = problem.stiffness, t = in.time;
+  const auto comm = mesh.comm();
+
+  Vector uOv(mesh.overlapMap()), pOv(mesh.overlapMap());
+  in.assembler.toOverlap(in.u, uOv);
+  in.assembler.toOverlap(in.predictor, pOv);
+
+  // --- Cell residuals (Kokkos): vol(e) = h_K^2 ||r||_K^2 with
+  //     r = beta k^2 f + rho (predictor - u_h) + beta k^2 kappa Laplace(u_h), 3x3 Gauss points.
+  Kokkos::View<double*, DeviceType> vol("estimatorVolume", nc);
+  {
+    Kokkos::View<double* [9], DeviceType> fq("estimatorF", nc);
+    {
+      auto h = Kokkos::create_mirror_view(fq);
+      const auto& X = mesh.cornerCoordsHost;
+      const bool constant = problem.bodyForce.isConstant();
+      const double fc = constant ? problem.bodyForce(0, 0, t) : 0.0;
+      for (LO e = 0; e < nc; ++e)
+        for (int q = 0; q < 9; ++q) {
+          if (constant) {
+            h(e, q) = fc;
+            continue;
+          }
+          double N[4], ds[4], dr[4];
+          fem::q1Shape(kG3[q % 3], kG3[q / 3], N, ds, dr);
+          double x = 0, y = 0;
+          for (int c = 0; c < 4; ++c) x += N[c] * X(e, c, 0), y += N[c] * X(e, c, 1);
+          h(e, q) = problem.bodyForce(x, y, t);
+        }
+      Kokkos::deep_copy(fq, h);
+    }
+    Kokkos::View<double[9][3], DeviceType> rule("estimatorRule");  // s, r, weight
+    {
+      auto h = Kokkos::create_mirror_view(rule);
+      for (int q = 0; q < 9; ++q) h(q, 0) = kG3[q % 3], h(q, 1) = kG3[q / 3], h(q, 2) = kW3[q % 3] * kW3[q / 3];
+      Kokkos::deep_copy(rule, h);
+    }
+    auto uv = uOv.getLocalViewDevice(Tpetra::Access::ReadOnly);
+    auto pv = pOv.getLocalViewDevice(Tpetra::Access::ReadOnly);
+    const auto X = mesh.cornerCoords;
+    const auto dofs = mesh.cornerDofs;
+    const auto wts = mesh.cornerWeights;
+    Kokkos::parallel_for(
+        "signorini::estimator::cellResidual", Kokkos::RangePolicy<ExecSpace>(0, nc), KOKKOS_LAMBDA(const LO e) {
+          double Xe[4][2], ue[4], pe[4];
+          for (int c = 0; c < 4; ++c) {
+            Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
+            ue[c] = 0, pe[c] = 0;
+            for (int k = 0; k < 2; ++k) {
+              const LO d = dofs(e, c, k);
+              if (d < 0) continue;
+              ue[c] += wts(e, c, k) * uv(d, 0);
+              pe[c] += wts(e, c, k) * pv(d, 0);
+            }
+          }
+          double sum = 0;
+          for (int q = 0; q < 9; ++q) {
+            double N[4], gx[4], gy[4];
+            const double s = rule(q, 0), r = rule(q, 1);
+            const double det = fem::q1Gradients(Xe, s, r, N, gx, gy);
+            double diff = 0;
+            for (int c = 0; c < 4; ++c) diff += N[c] * (pe[c] - ue[c]);
+            const double res = bk2 * fq(e, q) + rho * diff + bk2 * kappa * q1Laplacian(Xe, ue, s, r);
+            sum += rule(q, 2) * det * res * res;
+          }
+          const double h = cellDiameter(Xe);
+          vol(e) = h * h * sum;
+        });
+  }
+  auto volHost = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), vol);
+
+  auto uh = uOv.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::vector<CellPayload> local(static_cast<size_t>(nc));
+  for (LO e = 0; e < nc; ++e)
+    for (int c = 0; c < 4; ++c) {
+      local[e].X[c][0] = mesh.cornerCoordsHost(e, c, 0);
+      local[e].X[c][1] = mesh.cornerCoordsHost(e, c, 1);
+      local[e].u[c] = 0;
+      for (int k = 0; k < 2; ++k)
+        if (mesh.cornerDofsHost(e, c, k) >= 0)
+          local[e].u[c] += mesh.cornerWeightsHost(e, c, k) * uh(mesh.cornerDofsHost(e, c, k), 0);
+    }
+
+  // --- Interior edges (host): flux jumps over every face with a local cell on at least one side,
+  //     the neighbours on other ranks taken from p4est's face ghost layer.
+  std::vector<double> edgeTerm(static_cast<size_t>(nc), 0.0);
+  {
+    p4est_t* p4est = in.forest.p4est();
+    p4est_ghost_t* ghost = p4est_ghost_new(p4est, P4EST_CONNECT_FACE);
+    std::vector<CellPayload> ghosts(ghost->ghosts.elem_count);
+    std::vector<void*> mirrors(ghost->mirrors.elem_count);
+    for (size_t m = 0; m < mirrors.size(); ++m) {
+      const auto* q = p4est_quadrant_array_index(&ghost->mirrors, m);
+      mirrors[m] = &local[q->p.piggy3.local_num];
+    }
+    p4est_ghost_exchange_custom(p4est, ghost, sizeof(CellPayload), mirrors.data(), ghosts.data());
+    FaceContext ctx{&local, &ghosts, &edgeTerm, kappa, 0.5 * bk2};
+    p4est_iterate(p4est, ghost, &ctx, nullptr, faceCallback, nullptr);
+    p4est_ghost_destroy(ghost);
+  }
+
+  // --- Boundary edges: R = beta k^2 kappa du_h/dn - beta k^2 q [Neumann] + lambda_j [contact],
+  //     i.e. -beta k^2 (q - kappa du_h/dn) on Gamma_N, lambda_j + beta k^2 kappa du_h/dn on Gamma_C,
+  //     beta k^2 kappa du_h/dn on the homogeneous Neumann rest, nothing on Gamma_D. The whole
+  //     h_K ||R||^2_E goes to the edge's (only) cell. Also s0: sum_j lambda_j int_{E_j} (g - u_h)_+ ds,
+  //     each rank over its own contact edges; each edge's |share| goes to its cell.
+  const auto& bedges = mesh.boundaryEdges();
+  std::vector<double> s0Share(static_cast<size_t>(nc), 0.0);
+  double s0Local = 0;
+  const std::vector<int>* edgeSegment = in.coupling ? &in.coupling->localEdgeSegment() : nullptr;
+  if (edgeSegment)
+    SIGNORINI_ASSERT(edgeSegment->size() == bedges.size(), "the contact coupling belongs to another mesh");
+  for (size_t i = 0; i < bedges.size(); ++i) {
+    const auto& be = bedges[i];
+    if (be.segments & problem.dirichletMask) continue;
+    const int seg = edgeSegment ? (*edgeSegment)[i] : -1;
+    const bool neumann = (be.segments & problem.neumannMask) != 0;
+    if (seg >= 0) SIGNORINI_ASSERT(seg < static_cast<int>(in.lambda.size()), "lambda has fewer entries than segments");
+    const double lambda = seg >= 0 ? in.lambda[seg] : 0.0;
+    const CellPayload& c = local[be.cell];
+    double n[2];
+    outwardNormal(c, be.face, n);
+    const double len = be.length();
+    double integral = 0;
+    for (int g = 0; g < 3; ++g) {
+      double R = bk2 * kappa * normalDerivative(c, be.face, kG3[g], n) + lambda;
+      if (neumann) {
+        const double x = be.x[0][0] + kG3[g] * (be.x[1][0] - be.x[0][0]);
+        const double y = be.x[0][1] + kG3[g] * (be.x[1][1] - be.x[0][1]);
+        R -= bk2 * problem.neumannData(x, y, t);
+      }
+      integral += kW3[g] * R * R;
+    }
+    edgeTerm[be.cell] += cellDiameter(c.X) * integral * len;
+
+    if (seg >= 0 && lambda != 0.0) {
+      const double u0 = uh(be.node[0], 0), u1 = uh(be.node[1], 0);
+      auto gap = [&](double tau) {  // g - u_h along the edge (u_h linear between its end nodes)
+        const double x = be.x[0][0] + tau * (be.x[1][0] - be.x[0][0]);
+        const double y = be.x[0][1] + tau * (be.x[1][1] - be.x[0][1]);
+        return problem.obstacle(x, y, t) - ((1 - tau) * u0 + tau * u1);
+      };
+      const double contribution = lambda * len * positivePartIntegral(gap);
+      s0Local += contribution;
+      s0Share[be.cell] += std::abs(contribution);
+    }
+  }
+
+  EstimatorResult res;
+  res.cellIndicator.resize(static_cast<size_t>(nc));
+  double etaLocal = 0;
+  for (LO e = 0; e < nc; ++e) {
+    const double etaK2 = volHost(e) + edgeTerm[e];
+    etaLocal += etaK2;
+    res.cellIndicator[e] = etaK2 + s0Share[e];
+  }
+  double local2[2] = {etaLocal, s0Local}, global2[2] = {0, 0};
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 2, local2, global2);
+  res.etaStar = std::sqrt(std::max(global2[0], 0.0));
+  res.s0 = std::sqrt(std::abs(global2[1]));
+
+  // --- s1: the harmonic continuation d of the nodal values of (g - u_h)_+ on Gamma_C, i.e. the
+  //     minimiser of ||v||_1^2 = int |grad v|^2 + v^2 with v = 0 on Gamma_D (first) and v = (g - u_h)_+
+  //     at the other contact nodes; s1 = ||d||_1.
+  if (in.coupling && params_.get<bool>("Compute S1")) {
+    const auto owned = mesh.ownedMap();
+    const LO nOwned = static_cast<LO>(owned->getNodeNumElements());
+    const std::vector<char> contact = mesh.nodesOnSegments(problem.contactMask);
+    const std::vector<char>& dirichlet = in.assembler.dirichletFlags();
+    Vector boundary(owned);
+    double maxLocal = 0, maxGlobal = 0;
+    {
+      auto uo = in.u.getLocalViewHost(Tpetra::Access::ReadOnly);
+      auto bh = boundary.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (LO i = 0; i < nOwned; ++i) {  // owned nodes come first in the overlap numbering
+        bh(i, 0) = 0.0;
+        if (!contact[i] || dirichlet[i]) continue;
+        const auto& x = mesh.nodeCoords()[i];
+        bh(i, 0) = std::max(problem.obstacle(x[0], x[1], t) - uo(i, 0), 0.0);
+        maxLocal = std::max(maxLocal, bh(i, 0));
+      }
+    }
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, maxLocal, Teuchos::outArg(maxGlobal));
+    if (maxGlobal > 0) {
+      SIGNORINI_ASSERT(static_cast<bool>(in.solveSPD), "s1 needs EstimatorInput::solveSPD");
+      std::vector<char> prescribed(dirichlet.size());
+      for (size_t i = 0; i < prescribed.size(); ++i) prescribed[i] = (dirichlet[i] || contact[i]) ? 1 : 0;
+      // K + M with rows and columns of Gamma_D eliminated: v^T A v is the full H1 norm for v = 0 on Gamma_D.
+      const RCP<const CrsMatrix> full = in.assembler.assembleOperator(1.0, 1.0, 1.0, 1.0);
+      fem::Q1Assembler reduced(mesh, prescribed);
+      const RCP<const CrsMatrix> A = reduced.assembleOperator(1.0, 1.0, 1.0, 1.0);
+      // Lifting: b = -A_full v_b on the free nodes, b = v_b on the prescribed ones (identity rows).
+      Vector b(owned), d(owned), Ad(owned);
+      full->apply(boundary, b);
+      {
+        auto bh = b.getLocalViewHost(Tpetra::Access::ReadWrite);
+        auto vh = boundary.getLocalViewHost(Tpetra::Access::ReadOnly);
+        for (LO i = 0; i < nOwned; ++i) bh(i, 0) = prescribed[i] ? vh(i, 0) : -bh(i, 0);
+      }
+      d.assign(boundary);
+      in.solveSPD(A, b, d);
+      {
+        auto dh = d.getLocalViewHost(Tpetra::Access::ReadWrite);
+        auto vh = boundary.getLocalViewHost(Tpetra::Access::ReadOnly);
+        for (LO i = 0; i < nOwned; ++i)
+          if (prescribed[i]) dh(i, 0) = vh(i, 0);
+      }
+      full->apply(d, Ad);
+      res.s1 = std::sqrt(std::max(d.dot(Ad), 0.0));
+    }
+  }
+  res.eta = res.etaStar + res.s0 + res.s1;
+  return res;
+}
+
+}  // namespace signorini::estimate

@@ -1,0 +1,660 @@
+// Facts about the residual estimator of paper Sec. 4 / DESIGN 1.3:
+//  - it vanishes for a discrete solution that satisfies the step equations exactly (linear
+//    fields, consistent Neumann data and multipliers), also with hanging nodes and on general
+//    quadrilaterals;
+//  - a kink gives jump indicators only next to the kink, with the exact value
+//    h_K (beta k^2 kappa)^2 |dK on the kink|;
+//  - eta_* decreases like h under uniform refinement of a smooth problem;
+//  - the Laplacian of a bilinear field on non-rectangular cells matches hand computations;
+//  - s0 matches a hand-integrated complementarity term, s1 the exact H1 norm of the discrete
+//    harmonic continuation (a 1D problem), is linear in the amplitude and vanishes without penetration;
+//  - 1, 2 and 3 ranks give the same etaStar, s0, s1 and cell indicators as one rank.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include <unistd.h>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "ContactCoupling.hpp"
+#include "Error.hpp"
+#include "ExodusMesh.hpp"
+#include "MpiComm.hpp"
+#include "ProblemData.hpp"
+#include "Q1Assembler.hpp"
+#include "ResidualEstimator.hpp"
+
+using namespace signorini;
+
+namespace {
+
+/// Jacobi-preconditioned CG to a tight relative residual (the estimator's s1 solve).
+void solveCG(const RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
+  const auto map = A->getRowMap();
+  Vector d(map), r(map), z(map), p(map), Ap(map);
+  A->getLocalDiagCopy(d);
+  d.reciprocal(d);
+  A->apply(x, r);
+  r.update(1.0, b, -1.0);
+  z.elementWiseMultiply(1.0, d, r, 0.0);
+  p.assign(z);
+  double rz = r.dot(z);
+  const double bnorm = std::max(b.norm2(), 1e-300);
+  for (int it = 0; it < 20000 && r.norm2() > 1e-14 * bnorm; ++it) {
+    A->apply(p, Ap);
+    const double alpha = rz / p.dot(Ap);
+    x.update(alpha, p, 1.0);
+    r.update(-alpha, Ap, 1.0);
+    z.elementWiseMultiply(1.0, d, r, 0.0);
+    const double rzNew = r.dot(z);
+    p.update(1.0, z, rzNew / rz);
+    rz = rzNew;
+  }
+}
+
+std::string num(double v) {
+  std::ostringstream os;
+  os.precision(17);
+  os << v;
+  return os.str();
+}
+
+/// One estimator problem: a forest on a coarse mesh (over any communicator), the problem data,
+/// u_h, the predictor and the multipliers.
+struct EstimatorCase {
+  RCP<const Comm> comm;
+  std::shared_ptr<mesh::CoarseMesh> coarse;
+  std::unique_ptr<mesh::BoundarySegments> segments;
+  std::unique_ptr<mesh::Forest> forest;
+  std::unique_ptr<mesh::Q1Mesh> mesh;
+  std::unique_ptr<fem::ProblemData> problem;
+  std::unique_ptr<fem::Q1Assembler> assembler;
+  std::unique_ptr<fem::ContactCoupling> coupling;
+  RCP<Vector> u, pred;
+  std::vector<double> lambda;
+  double beta = 0.25, k = 0.1, time = 0.3;
+
+  EstimatorCase(std::shared_ptr<mesh::CoarseMesh> c, const std::vector<std::pair<std::string, std::string>>& segs,
+                int level, RCP<const Comm> cm = Tpetra::getDefaultComm())
+      : comm(cm), coarse(std::move(c)) {
+    segments = std::make_unique<mesh::BoundarySegments>(segs, *coarse);
+    forest = std::make_unique<mesh::Forest>(coarse, core::rawMpiComm(*comm), level);
+  }
+  /// Refines (once) the cells whose centre satisfies \p where, then balances.
+  void refineWhere(const std::function<bool(double, double)>& where) {
+    forest->refineIf([&](int tree, const p4est_quadrant_t& q) {
+      const double root = P4EST_ROOT_LEN, half = 0.5 * P4EST_QUADRANT_LEN(q.level);
+      const auto p = coarse->mapPoint(tree, (q.x + half) / root, (q.y + half) / root);
+      return where(p[0], p[1]);
+    });
+    forest->balance();
+  }
+  /// Builds the mesh, the problem data (from "Problem" entries) and the operators.
+  void finish(const std::map<std::string, std::string>& problemEntries, double rho = 1.0, double kappa = 1.0) {
+    forest->partition();
+    mesh = std::make_unique<mesh::Q1Mesh>(*forest, *segments, comm);
+    auto p = fem::ProblemData::getValidParameters();
+    p.set("Density", rho);
+    p.set("Stiffness", kappa);
+    for (const auto& [key, value] : problemEntries) p.set(key, value);
+    problem = std::make_unique<fem::ProblemData>(p, *segments);
+    assembler = std::make_unique<fem::Q1Assembler>(*mesh, mesh->nodesOnSegments(problem->dirichletMask));
+    if (problem->hasObstacle) {
+      coupling = std::make_unique<fem::ContactCoupling>(
+          *mesh, problem->contactMask, fem::ContactCoupling::SegmentSize::TwoEdges, assembler->dirichletFlags());
+      lambda.assign(coupling->numSegments(), 0.0);
+    }
+    u = Teuchos::rcp(new Vector(mesh->ownedMap()));
+    pred = Teuchos::rcp(new Vector(mesh->ownedMap()));
+  }
+  /// Nodal interpolant on the owned nodes.
+  void interpolate(const std::function<double(double, double)>& f, Vector& v) const {
+    auto h = v.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (size_t i = 0; i < h.extent(0); ++i) h(i, 0) = f(mesh->nodeCoords()[i][0], mesh->nodeCoords()[i][1]);
+  }
+  estimate::EstimatorResult run(bool computeS1 = true) const {
+    auto params = estimate::ResidualEstimator::getValidParameters();
+    params.set("Compute S1", computeS1);
+    estimate::ResidualEstimator est(params);
+    estimate::EstimatorInput in{*forest, *mesh, *assembler, *problem, coupling.get(), time, k, beta, *u, *pred, lambda,
+                                solveCG};
+    return est.estimate(in);
+  }
+  double bk2() const { return beta * k * k; }
+  /// Sum of the cell indicators over all ranks.
+  double indicatorSum(const estimate::EstimatorResult& r) const {
+    double local = 0, global = 0;
+    for (double v : r.cellIndicator) local += v;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+    return global;
+  }
+};
+
+const std::vector<std::pair<std::string, std::string>> kSides = {
+    {"left", "left"}, {"right", "right"}, {"bottom", "bottom"}, {"top", "top"}};
+
+/// A coarse mesh of general quadrilaterals from an Exodus file written here (rank 0) and read by
+/// every rank; one side set "boundary" holds all boundary sides.
+std::shared_ptr<mesh::CoarseMesh> exodusCoarseMesh(const std::vector<double>& x, const std::vector<double>& y,
+                                                   const std::vector<std::array<int, 4>>& quads, const std::string& tag,
+                                                   const RCP<const Comm>& comm = Tpetra::getDefaultComm()) {
+  io::QuadMesh m;
+  m.x = x;
+  m.y = y;
+  m.quads = quads;
+  std::map<std::pair<int, int>, int> uses;
+  for (const auto& q : m.quads)
+    for (int s = 0; s < 4; ++s) ++uses[{std::min(q[s], q[(s + 1) % 4]), std::max(q[s], q[(s + 1) % 4])}];
+  for (int e = 0; e < static_cast<int>(m.quads.size()); ++e)
+    for (int s = 0; s < 4; ++s) {
+      const auto& q = m.quads[e];
+      if (uses[{std::min(q[s], q[(s + 1) % 4]), std::max(q[s], q[(s + 1) % 4])}] == 1)
+        m.sideSets["boundary"].push_back({e, s});
+    }
+  long pid = static_cast<long>(::getpid());
+  Teuchos::broadcast(*comm, 0, 1, &pid);
+  const std::string base =
+      (std::filesystem::path(::testing::TempDir()) / ("signorini_estimate_" + tag + "_" + std::to_string(pid)))
+          .string();
+  if (comm->getRank() == 0) {
+    io::ExodusSeriesWriter w(base, {}, {}, "boundary", {});
+    w.write(0, m, 0.0, {}, {}, {});
+    w.close();
+  }
+  Teuchos::barrier(*comm);
+  auto params = mesh::CoarseMesh::getValidParameters();
+  params.set("Type", std::string("exodus"));
+  params.set("File", base + ".e");
+  auto coarse = mesh::CoarseMesh::create(params);
+  Teuchos::barrier(*comm);
+  if (comm->getRank() == 0) std::filesystem::remove(base + ".e");
+  return coarse;
+}
+
+/// The unit square as 2 x 2 distorted quadrilaterals (interior vertex and side midpoints moved);
+/// the second and fourth cells list their vertices from another corner, so that neighbouring
+/// trees have differently oriented reference frames.
+std::shared_ptr<mesh::CoarseMesh> distortedSquare(const RCP<const Comm>& comm = Tpetra::getDefaultComm()) {
+  std::vector<double> x = {0, 0.4, 1, 0, 0.6, 1, 0, 0.55, 1};
+  std::vector<double> y = {0, 0, 0, 0.45, 0.42, 0.6, 1, 1, 1};
+  std::vector<std::array<int, 4>> quads;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const int v = 3 * j + i;
+      if (i == 1 && j == 0)
+        quads.push_back({v + 1, v + 4, v + 3, v});  // counter-clockwise from another corner
+      else if (i == 1 && j == 1)
+        quads.push_back({v + 4, v + 3, v, v + 1});
+      else
+        quads.push_back({v, v + 1, v + 4, v + 3});
+    }
+  return exodusCoarseMesh(x, y, quads, "distorted", comm);
+}
+const std::vector<std::pair<std::string, std::string>> kDistortedSides = {{"left", "boundary, x < 0.001"},
+                                                                          {"right", "boundary, x > 0.999"},
+                                                                          {"bottom", "boundary, y < 0.001"},
+                                                                          {"top", "boundary, y > 0.999"}};
+
+/// The unit square as 2 x 2 squares from an Exodus file; the right-hand cells list their vertices
+/// from another corner (neighbouring trees with differently oriented reference frames).
+std::shared_ptr<mesh::CoarseMesh> rotatedSquares() {
+  std::vector<double> x = {0, 0.5, 1, 0, 0.5, 1, 0, 0.5, 1};
+  std::vector<double> y = {0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1};
+  std::vector<std::array<int, 4>> quads;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      const int v = 3 * j + i;
+      if (i == 1 && j == 0)
+        quads.push_back({v + 1, v + 4, v + 3, v});
+      else if (i == 1 && j == 1)
+        quads.push_back({v + 4, v + 3, v, v + 1});
+      else
+        quads.push_back({v, v + 1, v + 4, v + 3});
+    }
+  return exodusCoarseMesh(x, y, quads, "rotated");
+}
+
+// ---------------------------------------------------------------------------------------------
+// 1. A discrete solution that satisfies the step equations exactly has eta = 0.
+
+enum class CoarseKind { Rectangle, RotatedSquares, Distorted };
+
+struct ExactCase {
+  const char* name;
+  CoarseKind coarse;
+  bool hanging, contact;
+  double d;  ///< u = a + b x + c y + d x y (d != 0 only on rectangular cells, where x y is in the space)
+};
+
+std::unique_ptr<EstimatorCase> exactCaseMesh(const ExactCase& c) {
+  std::shared_ptr<mesh::CoarseMesh> coarse = c.coarse == CoarseKind::Rectangle
+                                                 ? mesh::CoarseMesh::rectangle(0, 1, 0, 1, 2, 2)
+                                             : c.coarse == CoarseKind::RotatedSquares ? rotatedSquares()
+                                                                                      : distortedSquare();
+  auto s = std::make_unique<EstimatorCase>(coarse, c.coarse == CoarseKind::Rectangle ? kSides : kDistortedSides, 2);
+  if (c.hanging)
+    for (int pass = 0; pass < 2; ++pass) s->refineWhere([](double x, double y) { return x < 0.5 && y < 0.5; });
+  return s;
+}
+
+class ExactSolutionTest : public ::testing::TestWithParam<ExactCase> {};
+
+TEST_P(ExactSolutionTest, FieldInTheSpaceWithConsistentDataHasZeroEstimate) {
+  const auto& c = GetParam();
+  auto s = exactCaseMesh(c);
+  const double a = 0.7, b = 3.0, cc = -2.0, d = c.d, kappa = 2.0, rho = 3.0;
+  // q = kappa grad u . n on every side (n = -x, +x, -y, +y), grad u = (b + d y, c + d x).
+  const std::string ux = "(" + num(b) + " + " + num(d) + "*y)", uy = "(" + num(cc) + " + " + num(d) + "*x)";
+  const std::string q =
+      num(kappa) + " * (x < 0.001 ? -" + ux + " : (x > 0.999 ? " + ux + " : (y < 0.001 ? -" + uy + " : " + uy + ")))";
+  std::map<std::string, std::string> entries = {{"Body Force", "0"}, {"Neumann Data", q}};
+  if (c.contact) {
+    entries["Neumann Segments"] = "left, bottom, top";
+    entries["Contact Segments"] = "right";
+    entries["Obstacle"] = "-10 + 0*x";  // far below u_h: no positive part
+  } else {
+    entries["Neumann Segments"] = "left, right, bottom, top";
+  }
+  s->finish(entries, rho, kappa);
+  auto field = [&](double x, double y) { return a + b * x + cc * y + d * x * y; };
+  s->interpolate(field, *s->u);
+  s->interpolate(field, *s->pred);
+  // On Gamma_C (x = 1, d = 0), kappa du/dn = -lambda_phys: the scaled multiplier is -beta k^2 kappa b.
+  for (auto& l : s->lambda) l = -s->bk2() * kappa * b;
+  const auto r = s->run();
+  const double scale = s->bk2() * kappa * (std::abs(b) + std::abs(cc));  // one flux term
+  EXPECT_LT(r.etaStar, 1e-11 * scale);
+  EXPECT_EQ(r.s0, 0.0);
+  EXPECT_EQ(r.s1, 0.0);
+  EXPECT_LT(r.eta, 1e-11 * scale);
+  ASSERT_EQ(static_cast<LO>(r.cellIndicator.size()), s->mesh->numLocalCells());
+  for (double v : r.cellIndicator) EXPECT_LT(v, 1e-22 * scale * scale);
+
+  // Control: the same field with a wrong Neumann datum is detected (R = beta k^2 kappa du/dn on the right side).
+  if (!c.contact) {
+    entries["Neumann Segments"] = "left, bottom, top";
+    auto w = exactCaseMesh(c);
+    w->finish(entries, rho, kappa);
+    w->interpolate(field, *w->u);
+    w->interpolate(field, *w->pred);
+    EXPECT_GT(w->run().etaStar, 0.1 * scale);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Meshes, ExactSolutionTest,
+    ::testing::Values(ExactCase{"rectangles", CoarseKind::Rectangle, false, false, 0.0},
+                      ExactCase{"rectanglesHanging", CoarseKind::Rectangle, true, false, 0.0},
+                      ExactCase{"rectanglesHangingContact", CoarseKind::Rectangle, true, true, 0.0},
+                      ExactCase{"rectanglesHangingBilinear", CoarseKind::Rectangle, true, false, 1.5},
+                      ExactCase{"rotatedSquaresHangingBilinear", CoarseKind::RotatedSquares, true, false, 1.5},
+                      ExactCase{"distortedHanging", CoarseKind::Distorted, true, false, 0.0},
+                      ExactCase{"distortedHangingContact", CoarseKind::Distorted, true, true, 0.0}),
+    [](const auto& info) { return std::string(info.param.name); });
+
+// ---------------------------------------------------------------------------------------------
+// 2. A kink |x - 0.5| gives jump indicators exactly on the cells next to x = 0.5.
+
+class KinkTest : public ::testing::TestWithParam<bool> {};
+
+TEST_P(KinkTest, JumpIndicatorsAreLocalisedAndExact) {
+  EstimatorCase s(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 3);
+  // Hanging faces on the kink: the cells left of x = 0.5 (y < 0.5) are refined, those right of it not.
+  if (GetParam()) s.refineWhere([](double x, double y) { return x < 0.5 && y < 0.5; });
+  const double kappa = 1.5;
+  s.finish({{"Dirichlet Segments", "left, right, bottom, top"}}, 2.0, kappa);
+  auto kink = [](double x, double) { return std::abs(x - 0.5); };
+  s.interpolate(kink, *s.u);
+  s.interpolate(kink, *s.pred);
+  const auto r = s.run();
+  // [kappa du/dn] = -2 kappa on the line, R = (beta k^2 / 2) 2 kappa: each cell K touching the
+  // line gets h_K (beta k^2 kappa)^2 |dK on the line|, every other cell nothing.
+  const double c2 = std::pow(s.bk2() * kappa, 2);
+  const auto& X = s.mesh->cornerCoordsHost;
+  double expectedLocal = 0;
+  int touching = 0;
+  for (LO e = 0; e < s.mesh->numLocalCells(); ++e) {
+    double onLine = 0;
+    for (int f = 0; f < 4; ++f) {
+      const int a = p4est_face_corners[f][0], b = p4est_face_corners[f][1];
+      if (std::abs(X(e, a, 0) - 0.5) < 1e-12 && std::abs(X(e, b, 0) - 0.5) < 1e-12)
+        onLine += std::abs(X(e, b, 1) - X(e, a, 1));
+    }
+    const double h = std::hypot(X(e, 3, 0) - X(e, 0, 0), X(e, 3, 1) - X(e, 0, 1));
+    const double expected = h * c2 * onLine;
+    expectedLocal += expected;
+    if (onLine > 0) {
+      ++touching;
+      EXPECT_NEAR(r.cellIndicator[e], expected, 1e-12 * expected) << "cell " << e;
+    } else {
+      EXPECT_LT(r.cellIndicator[e], 1e-14 * c2) << "cell " << e << " away from the kink";
+    }
+  }
+  double expectedGlobal = 0;
+  Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_SUM, expectedLocal, Teuchos::outArg(expectedGlobal));
+  EXPECT_NEAR(r.etaStar * r.etaStar, expectedGlobal, 1e-12 * expectedGlobal);
+  if (!GetParam()) {  // uniform 8 x 8: 16 cells of diameter sqrt(2)/8, each with 1/8 of the line
+    EXPECT_NEAR(expectedGlobal, 2 * std::sqrt(2.0) / 8 * c2, 1e-14);
+  }
+  int touchingGlobal = 0;
+  Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_SUM, touching, Teuchos::outArg(touchingGlobal));
+  // hanging: 8 fine + 4 coarse cells left of the line, 8 coarse cells right of it
+  EXPECT_EQ(touchingGlobal, GetParam() ? 20 : 16);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, KinkTest, ::testing::Values(false, true),
+                         [](const auto& info) { return std::string(info.param ? "hanging" : "uniform"); });
+
+// ---------------------------------------------------------------------------------------------
+// 3. Rate 1 in h under uniform refinement of a smooth problem.
+
+TEST(ResidualEstimatorRate, EtaStarDecreasesLikeH) {
+  // u = sin(pi x) e^y, -Laplace u = (pi^2 - 1) u; predictor = u_h + beta k^2 w_h / rho with w = x y and
+  // f = -kappa Laplace u - w, so that u solves rho u - beta k^2 kappa Laplace u = beta k^2 f + rho * predictor.
+  const double kappa = 1.3, rho = 1.0;
+  std::vector<double> eta;
+  for (int level = 3; level <= 5; ++level) {
+    EstimatorCase s(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, level);
+    const std::string f = num(kappa) + " * (pi^2 - 1) * sin(pi*x) * exp(y) - x*y";
+    const std::string q = num(kappa) + " * (y < 0.5 ? -1 : 1) * exp(y) * sin(pi*x)";
+    s.finish({{"Dirichlet Segments", "left, right"},
+              {"Neumann Segments", "bottom, top"},
+              {"Body Force", f},
+              {"Neumann Data", q}},
+             rho, kappa);
+    s.interpolate([](double x, double y) { return std::sin(M_PI * x) * std::exp(y); }, *s.u);
+    const double c = s.bk2() / rho;
+    s.interpolate([&](double x, double y) { return std::sin(M_PI * x) * std::exp(y) + c * x * y; }, *s.pred);
+    eta.push_back(s.run().etaStar);
+  }
+  for (size_t i = 0; i + 1 < eta.size(); ++i) {
+    const double rate = std::log2(eta[i] / eta[i + 1]);
+    EXPECT_GE(rate, 0.8) << "levels " << i + 3 << "/" << i + 4 << ": eta " << eta[i] << " -> " << eta[i + 1];
+    EXPECT_LE(rate, 1.3) << "levels " << i + 3 << "/" << i + 4 << ": eta " << eta[i] << " -> " << eta[i + 1];
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 4. The Laplacian of a bilinear field on non-rectangular cells (r = beta k^2 kappa Laplace u_h with
+//    predictor = u_h, f = 0, Dirichlet all round so that only cell residuals count).
+
+TEST(ResidualEstimatorLaplacian, ParallelogramHasConstantLaplacian) {
+  // x = s + a r, y = r: u = s r = x y - a y^2 lies in the (isoparametric) space of every
+  // sub-cell, Laplace u = -2 a exactly; no jumps (u is smooth).
+  const double a = 0.5, kappa = 0.8;
+  auto coarse = exodusCoarseMesh({0, 1, 1 + a, a}, {0, 0, 1, 1}, {{0, 1, 2, 3}}, "parallelogram");
+  for (int level : {0, 2}) {
+    EstimatorCase s(coarse, {{"wall", "boundary"}}, level);
+    s.finish({{"Dirichlet Segments", "wall"}}, 1.0, kappa);
+    auto u = [&](double x, double y) { return x * y - a * y * y; };
+    s.interpolate(u, *s.u);
+    s.interpolate(u, *s.pred);
+    const auto r = s.run();
+    // eta^2 = sum_K h_K^2 |K| (beta k^2 kappa 2 a)^2; every cell is the parallelogram scaled by 2^-level.
+    const double n = std::pow(2.0, level), h = std::hypot(1 + a, 1) / n, area = 1.0 / (n * n);
+    const double expected = n * n * h * h * area * std::pow(s.bk2() * kappa * 2 * a, 2);
+    EXPECT_NEAR(r.etaStar * r.etaStar, expected, 1e-12 * expected) << "level " << level;
+  }
+}
+
+TEST(ResidualEstimatorLaplacian, TrapezoidMatchesHandComputation) {
+  // Corners (0,0), (2,0), (1,1), (0,1): x = s (2 - r), y = r. u = s r = x y / (2 - y) is in the space;
+  // Laplace u = d^2/dy^2 [x y / (2 - y)] = 4 x / (2 - y)^3 (u_xx = 0).
+  // Per sub-cell [s0,s1] x [r0,r1] of the tree: int_K (Laplace u)^2 dx = int 16 s^2 / (2 - r)^3 ds dr
+  //   = 16 (s1^3 - s0^3) / 3 * [1 / (2 (2 - r)^2)]_{r0}^{r1}   (dx = (2 - r) ds dr).
+  // Level 0: h = sqrt(5), int = 2: eta^2 = 10 (beta k^2 kappa)^2.
+  const double kappa = 1.1;
+  auto coarse = exodusCoarseMesh({0, 2, 1, 0}, {0, 0, 1, 1}, {{0, 1, 2, 3}}, "trapezoid");
+  for (int level : {0, 2}) {
+    EstimatorCase s(coarse, {{"wall", "boundary"}}, level);
+    s.finish({{"Dirichlet Segments", "wall"}}, 1.0, kappa);
+    auto u = [](double x, double y) { return x * y / (2 - y); };
+    s.interpolate(u, *s.u);
+    s.interpolate(u, *s.pred);
+    const auto r = s.run();
+    const double c2 = std::pow(s.bk2() * kappa, 2);
+    const auto& X = s.mesh->cornerCoordsHost;
+    double local = 0, expected = 0;
+    for (LO e = 0; e < s.mesh->numLocalCells(); ++e) {
+      const double r0 = X(e, 0, 1), r1 = X(e, 3, 1);
+      const double s0 = X(e, 0, 0) / (2 - r0), s1 = X(e, 3, 0) / (2 - r1);
+      const double integral =
+          16 * (std::pow(s1, 3) - std::pow(s0, 3)) / 3 * (0.5 / std::pow(2 - r1, 2) - 0.5 / std::pow(2 - r0, 2));
+      const double h = std::max(std::hypot(X(e, 3, 0) - X(e, 0, 0), X(e, 3, 1) - X(e, 0, 1)),
+                                std::hypot(X(e, 2, 0) - X(e, 1, 0), X(e, 2, 1) - X(e, 1, 1)));
+      local += h * h * c2 * integral;
+    }
+    Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(expected));
+    if (level == 0) EXPECT_NEAR(expected, 10 * c2, 1e-14 * c2);
+    // 3x3 Gauss on the rational integrand 1/(2-r)^3: relative error 1e-3 on one cell, 7e-7 on 4 x 4.
+    const double tol = level == 0 ? 2e-3 : 2e-6;
+    EXPECT_NEAR(r.etaStar * r.etaStar, expected, tol * expected) << "level " << level;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 5. s0 and s1.
+
+class ContactTermsTest : public ::testing::TestWithParam<bool> {};
+
+TEST_P(ContactTermsTest, S0MatchesHandIntegral) {
+  // Contact on the left side (x = 0), Dirichlet on the right; u_h = (1 - x) y is y on Gamma_C,
+  // g = 0.3: (g - u_h)_+ = (0.3 - y)_+, which changes sign inside a fine edge.
+  EstimatorCase s(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 4);
+  if (GetParam())
+    for (int pass = 0; pass < 2; ++pass) s.refineWhere([](double x, double y) { return x < 0.5 && y < 0.5; });
+  s.finish({{"Dirichlet Segments", "right"}, {"Contact Segments", "left"}, {"Obstacle", "0.3"}});
+  s.interpolate([](double x, double y) { return (1 - x) * y; }, *s.u);
+  s.interpolate([](double x, double y) { return (1 - x) * y; }, *s.pred);
+  double expected = 0;
+  for (int j = 0; j < s.coupling->numSegments(); ++j) {
+    s.lambda[j] = -0.01 * (1 + 0.1 * j);
+    const double ym = s.coupling->segmentMidpoint()[j][1], len = s.coupling->segmentLength()[j];
+    const double y0 = ym - 0.5 * len, top = std::min(ym + 0.5 * len, 0.3);
+    if (y0 < 0.3) expected += s.lambda[j] * 0.5 * (std::pow(0.3 - y0, 2) - std::pow(0.3 - top, 2));
+  }
+  const auto r = s.run(false);
+  EXPECT_NEAR(r.s0, std::sqrt(std::abs(expected)), 1e-13);
+  EXPECT_GT(r.s0, 0.0);
+  EXPECT_EQ(r.s1, 0.0);  // "Compute S1" = false
+  EXPECT_NEAR(r.eta, r.etaStar + r.s0, 1e-15);
+  // Cell indicators: eta_K^2 plus the s0^2 shares (all lambda_j < 0, so the shares sum to s0^2).
+  EXPECT_NEAR(s.indicatorSum(r), r.etaStar * r.etaStar + r.s0 * r.s0, 1e-12 * (r.etaStar * r.etaStar + r.s0 * r.s0));
+  // Only cells at x = 0 with y < 0.3 carry an s0 share: the others keep eta_K^2 (checked against a run without
+  // multipliers).
+  EstimatorCase z(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 4);
+  if (GetParam())
+    for (int pass = 0; pass < 2; ++pass) z.refineWhere([](double x, double y) { return x < 0.5 && y < 0.5; });
+  z.finish({{"Dirichlet Segments", "right"}, {"Contact Segments", "left"}, {"Obstacle", "0.3"}});
+  z.interpolate([](double x, double y) { return (1 - x) * y; }, *z.u);
+  z.interpolate([](double x, double y) { return (1 - x) * y; }, *z.pred);
+  const auto r0 = z.run(false);
+  EXPECT_EQ(r0.s0, 0.0);
+  ASSERT_EQ(r0.cellIndicator.size(), r.cellIndicator.size());
+  const auto& X = s.mesh->cornerCoordsHost;
+  for (LO e = 0; e < s.mesh->numLocalCells(); ++e) {
+    const bool share = X(e, 0, 0) < 1e-12 && X(e, 0, 1) < 0.3;
+    // with lambda != 0 the contact edges' R changes too; compare only away from Gamma_C
+    if (X(e, 0, 0) > 1e-12) EXPECT_NEAR(r.cellIndicator[e], r0.cellIndicator[e], 1e-15) << "cell " << e;
+    if (share) EXPECT_GT(r.cellIndicator[e], r0.cellIndicator[e]);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, ContactTermsTest, ::testing::Values(false, true),
+                         [](const auto& info) { return std::string(info.param ? "hanging" : "uniform"); });
+
+/// ||v||_1^2 of the 1D P1 minimiser of int v'^2 + v^2 on n uniform elements of [0,1], v(0) = 0, v(1) = c.
+double oneDimensionalEnergy(int n, double c) {
+  const double h = 1.0 / n, diag = 2 / h + 4 * h / 6, off = -1 / h + h / 6;
+  std::vector<double> v(n + 1, 0.0), cp(n + 1, 0.0), dp(n + 1, 0.0);
+  v[n] = c;
+  // Thomas algorithm for the interior nodes 1..n-1.
+  for (int i = 1; i < n; ++i) {
+    const double rhs = i == n - 1 ? -off * c : 0.0;
+    const double m = diag - (i > 1 ? off * cp[i - 1] : 0.0);
+    cp[i] = off / m;
+    dp[i] = (rhs - (i > 1 ? off * dp[i - 1] : 0.0)) / m;
+  }
+  for (int i = n - 1; i >= 1; --i) v[i] = dp[i] - (i < n - 1 ? cp[i] * v[i + 1] : 0.0);
+  double e = 0;
+  for (int i = 0; i < n; ++i) {
+    const double a = v[i], b = v[i + 1];
+    e += ((a - b) * (a - b)) / h + h / 6 * (2 * a * a + 2 * a * b + 2 * b * b);
+  }
+  return e;
+}
+
+TEST(ResidualEstimatorS1, MatchesDiscreteHarmonicContinuation) {
+  // Dirichlet at x = 0, contact at x = 1, u_h = 0, g = c: the positive part is c at every contact node;
+  // the continuation is the 1D minimiser v(x) (x-only functions are in the space and the
+  // problem has natural conditions on top and bottom), ~ c sinh(x) / sinh(1).
+  const int level = 3;
+  auto s1For = [&](double c, bool compute, double* s0 = nullptr) {
+    EstimatorCase s(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, level);
+    s.finish({{"Dirichlet Segments", "left"}, {"Contact Segments", "right"}, {"Obstacle", num(c)}});
+    s.u->putScalar(0.0);
+    s.pred->putScalar(0.0);
+    for (auto& l : s.lambda) l = -0.02;
+    const auto r = s.run(compute);
+    if (s0) *s0 = r.s0;
+    EXPECT_NEAR(r.eta, r.etaStar + r.s0 + r.s1, 1e-15);
+    return r.s1;
+  };
+  const double c = 0.2;
+  double s0 = 0;
+  const double s1 = s1For(c, true, &s0);
+  const double exact = std::sqrt(oneDimensionalEnergy(1 << level, c));
+  EXPECT_NEAR(s1, exact, 1e-9 * exact);
+  EXPECT_NEAR(s1, c * std::sqrt(std::cosh(1.0) / std::sinh(1.0)), 1e-2 * s1);  // the continuous value
+  EXPECT_NEAR(s0, std::sqrt(0.02 * c * 1.0), 1e-14);   // |sum lambda_j c |E_j|| = 0.02 c |Gamma_C|
+  EXPECT_NEAR(s1For(3 * c, true), 3 * s1, 1e-9 * s1);  // linear in the amplitude
+  EXPECT_EQ(s1For(c, false), 0.0);                     // "Compute S1" = false
+  double s0none = 1;
+  EXPECT_EQ(s1For(-1.0, true, &s0none), 0.0);  // no penetration: no positive part
+  EXPECT_EQ(s0none, 0.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// 6. Parallel agreement: the world communicator against rank 0 alone (same mesh and data).
+
+/// A problem with every ingredient: several trees, hanging faces across tree boundaries and
+/// across ranks, Dirichlet, Neumann, homogeneous Neumann and contact edges, an active positive part.
+std::unique_ptr<EstimatorCase> richProblem(bool distorted, std::shared_ptr<mesh::CoarseMesh> coarse,
+                                           RCP<const Comm> comm) {
+  auto s = std::make_unique<EstimatorCase>(coarse, distorted ? kDistortedSides : kSides, 2, comm);
+  const double x1 = distorted ? 0.5 : 1.0;  // a tree boundary of the rectangle 2 x 1
+  for (int pass = 0; pass < 2; ++pass)
+    s->refineWhere([&](double x, double y) { return x > x1 - 0.3 && x < x1 && y < 0.6; });
+  const double xr = distorted ? 0.8 : 1.8;
+  s->refineWhere([&](double x, double y) { return x > xr && y > 0.5; });
+  s->finish({{"Dirichlet Segments", "left"},
+             {"Contact Segments", "right"},
+             {"Neumann Segments", "top"},
+             {"Neumann Data", "0.3*x"},
+             {"Body Force", "1 + x*y"},
+             {"Obstacle", distorted ? "0.15 - 0.2*y" : "0.1 - 0.2*y"}},
+            1.7, 0.9);
+  auto u = [](double x, double y) { return 0.1 * std::sin(2 * x) * std::cos(3 * y) + 0.05 * x * y; };
+  s->interpolate(u, *s->u);
+  s->interpolate([&](double x, double y) { return u(x, y) + 0.01 * std::cos(x + y); }, *s->pred);
+  for (size_t j = 0; j < s->lambda.size(); ++j) s->lambda[j] = -0.001 * (1 + 0.3 * std::sin(double(j)));
+  return s;
+}
+
+/// (centroid x, centroid y, indicator) of every local cell.
+std::vector<std::array<double, 3>> cellTriples(const EstimatorCase& s, const estimate::EstimatorResult& r) {
+  std::vector<std::array<double, 3>> t;
+  const auto& X = s.mesh->cornerCoordsHost;
+  for (LO e = 0; e < s.mesh->numLocalCells(); ++e) {
+    double cx = 0, cy = 0;
+    for (int c = 0; c < 4; ++c) cx += 0.25 * X(e, c, 0), cy += 0.25 * X(e, c, 1);
+    t.push_back({cx, cy, r.cellIndicator[e]});
+  }
+  return t;
+}
+
+class ParallelTest : public ::testing::TestWithParam<bool> {};
+
+TEST_P(ParallelTest, AllRanksAgreeWithOneRank) {
+  const bool distorted = GetParam();
+  const auto world = Tpetra::getDefaultComm();
+  const int rank = world->getRank();
+  // The coarse mesh (connectivity and geometry) does not depend on the communicator.
+  auto coarse = distorted ? distortedSquare(world) : mesh::CoarseMesh::rectangle(0, 2, 0, 1, 2, 1);
+  auto s = richProblem(distorted, coarse, world);
+  const auto r = s->run();
+  EXPECT_GT(r.etaStar, 0.0);
+  EXPECT_GT(r.s0, 0.0);
+  EXPECT_GT(r.s1, 0.0);
+  EXPECT_NEAR(s->indicatorSum(r), r.etaStar * r.etaStar + r.s0 * r.s0, 1e-12 * (r.etaStar * r.etaStar + r.s0 * r.s0));
+  // Gather the cell indicators on rank 0.
+  const auto mine = cellTriples(*s, r);
+  std::vector<double> flat;
+  for (const auto& t : mine) flat.insert(flat.end(), t.begin(), t.end());
+  MPI_Comm raw = core::rawMpiComm(*world);
+  int n = static_cast<int>(flat.size());
+  std::vector<int> counts(world->getSize()), offsets(world->getSize(), 0);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, raw);
+  for (int p = 1; p < world->getSize(); ++p) offsets[p] = offsets[p - 1] + counts[p - 1];
+  std::vector<double> all(rank == 0 ? offsets.back() + counts.back() : 0);
+  MPI_Gatherv(flat.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, 0, raw);
+
+  // Rank 0 alone, on its own communicator.
+  const auto self = world->split(rank == 0 ? 0 : 1, rank);
+  if (rank == 0) {
+    ASSERT_EQ(self->getSize(), 1);
+    auto serial = richProblem(distorted, coarse, self);
+    const auto rs = serial->run();
+    EXPECT_NEAR(r.etaStar, rs.etaStar, 1e-12 * rs.etaStar);
+    EXPECT_NEAR(r.s0, rs.s0, 1e-12 * rs.s0);
+    EXPECT_NEAR(r.s1, rs.s1, 1e-12 * rs.s1);
+    EXPECT_NEAR(r.eta, rs.eta, 1e-12 * rs.eta);
+    auto ref = cellTriples(*serial, rs);
+    std::vector<std::array<double, 3>> got;
+    for (size_t i = 0; i + 2 < all.size(); i += 3) got.push_back({all[i], all[i + 1], all[i + 2]});
+    ASSERT_EQ(got.size(), ref.size());
+    // Centroids are computed from identical coordinates in both runs: sort by them exactly.
+    auto byCentroid = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+      return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]);
+    };
+    std::sort(got.begin(), got.end(), byCentroid);
+    std::sort(ref.begin(), ref.end(), byCentroid);
+    double maxInd = 0;
+    for (const auto& t : ref) maxInd = std::max(maxInd, t[2]);
+    for (size_t i = 0; i < ref.size(); ++i) {
+      ASSERT_EQ(got[i][0], ref[i][0]);
+      ASSERT_EQ(got[i][1], ref[i][1]);
+      EXPECT_NEAR(got[i][2], ref[i][2], 1e-12 * maxInd) << "cell at (" << ref[i][0] << ", " << ref[i][1] << ")";
+    }
+  }
+  Teuchos::barrier(*world);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, ParallelTest, ::testing::Values(false, true),
+                         [](const auto& info) { return std::string(info.param ? "distortedQuads" : "rectangles"); });
+
+// ---------------------------------------------------------------------------------------------
+
+TEST(ResidualEstimatorParameters, ValidListIsDocumentedAndChecked) {
+  const auto valid = estimate::ResidualEstimator::getValidParameters();
+  EXPECT_EQ(valid.name(), "Estimator");
+  ASSERT_TRUE(valid.isParameter("Compute S1"));
+  EXPECT_TRUE(valid.get<bool>("Compute S1"));
+  EXPECT_FALSE(valid.getEntry("Compute S1").docString().empty());
+  core::ParameterList bad("Estimator");
+  bad.set("Compute S2", true);
+  EXPECT_THROW(estimate::ResidualEstimator{bad}, core::UserError);
+  core::ParameterList empty("Estimator");
+  EXPECT_NO_THROW(estimate::ResidualEstimator{empty});  // defaults filled in
+}
+
+}  // namespace

@@ -1,0 +1,157 @@
+#!/usr/bin/python3
+"""Plots of an adaptive run against its uniform comparison, from signorini's CSV and Exodus output.
+
+  tools/plot_results.py --adaptive out/membrane --uniform out/membrane-uniform [--steps 20,60,200,400]
+                        [--h-equals-h out/membrane-Hh] --out out/plots
+
+Writes (PNG): eta_vs_unknowns.png (paper Fig. 6.3), estimator_contributions.png (Fig. 4.1),
+meshes.png (Fig. 6.2, meshes of the final cycle at the chosen steps), multiplier.png (Fig. 3.1, the
+contact multiplier along Gamma_C for H = 2h and, if given, H = h). Uses Debian's python3 with
+numpy, matplotlib and netCDF4.
+"""
+import argparse
+import glob
+import os
+import re
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import netCDF4  # noqa: E402
+import numpy as np  # noqa: E402
+
+
+def read_csv(path):
+    return np.genfromtxt(path, delimiter=",", names=True)
+
+
+def exodus_files(base):
+    files = [base + ".e"] + sorted(glob.glob(base + ".e-s.*"), key=lambda f: int(re.findall(r"(\d+)$", f)[0]))
+    return [f for f in files if os.path.exists(f)]
+
+
+def exodus_frames(base):
+    """Yields (time, file, index) for every output time of a series."""
+    for f in exodus_files(base):
+        with netCDF4.Dataset(f) as d:
+            for i, t in enumerate(d.variables["time_whole"][:]):
+                yield float(t), f, i
+
+
+def names(var):
+    return ["".join(c.decode() for c in row if c) for row in var[:]]
+
+
+def plot_eta(adaptive, uniform, out):
+    plt.figure(figsize=(5, 4))
+    for base, label, style in [(adaptive, "adaptive", "o-"), (uniform, "uniform", "s--")]:
+        if base and os.path.exists(base + ".cycles.csv"):
+            c = np.atleast_1d(read_csv(base + ".cycles.csv"))
+            plt.loglog(c["total_dofs"], c["eta"], style, label=label)
+    plt.xlabel("total unknowns (sum over time steps)")
+    plt.ylabel(r"estimated error $\eta = \max_n \eta^n$")
+    plt.grid(True, which="both", alpha=0.3)
+    plt.legend()
+    plt.tight_layout()
+    plt.savefig(os.path.join(out, "eta_vs_unknowns.png"), dpi=150)
+    plt.close()
+
+
+def plot_contributions(adaptive, out):
+    s = read_csv(adaptive + ".steps.csv")[1:]
+    plt.figure(figsize=(6, 4))
+    for col, label in [("eta_star", r"$\eta_\star$"), ("s0", "$s_0$"), ("s1", "$s_1$")]:
+        plt.semilogy(s["t"], np.maximum(s[col], 1e-16), label=label)
+    plt.xlabel("t")
+    plt.ylabel("contribution")
+    plt.legend()
+    plt.grid(True, which="both", alpha=0.3)
+    plt.tight_layout()
+    plt.savefig(os.path.join(out, "estimator_contributions.png"), dpi=150)
+    plt.close()
+
+
+def plot_meshes(adaptive, steps, k, out):
+    frames = list(exodus_frames(adaptive))
+    if not frames:
+        return
+    n = len(steps)
+    cols = min(n, 3)
+    rows = (n + cols - 1) // cols
+    fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 4 * rows), squeeze=False)
+    for ax, step in zip(axes.flat, steps):
+        t = step * k
+        time, f, i = min(frames, key=lambda fr: abs(fr[0] - t))
+        with netCDF4.Dataset(f) as d:
+            x, y = d.variables["coordx"][:], d.variables["coordy"][:]
+            conn = d.variables["connect1"][:] - 1
+            for q in conn:
+                xs, ys = x[np.append(q, q[0])], y[np.append(q, q[0])]
+                ax.plot(xs, ys, "k-", lw=0.2)
+        ax.set_aspect("equal")
+        ax.set_title(f"n = {step} (t = {time:.4g}), {len(conn)} cells")
+        ax.set_xticks([])
+        ax.set_yticks([])
+    for ax in list(axes.flat)[n:]:
+        ax.axis("off")
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "meshes.png"), dpi=150)
+    plt.close(fig)
+
+
+def contact_multiplier(base, t):
+    """Multiplier per contact edge at the output time nearest t: (edge midpoints, values)."""
+    frames = list(exodus_frames(base))
+    time, f, i = min(frames, key=lambda fr: abs(fr[0] - t))
+    with netCDF4.Dataset(f) as d:
+        x, y = d.variables["coordx"][:], d.variables["coordy"][:]
+        conn = d.variables["connect1"][:] - 1
+        elems = d.variables["elem_ss1"][:] - 1
+        sides = d.variables["side_ss1"][:] - 1
+        var = names(d.variables["name_sset_var"]).index("lambda") + 1
+        lam = d.variables[f"vals_sset_var{var}ss1"][i, :]
+        mids = []
+        for e, s in zip(elems, sides):
+            a, b = conn[e][s], conn[e][(s + 1) % 4]
+            mids.append((0.5 * (x[a] + x[b]), 0.5 * (y[a] + y[b])))
+    return time, np.array(mids), np.array(lam)
+
+
+def plot_multiplier(bases, t, out):
+    plt.figure(figsize=(6, 4))
+    for base, label in bases:
+        if not base or not exodus_files(base):
+            continue
+        time, mids, lam = contact_multiplier(base, t)
+        coord = mids[:, 1] if np.ptp(mids[:, 1]) > np.ptp(mids[:, 0]) else mids[:, 0]
+        order = np.argsort(coord)
+        plt.step(coord[order], lam[order], where="mid", label=f"{label} (t = {time:.4g})")
+    plt.xlabel("position along the contact boundary")
+    plt.ylabel(r"contact multiplier $\lambda$")
+    plt.legend()
+    plt.tight_layout()
+    plt.savefig(os.path.join(out, "multiplier.png"), dpi=150)
+    plt.close()
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--adaptive", required=True, help="output base of the adaptive run (folder/basename)")
+    ap.add_argument("--uniform", help="output base of the uniform comparison run")
+    ap.add_argument("--h-equals-h", help="output base of a run with Contact/Multiplier Segments = H = h")
+    ap.add_argument("--steps", default="20,60,100,200,300,400", help="steps whose meshes are drawn")
+    ap.add_argument("--time-step", type=float, default=0.0025)
+    ap.add_argument("--multiplier-time", type=float, default=0.5)
+    ap.add_argument("--out", required=True)
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    plot_eta(a.adaptive, a.uniform, a.out)
+    plot_contributions(a.adaptive, a.out)
+    plot_meshes(a.adaptive, [int(s) for s in a.steps.split(",")], a.time_step, a.out)
+    plot_multiplier([(a.adaptive, "H = 2h"), (a.h_equals_h, "H = h")], a.multiplier_time, a.out)
+    print("wrote", ", ".join(sorted(os.listdir(a.out))))
+
+
+if __name__ == "__main__":
+    main()
