@@ -1,6 +1,7 @@
 #include "AdaptiveSimulation.hpp"
 
 #include <chrono>
+#include <iomanip>
 #include <cmath>
 #include <set>
 
@@ -134,7 +135,8 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       cycles_.push_back({l, last.totalDofs, etaMax, wall, cells, bytesGlobal / static_cast<double>(cells)});
       if (cyclesCsv)
         cyclesCsv->row({double(l), double(last.totalDofs), etaMax, wall, double(cells), bytesGlobal / cells});
-      core::rootOut(rank) << "signorini: cycle " << l << ": total unknowns " << last.totalDofs << ", eta " << etaMax
+      core::rootOut(rank) << std::scientific << std::setprecision(4) << "signorini: cycle " << l
+                          << ": total unknowns " << last.totalDofs << ", eta " << etaMax << std::fixed
                           << ", " << wall << " s" << std::endl;
       const double maxDofs = ap.get<double>("Maximum Total Unknowns"), tol = ap.get<double>("Tolerance");
       if ((maxDofs > 0 && last.totalDofs >= maxDofs) || (tol > 0 && etaMax <= tol)) break;

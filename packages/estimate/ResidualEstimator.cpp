@@ -257,6 +257,13 @@ core::ParameterList ResidualEstimator::getValidParameters() {
   core::addBool(p, "Compute S1", true,
                 "Evaluate s1 = ||(g - u_h)_+||_{1/2,Gamma_C} through the harmonic continuation of the nodal "
                 "positive part (one extra linear solve in steps where it is non-zero); false sets s1 = 0");
+  core::addChoice(p, "Scaling", "physical",
+                  "\"step\": eta_* and s0 exactly as written for the step equation c(u, phi) + <lambda_H, phi> = "
+                  "(F_h, phi), whose residuals carry the factor beta k^2 (so eta_* and s0 are 1e-6 and s1 dominates "
+                  "eta); \"physical\": the same terms divided by beta k^2 (eta_*) and sqrt(beta k^2) (s0), i.e. "
+                  "for the equation divided by beta k^2 with the physical multiplier, commensurable with s1 and "
+                  "ordered as in the paper's Fig. 4.1 (s1 smallest)",
+                  {"physical", "step"});
   return p;
 }
 
@@ -481,6 +488,13 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
       full->apply(d, Ad);
       res.s1 = std::sqrt(std::max(d.dot(Ad), 0.0));
     }
+  }
+  if (params_.get<std::string>("Scaling") == "physical") {
+    const double c = in.beta * in.timeStep * in.timeStep;
+    res.etaStar /= c;
+    res.s0 /= std::sqrt(c);
+    for (size_t e = 0; e < res.cellIndicator.size(); ++e)
+      res.cellIndicator[e] = (res.cellIndicator[e] - s0Share[e]) / (c * c) + s0Share[e] / c;
   }
   res.eta = res.etaStar + res.s0 + res.s1;
   return res;

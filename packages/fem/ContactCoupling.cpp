@@ -103,27 +103,59 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
     walk(key(edges_[first][0], edges_[first][1]));
   }
 
+  // Segments follow the local mesh size: consecutive edges of equal length are paired (a run of
+  // odd length ends in a segment of three edges); a lone edge between two size changes joins the
+  // previous segment of its chain (or the next one at the chain's start).
   edgeSegment_.assign(ne, -1);
+  auto edgeLength = [&](int e) { return std::hypot(edges_[e][2] - edges_[e][0], edges_[e][3] - edges_[e][1]); };
   for (const auto& chain : chains) {
     const int n = static_cast<int>(chain.size());
-    int i = 0;
-    while (i < n) {
-      int take = 1;
-      if (size == SegmentSize::TwoEdges) take = (n - i == 3) ? 3 : std::min(2, n - i);
+    std::vector<std::vector<int>> groups;
+    std::vector<char> orphan;
+    for (int i = 0; i < n;) {
+      int j = i + 1;  // [i, j): a run of equal edge lengths
+      while (j < n && std::abs(edgeLength(chain[j]) - edgeLength(chain[i])) <= 1e-8 * edgeLength(chain[i])) ++j;
+      const int run = j - i;
+      if (size == SegmentSize::OneEdge) {
+        for (int k = i; k < j; ++k) groups.push_back({chain[k]}), orphan.push_back(0);
+      } else if (run == 1) {
+        groups.push_back({chain[i]});
+        orphan.push_back(1);
+      } else {
+        for (int k = i; k < j;) {
+          const int take = (j - k == 3) ? 3 : 2;
+          groups.emplace_back(chain.begin() + k, chain.begin() + k + take);
+          orphan.push_back(0);
+          k += take;
+        }
+      }
+      i = j;
+    }
+    std::vector<std::vector<int>> merged;
+    for (size_t g = 0; g < groups.size(); ++g) {
+      if (orphan[g] && groups.size() > 1) {
+        if (!merged.empty()) {
+          merged.back().insert(merged.back().end(), groups[g].begin(), groups[g].end());
+        } else {
+          groups[g + 1].insert(groups[g + 1].begin(), groups[g].begin(), groups[g].end());
+        }
+        continue;
+      }
+      merged.push_back(groups[g]);
+    }
+    for (const auto& group : merged) {
       const int seg = static_cast<int>(length_.size());
       double len = 0, mx = 0, my = 0;
-      for (int k = 0; k < take; ++k) {
-        const auto& e = edges_[chain[i + k]];
-        const double l = std::hypot(e[2] - e[0], e[3] - e[1]);
+      for (int e : group) {
+        const double l = edgeLength(e);
         len += l;
-        mx += l * 0.5 * (e[0] + e[2]);
-        my += l * 0.5 * (e[1] + e[3]);
-        edgeSegment_[chain[i + k]] = seg;
+        mx += l * 0.5 * (edges_[e][0] + edges_[e][2]);
+        my += l * 0.5 * (edges_[e][1] + edges_[e][3]);
+        edgeSegment_[e] = seg;
       }
       length_.push_back(len);
       midpoint_.push_back({mx / len, my / len});
-      edgeCount_.push_back(take);
-      i += take;
+      edgeCount_.push_back(static_cast<int>(group.size()));
     }
   }
 

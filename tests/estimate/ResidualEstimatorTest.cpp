@@ -121,9 +121,11 @@ struct EstimatorCase {
     auto h = v.getLocalViewHost(Tpetra::Access::OverwriteAll);
     for (size_t i = 0; i < h.extent(0); ++i) h(i, 0) = f(mesh->nodeCoords()[i][0], mesh->nodeCoords()[i][1]);
   }
-  estimate::EstimatorResult run(bool computeS1 = true) const {
+  /// The estimator as written for the step equation ("step" scaling) unless told otherwise.
+  estimate::EstimatorResult run(bool computeS1 = true, const std::string& scaling = "step") const {
     auto params = estimate::ResidualEstimator::getValidParameters();
     params.set("Compute S1", computeS1);
+    params.set("Scaling", scaling);
     estimate::ResidualEstimator est(params);
     estimate::EstimatorInput in{*forest, *mesh, *assembler, *problem, coupling.get(), time, k, beta, *u, *pred, lambda,
                                 solveCG};
@@ -643,6 +645,25 @@ INSTANTIATE_TEST_SUITE_P(Meshes, ParallelTest, ::testing::Values(false, true),
                          [](const auto& info) { return std::string(info.param ? "distortedQuads" : "rectangles"); });
 
 // ---------------------------------------------------------------------------------------------
+
+TEST(ResidualEstimatorScaling, PhysicalScalingDividesByBetaKSquared) {
+  // eta_* / (beta k^2), s0 / sqrt(beta k^2), s1 unchanged; indicators rescaled term by term.
+  EstimatorCase s(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 3);
+  s.finish({{"Dirichlet Segments", "right"}, {"Contact Segments", "left"}, {"Obstacle", "0.3"}});
+  s.interpolate([](double x, double y) { return std::sin(x) * y; }, *s.u);
+  s.interpolate([](double x, double y) { return x * y; }, *s.pred);
+  for (int j = 0; j < s.coupling->numSegments(); ++j) s.lambda[j] = -0.01 * (1 + 0.1 * j);
+  const auto step = s.run(true, "step"), physical = s.run(true, "physical");
+  const double c = s.bk2();
+  EXPECT_GT(step.etaStar, 0.0);
+  EXPECT_GT(step.s0, 0.0);
+  EXPECT_NEAR(s.indicatorSum(physical), physical.etaStar * physical.etaStar + physical.s0 * physical.s0,
+              1e-10 * physical.etaStar * physical.etaStar);
+  EXPECT_NEAR(physical.etaStar, step.etaStar / c, 1e-12 * physical.etaStar);
+  EXPECT_NEAR(physical.s0, step.s0 / std::sqrt(c), 1e-12 * std::max(physical.s0, 1e-300));
+  EXPECT_NEAR(physical.s1, step.s1, 1e-12 * std::max(step.s1, 1e-300));
+  EXPECT_NEAR(physical.eta, physical.etaStar + physical.s0 + physical.s1, 1e-12 * physical.eta);
+}
 
 TEST(ResidualEstimatorParameters, ValidListIsDocumentedAndChecked) {
   const auto valid = estimate::ResidualEstimator::getValidParameters();
