@@ -139,7 +139,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--adaptive", required=True, help="output base of the adaptive run (folder/basename)")
     ap.add_argument("--uniform", help="output base of the uniform comparison run")
-    ap.add_argument("--h-equals-h", help="output base of a run with Contact/Multiplier Segments = H = h")
+    ap.add_argument("--two-h", help="output base of a run with H = 2h for the multiplier plot (default: --adaptive)")
+    ap.add_argument("--h-equals-h", help="output base of the same run with Contact/Multiplier Segments = H = h")
     ap.add_argument("--steps", default="20,60,100,200,300,400", help="steps whose meshes are drawn")
     ap.add_argument("--time-step", type=float, default=0.0025)
     ap.add_argument("--multiplier-time", type=float, default=0.5)
@@ -149,7 +150,7 @@ def main():
     plot_eta(a.adaptive, a.uniform, a.out)
     plot_contributions(a.adaptive, a.out)
     plot_meshes(a.adaptive, [int(s) for s in a.steps.split(",")], a.time_step, a.out)
-    plot_multiplier([(a.adaptive, "H = 2h"), (a.h_equals_h, "H = h")], a.multiplier_time, a.out)
+    plot_multiplier([(a.two_h or a.adaptive, "H = 2h"), (a.h_equals_h, "H = h")], a.multiplier_time, a.out)
     print("wrote", ", ".join(sorted(os.listdir(a.out))))
 
 

@@ -70,7 +70,9 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   if (rank == 0)
     cyclesCsv = std::make_unique<io::CsvWriter>(
         base + ".cycles.csv",
-        std::vector<std::string>{"cycle", "total_dofs", "eta", "wall_seconds", "total_cells", "bytes_per_cell"});
+        std::vector<std::string>{"cycle", "total_dofs", "eta", "wall_seconds", "total_cells", "bytes_per_cell",
+                                 "time_remesh_transfer", "time_assembly", "time_preconditioner", "time_contact",
+                                 "time_estimate_mark", "time_output", "time_regularise"});
   std::vector<std::shared_ptr<mesh::Forest>> meshes(nSteps, sim_->initialForest());
   dynamics::RunSummary last;
   try {
@@ -133,20 +135,28 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       MPI_Allreduce(&bytes, &bytesGlobal, 1, MPI_DOUBLE, MPI_SUM, raw);
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       cycles_.push_back({l, last.totalDofs, etaMax, wall, cells, bytesGlobal / static_cast<double>(cells)});
-      if (cyclesCsv)
-        cyclesCsv->row({double(l), double(last.totalDofs), etaMax, wall, double(cells), bytesGlobal / cells});
-      core::rootOut(rank) << std::scientific << std::setprecision(4) << "signorini: cycle " << l
-                          << ": total unknowns " << last.totalDofs << ", eta " << etaMax << std::fixed
-                          << ", " << wall << " s" << std::endl;
+      auto phase = [&](const char* name) {
+        const auto it = last.phaseSeconds.find(name);
+        return it == last.phaseSeconds.end() ? 0.0 : it->second;
+      };
+      const auto tr0 = std::chrono::steady_clock::now();
       const double maxDofs = ap.get<double>("Maximum Total Unknowns"), tol = ap.get<double>("Tolerance");
-      if ((maxDofs > 0 && last.totalDofs >= maxDofs) || (tol > 0 && etaMax <= tol)) break;
-      if (l + 1 < cycles) {
-        // Algorithm 5.3, then the next cycle's meshes.
+      const bool stop = (maxDofs > 0 && last.totalDofs >= maxDofs) || (tol > 0 && etaMax <= tol) || l + 1 == cycles;
+      if (!stop) {  // Algorithm 5.3, then the next cycle's meshes.
         std::vector<mesh::Forest*> seq;
         for (auto& m : next) seq.push_back(m.get());
         mesh::regulariseSequence(seq);
         meshes = next;
       }
+      const double regularise = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr0).count();
+      if (cyclesCsv)
+        cyclesCsv->row({double(l), double(last.totalDofs), etaMax, wall + regularise, double(cells),
+                        bytesGlobal / cells, phase("mesh") + phase("transfer"), phase("assembly"),
+                        phase("preconditioner"), phase("contact"), phase("estimator"), phase("output"), regularise});
+      core::rootOut(rank) << std::scientific << std::setprecision(4) << "signorini: cycle " << l
+                          << ": total unknowns " << last.totalDofs << ", eta " << etaMax << std::fixed
+                          << ", " << wall << " s" << std::endl;
+      if (stop) break;
     }
   } catch (...) {
     if (cyclesCsv) cyclesCsv->abandon();

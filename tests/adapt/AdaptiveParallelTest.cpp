@@ -20,7 +20,7 @@ struct Result {
 
 Result runAdaptive(RCP<const Comm> comm, const std::string& name) {
   core::ParameterList deck;
-  Teuchos::updateParametersFromXmlFile(std::string(SIGNORINI_SOURCE_DIR) + "/inputs/membrane-adaptive.xml",
+  Teuchos::updateParametersFromXmlFile(std::string(SIGNORINI_SOURCE_DIR) + "/inputs/membrane.xml",
                                        Teuchos::outArg(deck));
   // Past first contact (t ~ 0.05), three cycles.
   deck.sublist("Time Integration").set("Final Time", 0.1);
@@ -28,9 +28,9 @@ Result runAdaptive(RCP<const Comm> comm, const std::string& name) {
   deck.sublist("Output").set("Write Exodus", false);
   deck.sublist("Output").set("Basename", name);
   deck.sublist("Output").set("Progress Interval", 1000000);
-  core::validateDeck(deck, adapt::AdaptiveSimulation::getValidParameters(), "membrane-adaptive.xml");
+  core::validateDeck(deck, adapt::AdaptiveSimulation::getValidParameters(), "membrane.xml");
   const std::string dir = std::string(SIGNORINI_BINARY_DIR) + "/tests/output/adaptive-agreement";
-  adapt::AdaptiveSimulation sim(deck, "membrane-adaptive.xml", dir, comm);
+  adapt::AdaptiveSimulation sim(deck, "membrane.xml", dir, comm);
   sim.run();
   comm->barrier();
   return {io::readCsv(dir + "/" + name + ".cycles.csv"), io::readCsv(dir + "/" + name + ".steps.csv")};

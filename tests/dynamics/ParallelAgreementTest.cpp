@@ -17,7 +17,7 @@ namespace {
 
 io::CsvTable runMembrane(RCP<const Comm> comm, const std::string& name) {
   core::ParameterList deck;
-  Teuchos::updateParametersFromXmlFile(std::string(SIGNORINI_SOURCE_DIR) + "/inputs/membrane.xml",
+  Teuchos::updateParametersFromXmlFile(std::string(SIGNORINI_SOURCE_DIR) + "/inputs/membrane-level2.xml",
                                        Teuchos::outArg(deck));
   // Up to t = 0.25: first contact at t ~ 0.05 and the growing contact zone. The impacting nodes
   // chatter (DESIGN 1.6) and differences at the level of the solver tolerance grow by about 10x
@@ -29,9 +29,9 @@ io::CsvTable runMembrane(RCP<const Comm> comm, const std::string& name) {
   deck.sublist("Output").set("Write Exodus", false);
   deck.sublist("Output").set("Basename", name);
   deck.sublist("Output").set("Progress Interval", 1000000);
-  core::validateDeck(deck, dynamics::Simulation::getValidParameters(), "membrane.xml");
+  core::validateDeck(deck, dynamics::Simulation::getValidParameters(), "membrane-level2.xml");
   const std::string dir = std::string(SIGNORINI_BINARY_DIR) + "/tests/output/agreement";
-  dynamics::Simulation sim(deck, "membrane.xml", dir, comm);
+  dynamics::Simulation sim(deck, "membrane-level2.xml", dir, comm);
   sim.run();
   comm->barrier();
   return io::readCsv(dir + "/" + name + ".steps.csv");
