@@ -1,6 +1,8 @@
 #pragma once
 /// \file MpiComm.hpp
 /// The raw MPI communicator behind a Teuchos communicator (p4est and a few collectives need it).
+#include <vector>
+
 #include <mpi.h>
 
 #include "Types.hpp"
@@ -9,5 +11,30 @@ namespace signorini::core {
 
 /// Throws std::logic_error if \p comm is not an MPI communicator.
 MPI_Comm rawMpiComm(const Comm& comm);
+
+/// The MPI datatype of T (int, long long, double, char).
+template <class T>
+MPI_Datatype mpiType();
+template <>
+inline MPI_Datatype mpiType<int>() { return MPI_INT; }
+template <>
+inline MPI_Datatype mpiType<long long>() { return MPI_LONG_LONG; }
+template <>
+inline MPI_Datatype mpiType<double>() { return MPI_DOUBLE; }
+template <>
+inline MPI_Datatype mpiType<char>() { return MPI_CHAR; }
+
+/// Concatenation, in rank order, of every rank's \p mine (variable lengths), on every rank.
+template <class T>
+std::vector<T> allGatherv(MPI_Comm comm, const std::vector<T>& mine) {
+  int n = static_cast<int>(mine.size()), size;
+  MPI_Comm_size(comm, &size);
+  std::vector<int> counts(size), offsets(size, 0);
+  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
+  for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<T> all(offsets.back() + counts.back());
+  MPI_Allgatherv(mine.data(), n, mpiType<T>(), all.data(), counts.data(), offsets.data(), mpiType<T>(), comm);
+  return all;
+}
 
 }  // namespace signorini::core

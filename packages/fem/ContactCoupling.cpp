@@ -19,18 +19,6 @@ namespace {
 
 constexpr double kGauss3Point[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
 
-/// Gathers variable-length double arrays from all ranks, concatenated in rank order.
-std::vector<double> allGather(const Comm& comm, const std::vector<double>& mine) {
-  MPI_Comm c = core::rawMpiComm(comm);
-  int n = static_cast<int>(mine.size()), size;
-  MPI_Comm_size(c, &size);
-  std::vector<int> counts(size), offsets(size, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, c);
-  for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<double> all(offsets.back() + counts.back());
-  MPI_Allgatherv(mine.data(), n, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, c);
-  return all;
-}
 
 }  // namespace
 
@@ -49,7 +37,7 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
   int myCount = static_cast<int>(localIds.size()), myOffset = 0;
   MPI_Exscan(&myCount, &myOffset, 1, MPI_INT, MPI_SUM, core::rawMpiComm(*comm_));
   if (comm_->getRank() == 0) myOffset = 0;
-  const std::vector<double> all = allGather(*comm_, mine);
+  const std::vector<double> all = core::allGatherv(core::rawMpiComm(*comm_), mine);
   const int ne = static_cast<int>(all.size() / 4);
   edges_.resize(ne);
   for (int e = 0; e < ne; ++e) edges_[e] = {all[4 * e], all[4 * e + 1], all[4 * e + 2], all[4 * e + 3]};

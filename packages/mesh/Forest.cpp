@@ -6,6 +6,7 @@
 #include <p4est_extended.h>
 
 #include "Error.hpp"
+#include "MpiComm.hpp"
 #include <sc.h>
 
 namespace signorini::mesh {
@@ -84,12 +85,7 @@ namespace {
 std::set<CellKey> allFlaggedCells(p4est_t* p4est, const std::vector<char>& flags) {
   std::vector<int> mine;
   for (const auto& [t, x, y, l] : flaggedCells(p4est, flags)) mine.insert(mine.end(), {t, x, y, l});
-  int n = static_cast<int>(mine.size());
-  std::vector<int> counts(p4est->mpisize), offsets(p4est->mpisize, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, p4est->mpicomm);
-  for (int r = 1; r < p4est->mpisize; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<int> all(offsets.back() + counts.back());
-  MPI_Allgatherv(mine.data(), n, MPI_INT, all.data(), counts.data(), offsets.data(), MPI_INT, p4est->mpicomm);
+  const std::vector<int> all = core::allGatherv(p4est->mpicomm, mine);
   std::set<CellKey> keys;
   for (size_t i = 0; i + 3 < all.size(); i += 4) keys.insert({all[i], all[i + 1], all[i + 2], all[i + 3]});
   return keys;

@@ -30,20 +30,7 @@ std::vector<double> localPart(const std::vector<double>& all, int rank, int size
   return std::vector<double>(all.begin() + b, all.begin() + e);
 }
 
-struct Marked {
-  std::vector<char> flags;  // global, gathered
-};
-
-std::vector<char> gather(const std::vector<char>& local, MPI_Comm comm) {
-  int n = static_cast<int>(local.size()), size;
-  MPI_Comm_size(comm, &size);
-  std::vector<int> counts(size), offsets(size, 0);
-  MPI_Allgather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, comm);
-  for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
-  std::vector<char> all(offsets.back() + counts.back());
-  MPI_Allgatherv(local.data(), n, MPI_CHAR, all.data(), counts.data(), offsets.data(), MPI_CHAR, comm);
-  return all;
-}
+std::vector<char> gather(const std::vector<char>& local, MPI_Comm comm) { return core::allGatherv(comm, local); }
 
 TEST(Marking, FixedFractionMarksTheLargestFractionOfCells) {
   auto comm = Tpetra::getDefaultComm();
