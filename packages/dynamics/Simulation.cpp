@@ -336,7 +336,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   std::vector<std::string> columns = {"step", "t", "dofs", "active", "qp_iterations", "cg_iterations",
                                       "linear_solves", "linear_iterations", "energy", "newmark_energy",
                                       "contact_force", "max_lambda", "min_gap", "max_complementarity",
-                                      "time_assembly", "time_contact", "time_output", "time_unconstrained"};
+                                      "time_assembly", "time_contact", "time_output", "time_unconstrained",
+                                      "time_remesh", "time_estimate"};
   for (const auto& p : I.probes) columns.push_back("probe:" + p.first);
   if (I.problem->exactSolution) {
     columns.push_back("error_l2");
@@ -381,6 +382,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     for (size_t j = 0; j < gap.size(); ++j) gap[j] -= gbar[j];
   }
 
+  double tRemesh = 0, tEstimate = 0;  // of the current step
   auto writeOutputs = [&](int step, double t, const solvers::ContactQPResult& qr, double tAssembly, double tContact,
                           double tFree, const StepExtras& extras) {
     auto scope = I.timers.scope("output");
@@ -395,7 +397,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),
                                I.energy(*d, *u, *v), I.newmarkEnergy(*d, *u, *v, *a), force,
                                toPhysical * qr.maxLambda, qr.minGap, toPhysical * qr.maxComplementarity, tAssembly,
-                               tContact, 0.0, tFree};
+                               tContact, 0.0, tFree, tRemesh, tEstimate};
     for (const auto& p : I.probes) row.push_back(d->assembler->evaluate(uOverlap, p.second[0], p.second[1]));
     if (I.problem->exactSolution) {
       const auto [l2, h1] = d->assembler->errorNorms(*u, *I.problem->exactSolution, t);
@@ -431,12 +433,14 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     writeOutputs(0, 0.0, solvers::ContactQPResult(), 0.0, 0.0, 0.0, StepExtras());
     for (int n = 1; n <= nSteps; ++n) {
       const double t = n * k;
+      const auto tR0 = std::chrono::steady_clock::now();
       if (n > 1 && meshes[n - 1] != d->forest && !meshes[n - 1]->sameCells(*d->forest)) {
         auto next = I.build(meshes[n - 1], n);
         I.transfer(*d, *next, options.interpolateTransfer, u, v, a, lambda);
         d = std::move(next);
         ++summary.meshChanges;
       }
+      tRemesh = std::chrono::duration<double>(std::chrono::steady_clock::now() - tR0).count();
       const auto owned = d->mesh->ownedMap();
       summary.totalDofs += static_cast<long long>(d->mesh->numGlobalNodes());
       Vector F(owned), pred(owned), load(owned), uOld(owned);
@@ -479,11 +483,13 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         tFree = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       }
       StepExtras extras;
+      const auto tE0 = std::chrono::steady_clock::now();
       if (hook) {
         auto scope = I.timers.scope("estimator");
         extras = hook(StepView{n, t, k, beta, *d->forest, *d->mesh, *d->assembler, d->coupling.get(), *I.problem, *u,
                                pred, lambda, *d->massSolver});
       }
+      tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();
       I.newmark->update(uOld, *u, *v, *a);
       writeOutputs(n, t, qr, std::chrono::duration<double>(tA1 - tA0).count(),
                    std::chrono::duration<double>(tA2 - tA1).count(), tFree, extras);
