@@ -467,8 +467,7 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
       for (size_t i = 0; i < prescribed.size(); ++i) prescribed[i] = (dirichlet[i] || contact[i]) ? 1 : 0;
       // K + M with rows and columns of Gamma_D eliminated: v^T A v is the full H1 norm for v = 0 on Gamma_D.
       const RCP<const CrsMatrix> full = in.assembler.assembleOperator(1.0, 1.0, 1.0, 1.0);
-      fem::Q1Assembler reduced(mesh, prescribed);
-      const RCP<const CrsMatrix> A = reduced.assembleOperator(1.0, 1.0, 1.0, 1.0);
+      const RCP<const CrsMatrix> A = in.assembler.assembleOperator(1.0, 1.0, 1.0, 1.0, {}, &prescribed);
       // Lifting: b = -A_full v_b on the free nodes, b = v_b on the prescribed ones (identity rows).
       Vector b(owned), d(owned), Ad(owned);
       full->apply(boundary, b);

@@ -54,7 +54,17 @@ Q1Assembler::Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet)
 }
 
 RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,
-                                             const std::vector<char>& lumpMassAt) const {
+                                             const std::vector<char>& lumpMassAt,
+                                             const std::vector<char>* dirichletOverride) const {
+  const std::vector<char>& dirFlags = dirichletOverride ? *dirichletOverride : dirichlet_;
+  SIGNORINI_ASSERT(dirFlags.size() == dirichlet_.size(), "Dirichlet flags do not match the mesh");
+  auto dirView = dirichletView_;
+  if (dirichletOverride) {
+    dirView = Kokkos::View<int*, DeviceType>("dirichletOverride", dirFlags.size());
+    auto h = Kokkos::create_mirror_view(dirView);
+    for (size_t i = 0; i < dirFlags.size(); ++i) h(i) = dirFlags[i];
+    Kokkos::deep_copy(dirView, h);
+  }
   Kokkos::View<int*, DeviceType> lump("lump", dirichlet_.size());
   {
     auto h = Kokkos::create_mirror_view(lump);
@@ -76,7 +86,7 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
     const auto X = mesh_.cornerCoords;
     const auto dofs = mesh_.cornerDofs;
     const auto wts = mesh_.cornerWeights;
-    const auto dir = dirichletView_;
+    const auto dir = dirView;
     const double cm = massCoeff * rho, ck = stiffCoeff * kappa;
     Kokkos::parallel_for(
         "signorini::assembleOperator", Kokkos::RangePolicy<ExecSpace>(0, mesh_.numLocalCells()),
@@ -122,7 +132,7 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
     const auto owned = mesh_.ownedMap();
     const auto colMap = A->getColMap();
     for (LO i = 0; i < static_cast<LO>(owned->getNodeNumElements()); ++i)
-      if (dirichlet_[i]) {  // overlap ids of owned nodes equal their owned ids
+      if (dirFlags[i]) {  // overlap ids of owned nodes equal their owned ids
         const LO col = colMap->getLocalElement(owned->getGlobalElement(i));
         const double one = 1.0;
         A->replaceLocalValues(i, 1, &one, &col);
