@@ -116,8 +116,8 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       };
       dynamics::PassOptions options;
       const bool lastPlanned = l == cycles - 1;
-      options.basename = lastPlanned ? "" : sim_->outputBase().substr(sim_->outputBase().find_last_of('/') + 1) +
-                                                ".cycle" + std::to_string(l);
+      const std::string& outBase = sim_->outputBase();
+      options.basename = lastPlanned ? "" : outBase.substr(outBase.find_last_of('/') + 1) + ".cycle" + std::to_string(l);
       options.writeExodus = lastPlanned || ap.get<bool>("Write All Cycles");
       options.extraColumns = {"eta_star", "s0", "s1", "eta"};
       options.cellFieldName = "indicator";

@@ -111,7 +111,7 @@ struct Discretisation {
 struct Simulation::Impl {
   RCP<const Comm> comm;
   core::ParameterList deck;
-  std::string deckPath, outDir, basename;
+  std::string deckPath, outDir, basename, outputBase;
   std::shared_ptr<mesh::CoarseMesh> coarse;
   std::unique_ptr<mesh::BoundarySegments> segments;
   std::unique_ptr<fem::ProblemData> problem;
@@ -300,6 +300,7 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   }
   I.outDir = outputDir.empty() ? out.get<std::string>("Directory") : outputDir;
   I.basename = out.get<std::string>("Basename").empty() ? stemOf(deckPath) : out.get<std::string>("Basename");
+  I.outputBase = I.outDir + "/" + I.basename;
   ensureWritableDirectory(I.outDir, *comm);
 }
 
@@ -308,11 +309,7 @@ Simulation::~Simulation() = default;
 std::shared_ptr<mesh::Forest> Simulation::initialForest() const { return impl_->initialForest; }
 int Simulation::numSteps() const { return impl_->newmark->numSteps(); }
 RCP<const Comm> Simulation::comm() const { return impl_->comm; }
-const std::string& Simulation::outputBase() const {
-  static thread_local std::string base;
-  base = impl_->outDir + "/" + impl_->basename;
-  return base;
-}
+const std::string& Simulation::outputBase() const { return impl_->outputBase; }
 
 RunSummary Simulation::run() {
   std::vector<std::shared_ptr<mesh::Forest>> meshes(numSteps(), impl_->initialForest);
