@@ -6,7 +6,8 @@
 
 Writes (PNG): eta_vs_unknowns.png (paper Fig. 6.3), estimator_contributions.png (Fig. 4.1),
 meshes.png (Fig. 6.2, meshes of the final cycle at the chosen steps), multiplier.png (Fig. 3.1, the
-contact multiplier along Gamma_C for H = 2h and, if given, H = h). Uses Debian's python3 with
+contact multiplier along Gamma_C for H = 2h and, if given, H = h), energy_and_probe.png (energy per
+step across mesh changes and the probe value, adaptive against the uniform cycles). Uses Debian's python3 with
 numpy, matplotlib and netCDF4.
 """
 import argparse
@@ -70,6 +71,36 @@ def plot_contributions(adaptive, out):
     plt.tight_layout()
     plt.savefig(os.path.join(out, "estimator_contributions.png"), dpi=150)
     plt.close()
+
+
+def plot_energy_and_probe(adaptive, uniform, out):
+    """Energy per step across mesh changes, and the probe value, adaptive against uniform cycles."""
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    runs = []
+    if uniform:
+        runs += [(f, "uniform " + f.split(".")[-3], "-") for f in sorted(glob.glob(uniform + ".cycle*.steps.csv"))]
+        runs.append((uniform + ".steps.csv", "uniform (last cycle)", "-"))
+    runs.append((adaptive + ".steps.csv", "adaptive (last cycle)", "k--"))
+    for path, label, style in runs:
+        if not os.path.exists(path):
+            continue
+        s = read_csv(path)
+        axes[0].plot(s["t"], s["energy"], style, label=label, lw=1)
+        probes = [n for n in s.dtype.names if n.startswith("probe")]
+        if probes:
+            axes[1].plot(s["t"], s[probes[0]], style, label=label, lw=1)
+    axes[0].set_xlabel("t")
+    axes[0].set_ylabel("kinetic + strain energy")
+    axes[0].set_title("energy per step (mesh changes every step in adaptive runs)")
+    axes[1].set_xlabel("t")
+    axes[1].set_ylabel("u at the probe")
+    axes[1].set_title("probe value")
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(out, "energy_and_probe.png"), dpi=150)
+    plt.close(fig)
 
 
 def plot_meshes(adaptive, steps, k, out):
@@ -149,6 +180,7 @@ def main():
     os.makedirs(a.out, exist_ok=True)
     plot_eta(a.adaptive, a.uniform, a.out)
     plot_contributions(a.adaptive, a.out)
+    plot_energy_and_probe(a.adaptive, a.uniform, a.out)
     plot_meshes(a.adaptive, [int(s) for s in a.steps.split(",")], a.time_step, a.out)
     plot_multiplier([(a.two_h or a.adaptive, "H = 2h"), (a.h_equals_h, "H = h")], a.multiplier_time, a.out)
     print("wrote", ", ".join(sorted(os.listdir(a.out))))
