@@ -14,6 +14,11 @@ core::ParameterList Newmark::getValidParameters() {
   core::addDouble(p, "Final Time", 1.0, "T [time]; the run takes round(T / k) steps", 1e-300, core::kInf);
   core::addDouble(p, "Alpha", 0.5, "Newmark alpha (= gamma); second order needs 1/2; 2 beta >= alpha >= 1/2", 0.0, 2.0);
   core::addDouble(p, "Beta", 0.5, "Newmark beta; 1/2 conserves energy with alpha = 1/2 (paper Sec. 3.1)", 0.0, 2.0);
+  core::addChoice(p, "Contact Stabilisation", "none",
+                  "\"predictor projection\": project the Newmark predictor onto the admissible set in the mass "
+                  "norm before each step (after Deuflhard, Krause, Ertel; not in the paper) against the chattering "
+                  "of impacting nodes (DESIGN 1.6); \"none\": the paper's scheme",
+                  {"none", "predictor projection"});
   return p;
 }
 
@@ -21,7 +26,8 @@ Newmark::Newmark(const core::ParameterList& p)
     : timeStep(p.get<double>("Time Step")),
       finalTime(p.get<double>("Final Time")),
       alpha(p.get<double>("Alpha")),
-      beta(p.get<double>("Beta")) {
+      beta(p.get<double>("Beta")),
+      stabilised(p.get<std::string>("Contact Stabilisation") == "predictor projection") {
   if (alpha < 0.5)
     SIGNORINI_USER_ERROR("Time Integration/Alpha = " << alpha << " violates 2 Beta >= Alpha >= 1/2 (Alpha < 1/2)");
   if (2 * beta < alpha)
@@ -38,6 +44,14 @@ void Newmark::predictor(const Vector& u, const Vector& v, const Vector& a, Vecto
   const double k = timeStep;
   out.update(1.0, u, k, v, 0.0);
   out.update((0.5 - beta) * k * k, a, 1.0);
+}
+
+void Newmark::updateFromPredictor(const Vector& predictor, const Vector& uNew, Vector& v, Vector& a) const {
+  const double k = timeStep;
+  Vector aNew(a.getMap());
+  aNew.update(1.0 / (beta * k * k), uNew, -1.0 / (beta * k * k), predictor, 0.0);
+  v.update(k * (1 - alpha), a, k * alpha, aNew, 1.0);
+  a.assign(aNew);
 }
 
 void Newmark::update(const Vector& uOld, const Vector& uNew, Vector& v, Vector& a) const {

@@ -104,6 +104,7 @@ struct Discretisation {
   std::unique_ptr<solvers::LinearSolver> solver, massSolver;
   std::unique_ptr<fem::ContactCoupling> coupling;
   std::unique_ptr<solvers::ContactQP> qp;
+  std::unique_ptr<solvers::ContactQP> projection;  ///< predictor projection (contact stabilisation)
   double courant = 0;
   long builtAtStep = 0;  ///< identifies the mesh in the Exodus series
 };
@@ -157,6 +158,10 @@ struct Simulation::Impl {
         SIGNORINI_USER_ERROR("Problem/Contact Segments: the named segments contain no boundary edge of the mesh");
       d->qp = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), coarse->diameter());
       d->qp->setSystem(*d->A, *d->coupling, d->courant);
+      if (newmark->stabilised) {
+        d->projection = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), coarse->diameter());
+        d->projection->setSystem(*d->M, *d->coupling, 0.0);
+      }
     }
     return d;
   }
@@ -446,6 +451,14 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         auto scope = I.timers.scope("assembly");
         // F^n = beta k^2 (f(t_n) + Neumann) + M (u + k v + (1/2 - beta) k^2 a)
         I.newmark->predictor(*u, *v, *a, pred);
+        if (d->projection) {  // the predictor projected onto the admissible set in the mass norm
+          Vector Mpred(owned);
+          d->M->apply(pred, Mpred);
+          d->assembler->zeroDirichlet(Mpred);
+          std::vector<double> mu(d->coupling->numSegments(), 0.0), gapPred;
+          d->projection->solve(*d->massSolver, *d->coupling, Mpred, d->coupling->weightedObstacle(I.problem->obstacle, t),
+                               mu, pred, gapPred);
+        }
         d->M->apply(pred, F);
         d->assembler->assembleLoad(I.problem->bodyForce, t, beta * k * k, load);
         d->assembler->addBoundaryLoad(I.problem->neumannData, t, I.problem->neumannMask, beta * k * k, load);
@@ -487,7 +500,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                pred, lambda, *d->massSolver});
       }
       tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();
-      I.newmark->update(uOld, *u, *v, *a);
+      I.newmark->updateFromPredictor(pred, *u, *v, *a);
       writeOutputs(n, t, qr, std::chrono::duration<double>(tA1 - tA0).count(),
                    std::chrono::duration<double>(tA2 - tA1).count(), tFree, extras);
       if (n % progress == 0 || n == nSteps) {

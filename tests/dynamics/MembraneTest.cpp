@@ -137,6 +137,33 @@ TEST(Membrane, FlatObstacleGivesTheOneDimensionalSolution) {
   EXPECT_LT(l2.back(), 0.01);
 }
 
+TEST(Membrane, StabilisedSchemeKeepsContactAndDoesNotGainEnergy) {
+  // Paper's Newmark with the predictor projected onto the admissible set (Time Integration/Contact
+  // Stabilisation): on the flat obstacle the end stays on the obstacle after first contact (the
+  // 1D solution does), the energy never exceeds its initial value (impacts may only dissipate),
+  // and the solution converges to the 1D solution.
+  const double g = -0.5, t1 = 2.0 / M_PI * std::asin(-M_PI * g / 2.0);
+  std::vector<double> l2;
+  for (int level = 2; level <= 4; ++level) {
+    auto deck = membraneDeck(level, 0.04 / (1 << level), 1.0, std::to_string(g));
+    deck.sublist("Problem").set("Exact Solution", oneDimensionalSolution(g));
+    deck.sublist("Time Integration").set("Contact Stabilisation", "predictor projection");
+    deck.sublist("Output").sublist("Probes").set("end", "1.0, 0.5");
+    const auto t = run(deck, "stabilised" + std::to_string(level), Tpetra::getDefaultComm());
+    const double e0 = t.rows.front()[t.column("energy")];
+    for (const auto& r : t.rows) {
+      EXPECT_LE(r[t.column("energy")], e0 * (1 + 1e-9));
+      if (r[t.column("t")] > t1 + 0.1) EXPECT_NEAR(r[t.column("probe:end")], g, 1e-4);
+    }
+    l2.push_back(columnMax(t, "error_l2"));
+  }
+  for (size_t i = 1; i < l2.size(); ++i) {
+    const double rate = std::log2(l2[i - 1] / l2[i]);
+    RecordProperty("rate_l2_" + std::to_string(i), std::to_string(rate));
+    EXPECT_GT(rate, 0.9) << "level " << i;
+  }
+}
+
 TEST(Membrane, KKTConditionsHoldAtEveryStep) {
   // Paper Example 6.1 data (obstacle sin(pi y) - 1.05) on 32 x 32 cells, all 400 steps.
   auto deck = membraneDeck(3, 0.0025, 1.0, "sin(pi*y) - 1.05");
