@@ -54,15 +54,5 @@ void Newmark::updateFromPredictor(const Vector& predictor, const Vector& uNew, V
   a.assign(aNew);
 }
 
-void Newmark::update(const Vector& uOld, const Vector& uNew, Vector& v, Vector& a) const {
-  const double k = timeStep;
-  // a^n = (u^n - u^{n-1})/(beta k^2) - v^{n-1}/(beta k) - (1/(2 beta) - 1) a^{n-1}   (3.1)
-  Vector aNew(a.getMap());
-  aNew.update(1.0 / (beta * k * k), uNew, -1.0 / (beta * k * k), uOld, 0.0);
-  aNew.update(-1.0 / (beta * k), v, -(0.5 / beta - 1.0), a, 1.0);
-  // v^n = v^{n-1} + k ((1 - alpha) a^{n-1} + alpha a^n)   (3.2)
-  v.update(k * (1 - alpha), a, k * alpha, aNew, 1.0);
-  a.assign(aNew);
-}
 
 }  // namespace signorini::dynamics

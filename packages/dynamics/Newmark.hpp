@@ -22,10 +22,8 @@ struct Newmark {
 
   /// Predictor u^{n-1} + k v^{n-1} + (1/2 - beta) k^2 a^{n-1}; F^n = M * predictor + beta k^2 (loads).
   void predictor(const Vector& u, const Vector& v, const Vector& a, Vector& out) const;
-  /// Given u^n, overwrites (v, a) from step n-1 with step n: (3.1) then (3.2).
-  void update(const Vector& uOld, const Vector& uNew, Vector& v, Vector& a) const;
-  /// The same with the predictor given: a^n = (u^n - predictor) / (beta k^2) is (3.1) for the
-  /// standard predictor; with a predictor projected onto the admissible set (contact
+  /// Given u^n and the step's predictor, overwrites (v, a) from step n-1 with step n:
+  /// a^n = (u^n - predictor) / (beta k^2) is (3.1) for the standard predictor, then (3.2); with a predictor projected onto the admissible set (contact
   /// stabilisation) the projection's correction is not counted as acceleration.
   void updateFromPredictor(const Vector& predictor, const Vector& uNew, Vector& v, Vector& a) const;
 
