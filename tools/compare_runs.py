@@ -1,29 +1,44 @@
 #!/usr/bin/python3
 """Compares an adaptive run with its uniform comparison from their <base>.cycles.csv files:
 the total unknowns the adaptive run needs to reach the estimate of the finest uniform cycle
-(log-log interpolation between adaptive cycles) and the ratio of wall times.
-Usage: tools/compare_runs.py ADAPTIVE_BASE UNIFORM_BASE"""
+(log-log interpolation between the adaptive cycles around the first one at or below it; also the
+unknowns of that cycle itself, with no interpolation) and the ratio of wall times.
+Usage: tools/compare_runs.py ADAPTIVE_BASE UNIFORM_BASE [--require-factor F]
+With --require-factor the exit status is 1 unless the interpolated factor is at least F."""
+import argparse
 import sys
 
 import numpy as np
 
-ad = np.atleast_1d(np.genfromtxt(sys.argv[1] + ".cycles.csv", delimiter=",", names=True))
-un = np.atleast_1d(np.genfromtxt(sys.argv[2] + ".cycles.csv", delimiter=",", names=True))
+ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+ap.add_argument("adaptive", help="output base of the adaptive run (folder/basename)")
+ap.add_argument("uniform", help="output base of the uniform run")
+ap.add_argument("--require-factor", type=float, default=0.0, help="fail unless the factor in unknowns reaches this")
+a = ap.parse_args()
+
+ad = np.atleast_1d(np.genfromtxt(a.adaptive + ".cycles.csv", delimiter=",", names=True))
+un = np.atleast_1d(np.genfromtxt(a.uniform + ".cycles.csv", delimiter=",", names=True))
 target, n_uniform, t_uniform = un["eta"][-1], un["total_dofs"][-1], un["wall_seconds"].sum()
+print(f"{a.adaptive} against {a.uniform}")
 print("adaptive cycles: " + "; ".join(f"{int(d)} unknowns, eta {e:.4g}" for d, e in zip(ad["total_dofs"], ad["eta"])))
 print("uniform cycles:  " + "; ".join(f"{int(d)} unknowns, eta {e:.4g}" for d, e in zip(un["total_dofs"], un["eta"])))
 reached = np.nonzero(ad["eta"] <= target)[0]
 if len(reached) == 0:
     print(f"the adaptive run does not reach the finest uniform estimate {target:.4g}")
-    sys.exit(0)
+    sys.exit(1 if a.require_factor > 0 else 0)
 i = reached[0]
+n_cycle, t_needed = ad["total_dofs"][i], ad["wall_seconds"][: i + 1].sum()
 if i == 0:
-    n_needed, t_needed = ad["total_dofs"][0], ad["wall_seconds"][0]
+    n_needed = n_cycle
 else:  # log-log interpolation between cycles i-1 and i
     x0, x1 = np.log(ad["total_dofs"][i - 1]), np.log(ad["total_dofs"][i])
     y0, y1 = np.log(ad["eta"][i - 1]), np.log(ad["eta"][i])
     n_needed = float(np.exp(x0 + (np.log(target) - y0) * (x1 - x0) / (y1 - y0)))
-    t_needed = ad["wall_seconds"][: i + 1].sum()
+factor = n_uniform / n_needed
 print(f"finest uniform estimate {target:.4g} with {int(n_uniform)} total unknowns ({t_uniform:.1f} s over all cycles)")
-print(f"adaptive reaches it with about {int(n_needed)} total unknowns: factor {n_uniform / n_needed:.2f} fewer unknowns")
+print(f"adaptive reaches it with about {int(n_needed)} total unknowns (interpolated): factor {factor:.2f} fewer unknowns")
+print(f"first adaptive cycle at or below it: cycle {i}, {int(n_cycle)} unknowns: factor {n_uniform / n_cycle:.2f}")
 print(f"wall time to reach it (all cycles up to that one): {t_needed:.1f} s: factor {t_uniform / t_needed:.2f}")
+if factor < a.require_factor:
+    print(f"FAILED: factor {factor:.2f} < required {a.require_factor:g}")
+    sys.exit(1)

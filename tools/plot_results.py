@@ -2,6 +2,7 @@
 """Plots of an adaptive run against its uniform comparison, from signorini's CSV and Exodus output.
 
   tools/plot_results.py --adaptive out/membrane --uniform out/membrane-uniform [--steps 20,60,200,400]
+                        [--more-adaptive out/membrane-fraction10:"fixed fraction 10%"]
                         [--h-equals-h out/membrane-Hh] --out out/plots
 
 Writes (PNG): eta_vs_unknowns.png (paper Fig. 6.3), estimator_contributions.png (Fig. 4.1),
@@ -44,9 +45,11 @@ def names(var):
     return ["".join(c.decode() for c in row if c) for row in var[:]]
 
 
-def plot_eta(adaptive, uniform, out):
+def plot_eta(adaptive, uniform, more, out):
     plt.figure(figsize=(5, 4))
-    for base, label, style in [(adaptive, "adaptive", "o-"), (uniform, "uniform", "s--")]:
+    runs = [(adaptive, "adaptive", "o-"), (uniform, "uniform", "s--")]
+    runs += [(spec.split(":", 1)[0], spec.split(":", 1)[-1], "^-") for spec in more]
+    for base, label, style in runs:
         if base and os.path.exists(base + ".cycles.csv"):
             c = np.atleast_1d(read_csv(base + ".cycles.csv"))
             plt.loglog(c["total_dofs"], c["eta"], style, label=label)
@@ -170,6 +173,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--adaptive", required=True, help="output base of the adaptive run (folder/basename)")
     ap.add_argument("--uniform", help="output base of the uniform comparison run")
+    ap.add_argument("--more-adaptive", action="append", default=[], metavar="BASE:LABEL",
+                    help="a further adaptive run for the estimate plot (repeatable)")
     ap.add_argument("--two-h", help="output base of a run with H = 2h for the multiplier plot (default: --adaptive)")
     ap.add_argument("--h-equals-h", help="output base of the same run with Contact/Multiplier Segments = H = h")
     ap.add_argument("--steps", default="20,60,100,200,300,400", help="steps whose meshes are drawn")
@@ -178,7 +183,7 @@ def main():
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
-    plot_eta(a.adaptive, a.uniform, a.out)
+    plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out)
     plot_contributions(a.adaptive, a.out)
     plot_energy_and_probe(a.adaptive, a.uniform, a.out)
     plot_meshes(a.adaptive, [int(s) for s in a.steps.split(",")], a.time_step, a.out)

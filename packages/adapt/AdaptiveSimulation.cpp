@@ -1,5 +1,6 @@
 #include "AdaptiveSimulation.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <iomanip>
 #include <cmath>
@@ -84,7 +85,11 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         const auto r = estimator.estimate(estimate::EstimatorInput{
             s.forest, s.mesh, s.assembler, s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor,
             s.lambda, [&](const RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
-              solvers::LinearSolver cg(deck_.sublist("Linear Solver"), comm);
+              // Every CG iterate is an extension of the boundary data, so its norm bounds s1 from above and
+              // decreases to s1: a relative residual of 1e-4 leaves s1 accurate to about 1e-8 relative.
+              auto params = deck_.sublist("Linear Solver");
+              params.set("Relative Tolerance", std::max(1e-4, params.get<double>("Relative Tolerance")));
+              solvers::LinearSolver cg(params, comm);
               cg.setOperator(A, 0.0);
               cg.solve(b, x);
             }});

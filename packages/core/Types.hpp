@@ -1,4 +1,5 @@
 #pragma once
+#include <type_traits>
 /// \file Types.hpp
 /// Tpetra/Kokkos type aliases shared by every signorini package.
 #include <Kokkos_Core.hpp>
@@ -26,6 +27,12 @@ using Comm = Teuchos::Comm<int>;
 using ExecSpace = Node::execution_space;
 using MemSpace = Node::memory_space;
 using DeviceType = Node::device_type;
+/// Scatter-adds from assembly kernels need atomics only where cells run concurrently.
+#ifdef KOKKOS_ENABLE_SERIAL
+inline constexpr bool kAtomicScatter = !std::is_same_v<ExecSpace, Kokkos::Serial>;
+#else
+inline constexpr bool kAtomicScatter = true;
+#endif
 
 template <class T>
 using RCP = Teuchos::RCP<T>;

@@ -196,7 +196,7 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
           double half = 0.5 * Kokkos::Experimental::sqrt(dx * dx + dy * dy);
           LO c = col(k);
           for (int p = 0; p < 2; ++p)
-            if (rows(k, p) >= 0) local.sumIntoValues(rows(k, p), &c, 1, &half, false, true);
+            if (rows(k, p) >= 0) local.sumIntoValues(rows(k, p), &c, 1, &half, false, kAtomicScatter);
         });
   }
   B->endAssembly();

@@ -74,14 +74,18 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
   auto A = Teuchos::rcp(new Matrix(graph_));
   A->beginAssembly();
   {
-    // The owned+shared matrix may order its columns differently from the overlap map.
-    const auto overlap = mesh_.overlapMap();
-    const auto colMap = A->getColMap();
-    Kokkos::View<LO*, DeviceType> toCol("toCol", overlap->getNodeNumElements());
-    auto toColHost = Kokkos::create_mirror_view(toCol);
-    for (size_t i = 0; i < toColHost.extent(0); ++i)
-      toColHost(i) = colMap->getLocalElement(overlap->getGlobalElement(static_cast<LO>(i)));
-    Kokkos::deep_copy(toCol, toColHost);
+    // The owned+shared matrix may order its columns differently from the overlap map; the
+    // translation is the same for every matrix on graph_.
+    if (toCol_.extent(0) != mesh_.overlapMap()->getNodeNumElements()) {
+      const auto overlap = mesh_.overlapMap();
+      const auto colMap = A->getColMap();
+      toCol_ = Kokkos::View<LO*, DeviceType>("toCol", overlap->getNodeNumElements());
+      auto toColHost = Kokkos::create_mirror_view(toCol_);
+      for (size_t i = 0; i < toColHost.extent(0); ++i)
+        toColHost(i) = colMap->getLocalElement(overlap->getGlobalElement(static_cast<LO>(i)));
+      Kokkos::deep_copy(toCol_, toColHost);
+    }
+    const auto toCol = toCol_;
     auto local = A->getLocalMatrixDevice();
     const auto X = mesh_.cornerCoords;
     const auto dofs = mesh_.cornerDofs;
@@ -117,11 +121,11 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
                   double m = wab * Me[a][b];
                   if (row != dof && (lump(row) || lump(dof))) {  // move the mass coupling to the diagonal
                     LO diag = toCol(row);
-                    local.sumIntoValues(row, &diag, 1, &m, false, true);
+                    local.sumIntoValues(row, &diag, 1, &m, false, kAtomicScatter);
                   } else {
                     v += m;
                   }
-                  local.sumIntoValues(row, &col, 1, &v, false, true);
+                  local.sumIntoValues(row, &col, 1, &v, false, kAtomicScatter);
                 }
             }
         });

@@ -53,6 +53,7 @@ class Q1Assembler {
   std::vector<char> dirichlet_;
   Kokkos::View<int*, DeviceType> dirichletView_;
   RCP<Graph> graph_;
+  mutable Kokkos::View<LO*, DeviceType> toCol_;  ///< overlap index -> column of the assembled matrices
   RCP<const Tpetra::Export<LO, GO, Node>> exporter_;
   RCP<const Tpetra::Import<LO, GO, Node>> importer_;
 };
