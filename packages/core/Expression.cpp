@@ -66,4 +66,38 @@ double Expression::operator()(double x, double y, double t) const {
   return impl_->parser.Eval();
 }
 
+ExpressionList::ExpressionList(const std::string& text, const std::string& where, int components) : text_(text) {
+  std::vector<std::string> parts(1);
+  int depth = 0;
+  for (char c : text) {
+    if (c == '(') ++depth;
+    if (c == ')') --depth;
+    if (c == ',' && depth == 0)
+      parts.emplace_back();
+    else
+      parts.back() += c;
+  }
+  const auto b = text.find_first_not_of(" \t\n"), e = text.find_last_not_of(" \t\n");
+  const std::string trimmed = b == std::string::npos ? std::string() : text.substr(b, e - b + 1);
+  if (parts.size() == 1 && components > 1 && trimmed == "0")
+    parts.assign(static_cast<size_t>(components), "0");
+  if (static_cast<int>(parts.size()) != components)
+    SIGNORINI_USER_ERROR(where << ": expected " << components << " comma-separated expression"
+                               << (components > 1 ? "s (one per component)" : "") << ", got " << parts.size()
+                               << " in '" << text << "'");
+  for (size_t c = 0; c < parts.size(); ++c)
+    items_.emplace_back(parts[c], components > 1 ? where + " (component " + std::to_string(c + 1) + ")" : where);
+}
+
+const Expression& ExpressionList::scalar() const {
+  SIGNORINI_ASSERT(items_.size() == 1, "a vector field used as a scalar one");
+  return items_.front();
+}
+
+bool ExpressionList::isConstant() const {
+  for (const auto& e : items_)
+    if (!e.isConstant()) return false;
+  return true;
+}
+
 }  // namespace signorini::core

@@ -3,6 +3,7 @@
 /// A scalar function of (x, y, t) given as a muParser expression in a deck.
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace signorini::core {
 
@@ -34,6 +35,28 @@ class Expression {
   std::unique_ptr<Impl> impl_;
   bool constant_ = false, timeIndependent_ = false, yIndependent_ = false;
   double constantValue_ = 0.0;
+};
+
+/// The components of a vector field given as comma-separated expressions ("0, -9.81*t"); commas
+/// inside parentheses belong to function calls (max(x, y)). A scalar field is a list of one.
+class ExpressionList {
+ public:
+  /// Parses exactly \p components expressions; the single text "0" stands for all components zero.
+  /// Throws core::UserError naming \p where for a wrong number of components or a bad expression.
+  ExpressionList(const std::string& text, const std::string& where, int components = 1);
+
+  int size() const { return static_cast<int>(items_.size()); }
+  const Expression& operator[](int c) const { return items_.at(static_cast<size_t>(c)); }
+  /// The single component of a scalar field (asserts size() == 1).
+  const Expression& scalar() const;
+  operator const Expression&() const { return scalar(); }
+  double operator()(double x, double y, double t) const { return scalar()(x, y, t); }
+  bool isConstant() const;
+  const std::string& text() const { return text_; }
+
+ private:
+  std::string text_;
+  std::vector<Expression> items_;
 };
 
 }  // namespace signorini::core

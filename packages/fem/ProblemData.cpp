@@ -9,21 +9,35 @@ namespace signorini::fem {
 
 core::ParameterList ProblemData::getValidParameters() {
   core::ParameterList p("Problem");
-  core::addChoice(p, "Type", "scalar wave", "Problem class (DESIGN 1.1): the scalar wave equation rho u_tt - div(kappa grad u) = f",
-                  {"scalar wave"});
-  core::addDouble(p, "Density", 1.0, "rho [mass/area]", 1e-300, core::kInf);
-  core::addDouble(p, "Stiffness", 1.0, "kappa [force]; wave speed sqrt(kappa/rho)", 1e-300, core::kInf);
-  core::addString(p, "Body Force", "0", "f(x,y,t) [force/area]");
-  core::addString(p, "Initial Displacement", "0", "u0(x,y) [length] (t = 0)");
-  core::addString(p, "Initial Velocity", "0", "v0(x,y) [length/time] (t = 0)");
-  core::addString(p, "Obstacle", "", "g(x,y,t) [length]: the constraint u >= g on the contact segments; "
-                                     "empty for no obstacle");
-  core::addString(p, "Neumann Data", "0", "q(x,y,t) = kappa du/dn on the Neumann segments [force/length]");
-  core::addString(p, "Exact Solution", "", "Optional exact u(x,y,t): per-step L2 and H1 errors are reported");
-  core::addString(p, "Dirichlet Segments", "", "Comma-separated names of boundary segments with u = 0");
+  core::addChoice(p, "Type", "scalar wave",
+                  "Problem class (DESIGN 1.1): \"scalar wave\" rho u_tt - div(kappa grad u) = f (one unknown per "
+                  "node), or \"plane strain elasticity\" rho u_tt - div sigma(u) = f (two per node)",
+                  {"scalar wave", "plane strain elasticity"});
+  core::addDouble(p, "Density", 1.0, "rho [mass/area] (scalar wave) or [mass/volume] (elasticity)", 1e-300, core::kInf);
+  core::addDouble(p, "Stiffness", 1.0, "Scalar wave: kappa [force]; wave speed sqrt(kappa/rho)", 1e-300, core::kInf);
+  core::addDouble(p, "Young's Modulus", 1.0, "Elasticity: E [force/area]", 1e-300, core::kInf);
+  core::addDouble(p, "Poisson's Ratio", 0.3, "Elasticity: nu (plane strain), in [0, 0.5)", 0.0, 0.4999999);
+  core::addString(p, "Body Force", "0",
+                  "f(x,y,t) [force/area]; elasticity: \"fx, fy\" [force/volume] (\"0\": all components zero)");
+  core::addString(p, "Initial Displacement", "0", "u0(x,y) [length] (t = 0); elasticity: \"u0x, u0y\"");
+  core::addString(p, "Initial Velocity", "0", "v0(x,y) [length/time] (t = 0); elasticity: \"v0x, v0y\"");
+  core::addString(p, "Obstacle", "", "g(x,y,t) [length]: the constraint u >= g (elasticity: d . u >= g with d the "
+                                     "Contact Direction) on the contact segments; empty for no obstacle");
+  core::addChoice(p, "Contact Direction", "+y",
+                  "Elasticity: the displacement component the obstacle constrains, with its sign (\"+y\": u_y >= g, "
+                  "an obstacle below the body; \"-x\": -u_x >= g, an obstacle to the right)",
+                  {"+x", "-x", "+y", "-y"});
+  core::addString(p, "Neumann Data", "0",
+                  "q(x,y,t) = kappa du/dn [force/length]; elasticity: the traction \"qx, qy\" = sigma n "
+                  "[force/area] on the Neumann segments");
+  core::addString(p, "Exact Solution", "", "Optional exact u(x,y,t) (elasticity: \"ux, uy\"): per-step L2 and H1 "
+                                           "errors are reported");
+  core::addString(p, "Dirichlet Segments", "", "Comma-separated names of boundary segments with u = 0 (every component)");
+  core::addString(p, "Dirichlet X Segments", "", "Elasticity: segments with u_x = 0 only (rollers)");
+  core::addString(p, "Dirichlet Y Segments", "", "Elasticity: segments with u_y = 0 only (rollers)");
   core::addString(p, "Contact Segments", "", "Comma-separated names of boundary segments where u >= g (Gamma_C)");
-  core::addString(p, "Neumann Segments", "", "Comma-separated names of segments with kappa du/dn = q; the rest "
-                                             "of the boundary is homogeneous Neumann");
+  core::addString(p, "Neumann Segments", "", "Comma-separated names of segments with kappa du/dn = q (elasticity: "
+                                             "sigma n = q); the rest of the boundary is homogeneous Neumann");
   return p;
 }
 
@@ -40,27 +54,57 @@ unsigned maskOf(const std::string& list, const mesh::BoundarySegments& segments,
 }
 }  // namespace
 
+namespace {
+ProblemData::Model modelOf(const core::ParameterList& p) {
+  return p.get<std::string>("Type") == "scalar wave" ? ProblemData::Model::ScalarWave
+                                                      : ProblemData::Model::PlaneStrainElasticity;
+}
+int componentsOf(const core::ParameterList& p) { return modelOf(p) == ProblemData::Model::ScalarWave ? 1 : 2; }
+}  // namespace
+
 ProblemData::ProblemData(const core::ParameterList& p, const mesh::BoundarySegments& segments)
-    : density(p.get<double>("Density")),
+    : model(modelOf(p)),
+      density(p.get<double>("Density")),
       stiffness(p.get<double>("Stiffness")),
-      bodyForce(p.get<std::string>("Body Force"), "Problem/Body Force"),
-      initialDisplacement(p.get<std::string>("Initial Displacement"), "Problem/Initial Displacement"),
-      initialVelocity(p.get<std::string>("Initial Velocity"), "Problem/Initial Velocity"),
-      neumannData(p.get<std::string>("Neumann Data"), "Problem/Neumann Data"),
+      bodyForce(p.get<std::string>("Body Force"), "Problem/Body Force", componentsOf(p)),
+      initialDisplacement(p.get<std::string>("Initial Displacement"), "Problem/Initial Displacement", componentsOf(p)),
+      initialVelocity(p.get<std::string>("Initial Velocity"), "Problem/Initial Velocity", componentsOf(p)),
+      neumannData(p.get<std::string>("Neumann Data"), "Problem/Neumann Data", componentsOf(p)),
       obstacle(p.get<std::string>("Obstacle").empty() ? std::string("0") : p.get<std::string>("Obstacle"),
                "Problem/Obstacle") {
   hasObstacle = !p.get<std::string>("Obstacle").empty();
   if (!p.get<std::string>("Exact Solution").empty())
-    exactSolution.emplace(p.get<std::string>("Exact Solution"), "Problem/Exact Solution");
+    exactSolution.emplace(p.get<std::string>("Exact Solution"), "Problem/Exact Solution", components());
   dirichletMask = maskOf(p.get<std::string>("Dirichlet Segments"), segments, "Problem/Dirichlet Segments");
   contactMask = maskOf(p.get<std::string>("Contact Segments"), segments, "Problem/Contact Segments");
   neumannMask = maskOf(p.get<std::string>("Neumann Segments"), segments, "Problem/Neumann Segments");
+  componentDirichletMask[0] = maskOf(p.get<std::string>("Dirichlet X Segments"), segments, "Problem/Dirichlet X Segments");
+  componentDirichletMask[1] = maskOf(p.get<std::string>("Dirichlet Y Segments"), segments, "Problem/Dirichlet Y Segments");
+  const std::string direction = p.get<std::string>("Contact Direction");
+  contactComponent = direction[1] == 'x' ? 0 : 1;
+  contactSign = direction[0] == '+' ? 1.0 : -1.0;
+  if (model == Model::ScalarWave) {
+    for (const char* key : {"Dirichlet X Segments", "Dirichlet Y Segments"})
+      if (!p.get<std::string>(key).empty())
+        SIGNORINI_USER_ERROR("Problem/" << key << " applies to Type = plane strain elasticity only");
+    if (direction != "+y") SIGNORINI_USER_ERROR("Problem/Contact Direction applies to Type = plane strain elasticity only");
+  } else {
+    const double E = p.get<double>("Young's Modulus"), nu = p.get<double>("Poisson's Ratio");
+    lameLambda = E * nu / ((1 + nu) * (1 - 2 * nu));
+    lameMu = E / (2 * (1 + nu));
+  }
   if (hasObstacle && contactMask == 0)
     SIGNORINI_USER_ERROR("Problem/Obstacle is given but Problem/Contact Segments names no segment");
   if (dirichletMask & contactMask)
     SIGNORINI_USER_ERROR("Problem/Contact Segments and Problem/Dirichlet Segments name the same segment");
+  if (componentDirichletMask[contactComponent] & contactMask)
+    SIGNORINI_USER_ERROR("Problem/Contact Segments and Problem/Dirichlet " << (contactComponent ? "Y" : "X")
+                                                                          << " Segments name the same segment");
 }
 
-double ProblemData::waveSpeed() const { return std::sqrt(stiffness / density); }
+double ProblemData::waveSpeed() const {
+  return model == Model::ScalarWave ? std::sqrt(stiffness / density)
+                                    : std::sqrt((lameLambda + 2 * lameMu) / density);
+}
 
 }  // namespace signorini::fem

@@ -12,18 +12,29 @@
 namespace signorini::fem {
 
 struct ProblemData {
+  enum class Model { ScalarWave, PlaneStrainElasticity };
   /// Valid "Problem" parameters.
   static core::ParameterList getValidParameters();
   /// Reads a validated "Problem" sublist; resolves segment names against \p segments.
   /// Throws core::UserError naming the key for an expression that does not parse or an unknown segment.
   ProblemData(const core::ParameterList& p, const mesh::BoundarySegments& segments);
 
-  double density = 1.0;    ///< rho [mass / area]
-  double stiffness = 1.0;  ///< kappa [force] (wave speed sqrt(kappa / rho))
-  core::Expression bodyForce, initialDisplacement, initialVelocity, neumannData, obstacle;
-  std::optional<core::Expression> exactSolution;
+  Model model = Model::ScalarWave;
+  double density = 1.0;    ///< rho [mass / area] (scalar wave) or [mass / volume] (elasticity)
+  double stiffness = 1.0;  ///< kappa [force] (scalar wave: wave speed sqrt(kappa / rho))
+  double lameLambda = 0.0, lameMu = 0.0;  ///< plane strain Lame parameters [force / area] from E and nu
+  /// Fields with one component per unknown of a node (1 for the scalar wave, 2 for elasticity).
+  core::ExpressionList bodyForce, initialDisplacement, initialVelocity, neumannData;
+  core::Expression obstacle;  ///< g: the constraint is d . u >= g with d = contactDirection (scalar: u >= g)
+  std::optional<core::ExpressionList> exactSolution;
   bool hasObstacle = true;
+  /// Segments with every component fixed, and with only component c fixed (elasticity rollers).
   unsigned dirichletMask = 0, contactMask = 0, neumannMask = 0;
+  unsigned componentDirichletMask[2] = {0, 0};
+  int contactComponent = 0;    ///< component of u the obstacle constrains (elasticity)
+  double contactSign = 1.0;    ///< +1: u_c >= g, -1: -u_c >= g
+  int components() const { return model == Model::ScalarWave ? 1 : 2; }
+  /// Fastest wave speed: sqrt(kappa / rho), or the P-wave speed sqrt((lambda + 2 mu) / rho).
   double waveSpeed() const;
 };
 

@@ -198,8 +198,7 @@ void Q1Assembler::assembleLoad(const core::Expression& f, double t, double scale
             }
         });
   }
-  if (!accumulate) out.putScalar(0.0);
-  out.doExport(overlap, *exporter_, Tpetra::ADD);
+  addExported(overlap, *exporter_, out, accumulate);
 }
 
 void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned mask, double scale, Vector& out) const {
@@ -243,7 +242,7 @@ void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned 
           }
         });
   }
-  out.doExport(overlap, *exporter_, Tpetra::ADD);
+  addExported(overlap, *exporter_, out, true);
 }
 
 void Q1Assembler::zeroDirichlet(Vector& v) const {

@@ -9,18 +9,42 @@
 #include <Tpetra_FECrsGraph.hpp>
 #include <Tpetra_Import.hpp>
 
+#include "Assembler.hpp"
 #include "Expression.hpp"
 #include "Q1Mesh.hpp"
 
 namespace signorini::fem {
 
-class Q1Assembler {
+class Q1Assembler : public Assembler {
  public:
   using Graph = Tpetra::FECrsGraph<LO, GO, Node>;
   /// \param dirichlet  flags on the mesh's overlap map (from Q1Mesh::nodesOnSegments).
   Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet);
 
-  const mesh::Q1Mesh& mesh() const { return mesh_; }
+  const mesh::Q1Mesh& mesh() const override { return mesh_; }
+  int components() const override { return 1; }
+  RCP<const Map> ownedMap() const override { return mesh_.ownedMap(); }
+  RCP<const Map> overlapMap() const override { return mesh_.overlapMap(); }
+  /// rho_coeff M + kappa_coeff K with the problem's rho and kappa (the Assembler interface).
+  RCP<CrsMatrix> assembleSystem(double massCoeff, double stiffCoeff, const ProblemData& problem,
+                                const std::vector<char>& lumpAt = {}) const override {
+    return assembleOperator(massCoeff, stiffCoeff, problem.density, problem.stiffness, lumpAt);
+  }
+  void assembleLoad(const core::ExpressionList& f, double t, double scale, Vector& out,
+                    bool accumulate = false) const override {
+    assembleLoad(f.scalar(), t, scale, out, accumulate);
+  }
+  void addBoundaryLoad(const core::ExpressionList& q, double t, unsigned mask, double scale,
+                       Vector& out) const override {
+    addBoundaryLoad(q.scalar(), t, mask, scale, out);
+  }
+  std::pair<double, double> errorNorms(const Vector& uOwned, const core::ExpressionList& exact,
+                                       double t) const override {
+    return errorNorms(uOwned, exact.scalar(), t);
+  }
+  double evaluateComponent(const Vector& uOverlap, double x, double y, int) const override {
+    return evaluate(uOverlap, x, y);
+  }
   /// massCoeff * M_rho + stiffCoeff * K_kappa with M_ij = int rho phi_i phi_j and
   /// K_ij = int kappa grad phi_i . grad phi_j; Dirichlet rows/columns replaced by the identity.
   /// With \p lumpMassAt (overlap flags, optional), mass couplings of the flagged nodes are moved to
@@ -35,9 +59,9 @@ class Q1Assembler {
   /// out (owned) += scale * int_{edges in mask} q(., t) phi_i ds.
   void addBoundaryLoad(const core::Expression& q, double t, unsigned mask, double scale, Vector& out) const;
   /// Sets the Dirichlet entries of an owned vector to zero.
-  void zeroDirichlet(Vector& v) const;
+  void zeroDirichlet(Vector& v) const override;
   /// Values on the overlap map (owned + shared) of an owned vector.
-  void toOverlap(const Vector& owned, Vector& overlap) const;
+  void toOverlap(const Vector& owned, Vector& overlap) const override;
   /// L2 norm and H1 seminorm of u_h - u_exact(., t) (3x3 Gauss; gradient of u_exact by central differences).
   std::pair<double, double> errorNorms(const Vector& uOwned, const core::Expression& exact, double t) const;
   /// u_h at a point (every rank gets the value); NaN if the point is outside the mesh.
@@ -45,7 +69,7 @@ class Q1Assembler {
   /// Total area of the mesh (sum over all ranks).
   double area() const;
 
-  const std::vector<char>& dirichletFlags() const { return dirichlet_; }
+  const std::vector<char>& dirichletFlags() const override { return dirichlet_; }
   RCP<const Graph> graph() const { return graph_; }
 
  private:

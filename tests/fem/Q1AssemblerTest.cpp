@@ -134,3 +134,18 @@ INSTANTIATE_TEST_SUITE_P(Meshes, AssemblyTest,
                          ::testing::Values(Case{false, 1}, Case{false, 3}, Case{true, 1}, Case{true, 2}));
 
 }  // namespace
+
+// Loads accumulate: two boundary loads and an accumulated body load add up (1, 2, 3 ranks).
+TEST(Q1AssemblerLoads, LoadsAccumulate) {
+  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
+  const auto& m = tm.build();
+  fem::Q1Assembler asmb(m, std::vector<char>(m.overlapMap()->getNodeNumElements(), 0));
+  Vector b(m.ownedMap()), one(m.ownedMap());
+  one.putScalar(1.0);
+  const core::Expression q("2", "test"), f("3", "test");
+  asmb.assembleLoad(f, 0.0, 1.0, b);                     // 3 |Omega| = 3
+  asmb.addBoundaryLoad(q, 0.0, 1u << 0, 1.0, b);         // + 2 |left| = 2
+  asmb.addBoundaryLoad(q, 0.0, 1u << 3, 1.0, b);         // + 2 |top| = 2
+  asmb.assembleLoad(f, 0.0, 0.5, b, /*accumulate=*/true);  // + 1.5
+  EXPECT_NEAR(b.dot(one), 8.5, 1e-12);
+}

@@ -1,0 +1,80 @@
+#pragma once
+/// \file Assembler.hpp
+/// What the time stepper needs from a finite element discretisation on one Q1Mesh, whatever the
+/// number of unknowns per node: the scalar wave equation (Q1Assembler, one unknown per node) or
+/// plane strain elasticity (ElasticityAssembler, two). Unknown c of overlap node i is overlap
+/// entry components() * i + c (owned entries likewise; owned nodes come first in the overlap order).
+#include <utility>
+#include <vector>
+
+#include <Tpetra_Export.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "Expression.hpp"
+#include "ProblemData.hpp"
+#include "Q1Mesh.hpp"
+
+namespace signorini::fem {
+
+/// out (owned) = (out if accumulate, else 0) + the sum over ranks of the overlap contributions.
+/// (Tpetra's doExport with ADD replaces, rather than adds to, the target's own entries.)
+inline void addExported(const Vector& overlap, const Tpetra::Export<LO, GO, Node>& exporter, Vector& out,
+                        bool accumulate) {
+  if (!accumulate) {
+    out.putScalar(0.0);
+    out.doExport(overlap, exporter, Tpetra::ADD);
+    return;
+  }
+  Vector sum(out.getMap());
+  sum.doExport(overlap, exporter, Tpetra::ADD);
+  out.update(1.0, sum, 1.0);
+}
+
+class Assembler {
+ public:
+  virtual ~Assembler() = default;
+
+  virtual const mesh::Q1Mesh& mesh() const = 0;
+  /// Unknowns per node (1 or 2).
+  virtual int components() const = 0;
+  /// Owned unknowns (rows of the matrices) and owned + shared unknowns.
+  virtual RCP<const Map> ownedMap() const = 0;
+  virtual RCP<const Map> overlapMap() const = 0;
+  /// Dirichlet flags on the overlap unknowns.
+  virtual const std::vector<char>& dirichletFlags() const = 0;
+
+  /// massCoeff * M + stiffCoeff * K with the problem's material (paper (3.7)); Dirichlet rows and
+  /// columns replaced by the identity. \p lumpAt (overlap unknown flags, optional): mass couplings
+  /// of the flagged unknowns moved to the diagonal (row sums kept).
+  virtual RCP<CrsMatrix> assembleSystem(double massCoeff, double stiffCoeff, const ProblemData& problem,
+                                        const std::vector<char>& lumpAt = {}) const = 0;
+  /// out (owned) = scale * int f(., t) . phi_i dx, or += if \p accumulate (one expression per component).
+  virtual void assembleLoad(const core::ExpressionList& f, double t, double scale, Vector& out,
+                            bool accumulate = false) const = 0;
+  /// out (owned) += scale * int_{edges in mask} q(., t) . phi_i ds.
+  virtual void addBoundaryLoad(const core::ExpressionList& q, double t, unsigned mask, double scale,
+                               Vector& out) const = 0;
+  /// Sets the Dirichlet entries of an owned vector to zero.
+  virtual void zeroDirichlet(Vector& v) const = 0;
+  /// Values on the overlap map of an owned vector.
+  virtual void toOverlap(const Vector& owned, Vector& overlap) const = 0;
+  /// L2 norm and H1 seminorm of u_h - u_exact(., t), summed over the components.
+  virtual std::pair<double, double> errorNorms(const Vector& uOwned, const core::ExpressionList& exact,
+                                               double t) const = 0;
+  /// Component \p c of u_h at a point (every rank gets the value); NaN outside the mesh.
+  virtual double evaluateComponent(const Vector& uOverlap, double x, double y, int c) const = 0;
+
+  /// Flags on the overlap unknowns of the nodes on the segments in \p mask (component \p c only, or
+  /// every component for c < 0).
+  std::vector<char> unknownsOnSegments(unsigned mask, int c = -1) const {
+    const auto nodes = mesh().nodesOnSegments(mask);
+    const int nc = components();
+    std::vector<char> flags(nodes.size() * static_cast<size_t>(nc), 0);
+    for (size_t i = 0; i < nodes.size(); ++i)
+      for (int k = 0; k < nc; ++k)
+        if (c < 0 || k == c) flags[i * nc + k] = nodes[i];
+    return flags;
+  }
+};
+
+}  // namespace signorini::fem

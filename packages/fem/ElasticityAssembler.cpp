@@ -1,0 +1,384 @@
+#include "ElasticityAssembler.hpp"
+
+#include <cmath>
+#include <limits>
+#include <set>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_FECrsMatrix.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "Error.hpp"
+#include "Q1Kernels.hpp"
+
+namespace signorini::fem {
+
+using Matrix = Tpetra::FECrsMatrix<Scalar, LO, GO, Node>;
+
+namespace {
+
+/// The map of unknowns (2 g, 2 g + 1) of a node map, in the node map's local order.
+RCP<const Map> unknownsOf(const RCP<const Map>& nodes) {
+  const LO n = static_cast<LO>(nodes->getNodeNumElements());
+  std::vector<GO> gids(2 * static_cast<size_t>(n));
+  for (LO i = 0; i < n; ++i) {
+    const GO g = nodes->getGlobalElement(i);
+    gids[2 * i] = 2 * g;
+    gids[2 * i + 1] = 2 * g + 1;
+  }
+  return Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                              Teuchos::ArrayView<const GO>(gids), nodes->getIndexBase(), nodes->getComm()));
+}
+
+/// Corner values of component c of cell e from host overlap values.
+template <class View>
+void cornerValues(const mesh::Q1Mesh& mesh, const View& uh, LO e, int c, double out[4]) {
+  for (int a = 0; a < 4; ++a) {
+    out[a] = 0;
+    for (int k = 0; k < 2; ++k)
+      if (mesh.cornerDofsHost(e, a, k) >= 0)
+        out[a] += mesh.cornerWeightsHost(e, a, k) * uh(2 * mesh.cornerDofsHost(e, a, k) + c, 0);
+  }
+}
+
+}  // namespace
+
+std::vector<char> ElasticityAssembler::dirichletUnknowns(const mesh::Q1Mesh& mesh, const ProblemData& problem) {
+  const auto all = mesh.nodesOnSegments(problem.dirichletMask);
+  const auto onlyX = mesh.nodesOnSegments(problem.componentDirichletMask[0]);
+  const auto onlyY = mesh.nodesOnSegments(problem.componentDirichletMask[1]);
+  std::vector<char> flags(2 * all.size(), 0);
+  for (size_t i = 0; i < all.size(); ++i) {
+    flags[2 * i] = all[i] || onlyX[i];
+    flags[2 * i + 1] = all[i] || onlyY[i];
+  }
+  return flags;
+}
+
+ElasticityAssembler::ElasticityAssembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet, double lambda,
+                                         double mu)
+    : mesh_(mesh), dirichlet_(std::move(dirichlet)), lambda_(lambda), mu_(mu) {
+  ownedMap_ = unknownsOf(mesh.ownedMap());
+  overlapMap_ = unknownsOf(mesh.overlapMap());
+  SIGNORINI_ASSERT(dirichlet_.size() == overlapMap_->getNodeNumElements(), "Dirichlet flags do not match the mesh");
+  dirichletView_ = Kokkos::View<int*, DeviceType>("dirichlet", dirichlet_.size());
+  auto dh = Kokkos::create_mirror_view(dirichletView_);
+  for (size_t i = 0; i < dirichlet_.size(); ++i) dh(i) = dirichlet_[i];
+  Kokkos::deep_copy(dirichletView_, dh);
+
+  const auto& dofs = mesh.cornerDofsHost;
+  const LO nc = mesh.numLocalCells();
+  std::vector<size_t> rowCount(dirichlet_.size(), 0);
+  std::vector<std::vector<GO>> cellUnknowns(nc);
+  for (LO e = 0; e < nc; ++e) {
+    std::set<LO> nodes;
+    for (int c = 0; c < 4; ++c)
+      for (int k = 0; k < 2; ++k)
+        if (dofs(e, c, k) >= 0) nodes.insert(dofs(e, c, k));
+    for (LO n : nodes)
+      for (int c = 0; c < 2; ++c) {
+        cellUnknowns[e].push_back(overlapMap_->getGlobalElement(2 * n + c));
+        rowCount[2 * n + c] += 2 * nodes.size();
+      }
+  }
+  size_t maxRow = 1;
+  for (size_t c : rowCount) maxRow = std::max(maxRow, c);
+  graph_ = Teuchos::rcp(new Graph(ownedMap_, overlapMap_, maxRow));
+  graph_->beginAssembly();
+  for (LO e = 0; e < nc; ++e)
+    for (GO r : cellUnknowns[e]) graph_->insertGlobalIndices(r, Teuchos::ArrayView<const GO>(cellUnknowns[e]));
+  graph_->endAssembly();
+  exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(overlapMap_, ownedMap_));
+  importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(ownedMap_, overlapMap_));
+}
+
+RCP<CrsMatrix> ElasticityAssembler::assembleOperator(double massCoeff, double stiffCoeff, double rho,
+                                                     const std::vector<char>& lumpAt) const {
+  Kokkos::View<int*, DeviceType> lump("lump", dirichlet_.size());
+  {
+    auto h = Kokkos::create_mirror_view(lump);
+    for (size_t i = 0; i < h.extent(0); ++i) h(i) = lumpAt.empty() ? 0 : lumpAt[i];
+    Kokkos::deep_copy(lump, h);
+  }
+  auto A = Teuchos::rcp(new Matrix(graph_));
+  A->beginAssembly();
+  {
+    if (toCol_.extent(0) != overlapMap_->getNodeNumElements()) {
+      const auto colMap = A->getColMap();
+      toCol_ = Kokkos::View<LO*, DeviceType>("toCol", overlapMap_->getNodeNumElements());
+      auto h = Kokkos::create_mirror_view(toCol_);
+      for (size_t i = 0; i < h.extent(0); ++i)
+        h(i) = colMap->getLocalElement(overlapMap_->getGlobalElement(static_cast<LO>(i)));
+      Kokkos::deep_copy(toCol_, h);
+    }
+    const auto toCol = toCol_;
+    auto local = A->getLocalMatrixDevice();
+    const auto X = mesh_.cornerCoords;
+    const auto dofs = mesh_.cornerDofs;
+    const auto wts = mesh_.cornerWeights;
+    const auto dir = dirichletView_;
+    const double cm = massCoeff * rho, cl = stiffCoeff * lambda_, cmu = stiffCoeff * mu_;
+    Kokkos::parallel_for(
+        "signorini::assembleElasticity", Kokkos::RangePolicy<ExecSpace>(0, mesh_.numLocalCells()),
+        KOKKOS_LAMBDA(const LO e) {
+          double Xe[4][2], Ke[8][8] = {}, Me[4][4] = {};
+          for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
+          for (int q = 0; q < 4; ++q) {
+            double N[4], g[2][4];
+            const double w = kGauss2Weight * kGauss2Weight *
+                             q1Gradients(Xe, gauss2Point(q & 1), gauss2Point(q >> 1), N, g[0], g[1]);
+            for (int a = 0; a < 4; ++a)
+              for (int b = 0; b < 4; ++b) {
+                Me[a][b] += w * cm * N[a] * N[b];
+                const double dot = g[0][a] * g[0][b] + g[1][a] * g[1][b];
+                for (int i = 0; i < 2; ++i)
+                  for (int j = 0; j < 2; ++j)
+                    Ke[2 * a + i][2 * b + j] +=
+                        w * (cl * g[i][a] * g[j][b] + cmu * (g[j][a] * g[i][b] + (i == j ? dot : 0.0)));
+              }
+          }
+          for (int a = 0; a < 4; ++a)
+            for (int ka = 0; ka < 2; ++ka) {
+              const LO na = dofs(e, a, ka);
+              if (na < 0) continue;
+              for (int i = 0; i < 2; ++i) {
+                const LO row = 2 * na + i;
+                if (dir(row)) continue;
+                for (int b = 0; b < 4; ++b)
+                  for (int kb = 0; kb < 2; ++kb) {
+                    const LO nb = dofs(e, b, kb);
+                    if (nb < 0) continue;
+                    const double wab = wts(e, a, ka) * wts(e, b, kb);
+                    for (int j = 0; j < 2; ++j) {
+                      const LO unknown = 2 * nb + j;
+                      if (dir(unknown)) continue;
+                      LO col = toCol(unknown);
+                      double v = wab * Ke[2 * a + i][2 * b + j];
+                      if (i == j) {
+                        double m = wab * Me[a][b];
+                        if (row != unknown && (lump(row) || lump(unknown))) {  // mass coupling to the diagonal
+                          LO diag = toCol(row);
+                          local.sumIntoValues(row, &diag, 1, &m, false, kAtomicScatter);
+                        } else {
+                          v += m;
+                        }
+                      }
+                      local.sumIntoValues(row, &col, 1, &v, false, kAtomicScatter);
+                    }
+                  }
+              }
+            }
+        });
+  }
+  A->endAssembly();
+  A->beginModify();
+  {
+    const auto colMap = A->getColMap();
+    for (LO i = 0; i < static_cast<LO>(ownedMap_->getNodeNumElements()); ++i)
+      if (dirichlet_[i]) {  // owned unknowns come first in the overlap order
+        const LO col = colMap->getLocalElement(ownedMap_->getGlobalElement(i));
+        const double one = 1.0;
+        A->replaceLocalValues(i, 1, &one, &col);
+      }
+  }
+  A->endModify();
+  return A;
+}
+
+void ElasticityAssembler::assembleLoad(const core::ExpressionList& f, double t, double scale, Vector& out,
+                                       bool accumulate) const {
+  SIGNORINI_ASSERT(f.size() == 2, "elasticity loads have two components");
+  const LO nc = mesh_.numLocalCells();
+  Kokkos::View<double* [4][2], DeviceType> fq("fq", nc);
+  {
+    auto h = Kokkos::create_mirror_view(fq);
+    const auto& X = mesh_.cornerCoordsHost;
+    for (LO e = 0; e < nc; ++e)
+      for (int q = 0; q < 4; ++q) {
+        double N[4], ds[4], dr[4];
+        q1Shape(gauss2Point(q & 1), gauss2Point(q >> 1), N, ds, dr);
+        double x = 0, y = 0;
+        for (int c = 0; c < 4; ++c) x += N[c] * X(e, c, 0), y += N[c] * X(e, c, 1);
+        for (int c = 0; c < 2; ++c) h(e, q, c) = f[c](x, y, t);
+      }
+    Kokkos::deep_copy(fq, h);
+  }
+  Vector overlap(overlapMap_);
+  {
+    auto y = overlap.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+    Kokkos::deep_copy(y, 0.0);
+    const auto X = mesh_.cornerCoords;
+    const auto dofs = mesh_.cornerDofs;
+    const auto wts = mesh_.cornerWeights;
+    const auto dir = dirichletView_;
+    Kokkos::parallel_for(
+        "signorini::assembleElasticityLoad", Kokkos::RangePolicy<ExecSpace>(0, nc), KOKKOS_LAMBDA(const LO e) {
+          double Xe[4][2], be[4][2] = {};
+          for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
+          for (int q = 0; q < 4; ++q) {
+            double N[4], gx[4], gy[4];
+            const double w = kGauss2Weight * kGauss2Weight *
+                             q1Gradients(Xe, gauss2Point(q & 1), gauss2Point(q >> 1), N, gx, gy);
+            for (int a = 0; a < 4; ++a)
+              for (int c = 0; c < 2; ++c) be[a][c] += w * scale * fq(e, q, c) * N[a];
+          }
+          for (int a = 0; a < 4; ++a)
+            for (int k = 0; k < 2; ++k) {
+              const LO n = dofs(e, a, k);
+              if (n < 0) continue;
+              for (int c = 0; c < 2; ++c)
+                if (!dir(2 * n + c)) Kokkos::atomic_add(&y(2 * n + c, 0), wts(e, a, k) * be[a][c]);
+            }
+        });
+  }
+  addExported(overlap, *exporter_, out, accumulate);
+}
+
+void ElasticityAssembler::addBoundaryLoad(const core::ExpressionList& q, double t, unsigned mask, double scale,
+                                          Vector& out) const {
+  SIGNORINI_ASSERT(q.size() == 2, "tractions have two components");
+  if (mask == 0) return;
+  std::vector<int> ids;
+  for (size_t i = 0; i < mesh_.boundaryEdges().size(); ++i)
+    if (mesh_.boundaryEdges()[i].segments & mask) ids.push_back(static_cast<int>(i));
+  const LO ne = static_cast<LO>(ids.size());
+  Kokkos::View<double* [2][2], DeviceType> qg("qg", ne);
+  Kokkos::View<double*, DeviceType> len("len", ne);
+  Kokkos::View<LO* [2], DeviceType> nodes("nodes", ne);
+  {
+    auto qh = Kokkos::create_mirror_view(qg);
+    auto lh = Kokkos::create_mirror_view(len);
+    auto nh = Kokkos::create_mirror_view(nodes);
+    for (LO k = 0; k < ne; ++k) {
+      const auto& be = mesh_.boundaryEdges()[ids[k]];
+      for (int g = 0; g < 2; ++g) {
+        const double s = gauss2Point(g);
+        for (int c = 0; c < 2; ++c)
+          qh(k, g, c) = q[c]((1 - s) * be.x[0][0] + s * be.x[1][0], (1 - s) * be.x[0][1] + s * be.x[1][1], t);
+        nh(k, g) = be.node[g];
+      }
+      lh(k) = be.length();
+    }
+    Kokkos::deep_copy(qg, qh);
+    Kokkos::deep_copy(len, lh);
+    Kokkos::deep_copy(nodes, nh);
+  }
+  Vector overlap(overlapMap_);
+  {
+    auto y = overlap.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+    Kokkos::deep_copy(y, 0.0);
+    const auto dir = dirichletView_;
+    Kokkos::parallel_for(
+        "signorini::elasticityTraction", Kokkos::RangePolicy<ExecSpace>(0, ne), KOKKOS_LAMBDA(const LO k) {
+          for (int g = 0; g < 2; ++g) {
+            const double s = gauss2Point(g);
+            for (int c = 0; c < 2; ++c) {
+              const double v = scale * kGauss2Weight * len(k) * qg(k, g, c);
+              const LO r0 = 2 * nodes(k, 0) + c, r1 = 2 * nodes(k, 1) + c;
+              if (!dir(r0)) Kokkos::atomic_add(&y(r0, 0), v * (1 - s));
+              if (!dir(r1)) Kokkos::atomic_add(&y(r1, 0), v * s);
+            }
+          }
+        });
+  }
+  addExported(overlap, *exporter_, out, true);
+}
+
+void ElasticityAssembler::zeroDirichlet(Vector& v) const {
+  auto h = v.getLocalViewHost(Tpetra::Access::ReadWrite);
+  for (size_t i = 0; i < h.extent(0); ++i)
+    if (dirichlet_[i]) h(i, 0) = 0.0;
+}
+
+void ElasticityAssembler::toOverlap(const Vector& owned, Vector& overlap) const {
+  overlap.doImport(owned, *importer_, Tpetra::INSERT);
+}
+
+std::pair<double, double> ElasticityAssembler::errorNorms(const Vector& uOwned, const core::ExpressionList& exact,
+                                                          double t) const {
+  SIGNORINI_ASSERT(exact.size() == 2, "the exact displacement has two components");
+  Vector u(overlapMap_);
+  toOverlap(uOwned, u);
+  auto uh = u.getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto& X = mesh_.cornerCoordsHost;
+  static const double gp[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
+  static const double gw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+  const double eps = 1e-6 * mesh_.hMin();
+  double l2 = 0, h1 = 0;
+  for (LO e = 0; e < mesh_.numLocalCells(); ++e) {
+    double Xe[4][2], ue[2][4];
+    for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
+    for (int c = 0; c < 2; ++c) cornerValues(mesh_, uh, e, c, ue[c]);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        double N[4], gx[4], gy[4];
+        const double w = gw[i] * gw[j] * q1Gradients(Xe, gp[i], gp[j], N, gx, gy);
+        double x = 0, y = 0;
+        for (int a = 0; a < 4; ++a) x += N[a] * Xe[a][0], y += N[a] * Xe[a][1];
+        for (int c = 0; c < 2; ++c) {
+          double v = 0, vx = 0, vy = 0;
+          for (int a = 0; a < 4; ++a) v += N[a] * ue[c][a], vx += gx[a] * ue[c][a], vy += gy[a] * ue[c][a];
+          const auto& f = exact[c];
+          const double d = v - f(x, y, t);
+          const double dx = vx - (f(x + eps, y, t) - f(x - eps, y, t)) / (2 * eps);
+          const double dy = vy - (f(x, y + eps, t) - f(x, y - eps, t)) / (2 * eps);
+          l2 += w * d * d;
+          h1 += w * (dx * dx + dy * dy);
+        }
+      }
+  }
+  double local[2] = {l2, h1}, global[2];
+  Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_SUM, 2, local, global);
+  return {std::sqrt(global[0]), std::sqrt(global[1])};
+}
+
+double ElasticityAssembler::evaluateComponent(const Vector& uOverlap, double x, double y, int c) const {
+  double s, r;
+  const LO e = mesh_.locate(x, y, s, r);
+  double local[2] = {0, 0}, global[2];
+  if (e >= 0) {
+    auto uh = uOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+    double N[4], ds[4], dr[4], ue[4];
+    q1Shape(s, r, N, ds, dr);
+    cornerValues(mesh_, uh, e, c, ue);
+    for (int a = 0; a < 4; ++a) local[0] += N[a] * ue[a];
+    local[1] = 1;
+  }
+  Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_SUM, 2, local, global);
+  return global[1] > 0 ? global[0] / global[1] : std::numeric_limits<double>::quiet_NaN();
+}
+
+RCP<MultiVector> ElasticityAssembler::rigidBodyModes() const {
+  const LO n = static_cast<LO>(mesh_.ownedMap()->getNodeNumElements());
+  // Rotation about the centroid of the owned nodes of all ranks keeps the modes well scaled.
+  double local[3] = {0, 0, static_cast<double>(n)}, global[3];
+  for (LO i = 0; i < n; ++i) local[0] += mesh_.nodeCoords()[i][0], local[1] += mesh_.nodeCoords()[i][1];
+  Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_SUM, 3, local, global);
+  const double xc = global[0] / std::max(global[2], 1.0), yc = global[1] / std::max(global[2], 1.0);
+  auto modes = Teuchos::rcp(new MultiVector(ownedMap_, 3));
+  auto h = modes->getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (LO i = 0; i < n; ++i) {
+    const double x = mesh_.nodeCoords()[i][0] - xc, y = mesh_.nodeCoords()[i][1] - yc;
+    h(2 * i, 0) = 1, h(2 * i + 1, 0) = 0;
+    h(2 * i, 1) = 0, h(2 * i + 1, 1) = 1;
+    h(2 * i, 2) = -y, h(2 * i + 1, 2) = x;
+  }
+  return modes;
+}
+
+std::array<double, 3> ElasticityAssembler::stressAt(const Vector& uOverlap, LO e, double s, double r) const {
+  auto uh = uOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  double Xe[4][2], ue[2][4], N[4], gx[4], gy[4];
+  for (int c = 0; c < 4; ++c) Xe[c][0] = mesh_.cornerCoordsHost(e, c, 0), Xe[c][1] = mesh_.cornerCoordsHost(e, c, 1);
+  for (int c = 0; c < 2; ++c) cornerValues(mesh_, uh, e, c, ue[c]);
+  q1Gradients(Xe, s, r, N, gx, gy);
+  double du[2][2] = {};  // du[i][j] = d u_i / d x_j
+  for (int a = 0; a < 4; ++a)
+    for (int i = 0; i < 2; ++i) du[i][0] += gx[a] * ue[i][a], du[i][1] += gy[a] * ue[i][a];
+  const double tr = du[0][0] + du[1][1];
+  return {lambda_ * tr + 2 * mu_ * du[0][0], lambda_ * tr + 2 * mu_ * du[1][1], mu_ * (du[0][1] + du[1][0])};
+}
+
+}  // namespace signorini::fem

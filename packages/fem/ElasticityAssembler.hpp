@@ -1,0 +1,74 @@
+#pragma once
+/// \file ElasticityAssembler.hpp
+/// Kokkos assembly of plane strain linear elasticity with vector Q1 elements (two unknowns per
+/// node, interleaved: unknown c of node i is 2 i + c) into Tpetra objects: the mass
+/// M_(a i)(b j) = int rho phi_a phi_b delta_ij and the stiffness
+/// K_(a i)(b j) = int lambda d_i phi_a d_j phi_b + mu (d_j phi_a d_i phi_b + delta_ij grad phi_a . grad phi_b),
+/// i.e. a(u, v) = int sigma(u) : eps(v) with sigma = lambda tr(eps) I + 2 mu eps (paper Sec. 6.2);
+/// body forces, surface tractions, error norms and point values. Hanging nodes are eliminated
+/// through the mesh's corner constraints; Dirichlet unknowns (per component) get identity rows.
+#include <array>
+
+#include <Tpetra_Export.hpp>
+#include <Tpetra_FECrsGraph.hpp>
+#include <Tpetra_Import.hpp>
+
+#include "Assembler.hpp"
+
+namespace signorini::fem {
+
+class ElasticityAssembler : public Assembler {
+ public:
+  using Graph = Tpetra::FECrsGraph<LO, GO, Node>;
+  /// \param dirichlet  flags on the overlap unknowns (2 per overlap node), e.g. from dirichletUnknowns().
+  /// \param lambda, mu Lame parameters [force / area].
+  ElasticityAssembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet, double lambda, double mu);
+
+  /// The Dirichlet unknowns of a problem: every component on "Dirichlet Segments", component c on
+  /// "Dirichlet X/Y Segments".
+  static std::vector<char> dirichletUnknowns(const mesh::Q1Mesh& mesh, const ProblemData& problem);
+
+  const mesh::Q1Mesh& mesh() const override { return mesh_; }
+  int components() const override { return 2; }
+  RCP<const Map> ownedMap() const override { return ownedMap_; }
+  RCP<const Map> overlapMap() const override { return overlapMap_; }
+  const std::vector<char>& dirichletFlags() const override { return dirichlet_; }
+  RCP<const Graph> graph() const { return graph_; }
+
+  /// massCoeff * M_rho + stiffCoeff * K with the constructor's Lame parameters.
+  RCP<CrsMatrix> assembleOperator(double massCoeff, double stiffCoeff, double rho,
+                                  const std::vector<char>& lumpAt = {}) const;
+  RCP<CrsMatrix> assembleSystem(double massCoeff, double stiffCoeff, const ProblemData& problem,
+                                const std::vector<char>& lumpAt = {}) const override {
+    return assembleOperator(massCoeff, stiffCoeff, problem.density, lumpAt);
+  }
+  void assembleLoad(const core::ExpressionList& f, double t, double scale, Vector& out,
+                    bool accumulate = false) const override;
+  void addBoundaryLoad(const core::ExpressionList& q, double t, unsigned mask, double scale,
+                       Vector& out) const override;
+  void zeroDirichlet(Vector& v) const override;
+  void toOverlap(const Vector& owned, Vector& overlap) const override;
+  std::pair<double, double> errorNorms(const Vector& uOwned, const core::ExpressionList& exact,
+                                       double t) const override;
+  double evaluateComponent(const Vector& uOverlap, double x, double y, int c) const override;
+
+  /// The three rigid body modes (translations in x and y, rotation about the origin of the
+  /// coordinates' centroid) as an owned multivector: MueLu's near-nullspace for elasticity.
+  RCP<MultiVector> rigidBodyModes() const;
+  /// Nodal stress sigma_xx, sigma_yy, sigma_xy at a point of a local cell (reference
+  /// coordinates s, r) for overlap values \p uOverlap; for tests and output.
+  std::array<double, 3> stressAt(const Vector& uOverlap, LO cell, double s, double r) const;
+
+ private:
+  const mesh::Q1Mesh& mesh_;
+  std::vector<char> dirichlet_;
+  double lambda_, mu_;
+  RCP<const Map> ownedMap_, overlapMap_;
+  Kokkos::View<int*, DeviceType> dirichletView_;
+  RCP<Graph> graph_;
+  mutable Kokkos::View<LO*, DeviceType> toCol_;
+  RCP<const Tpetra::Export<LO, GO, Node>> exporter_;
+  RCP<const Tpetra::Import<LO, GO, Node>> importer_;
+};
+
+}  // namespace signorini::fem

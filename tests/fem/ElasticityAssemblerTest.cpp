@@ -1,0 +1,149 @@
+// Plane strain elasticity with vector Q1 elements: rigid body motions produce no stress, a linear
+// displacement field passes the patch test (K u = the tractions of its constant stress, every node,
+// hanging nodes included), the mass matrix holds the mass twice (two components).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "../TestMesh.hpp"
+#include "ElasticityAssembler.hpp"
+#include "Expression.hpp"
+
+using namespace signorini;
+
+namespace {
+
+constexpr unsigned kLeft = 1, kRight = 2, kBottom = 4, kTop = 8;
+constexpr double kLambda = 2.5, kMu = 1.25;
+
+/// Owned nodal values of the field (fx, fy).
+void interpolate(const fem::ElasticityAssembler& a, double (*fx)(double, double), double (*fy)(double, double),
+                 Vector& v) {
+  auto h = v.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  const auto& X = a.mesh().nodeCoords();
+  for (size_t i = 0; i < h.extent(0) / 2; ++i) {
+    h(2 * i, 0) = fx(X[i][0], X[i][1]);
+    h(2 * i + 1, 0) = fy(X[i][0], X[i][1]);
+  }
+}
+
+class ElasticityAssembly : public ::testing::TestWithParam<bool> {};  // with hanging nodes or not
+
+TEST_P(ElasticityAssembly, RigidBodyMotionsProduceNoStress) {
+  test::TestMesh tm(-1.0, 2.0, 0.0, 1.0, 3, 1, 1);
+  if (GetParam()) tm.refineCorner();
+  const auto& m = tm.build();
+  fem::ElasticityAssembler asmb(m, std::vector<char>(2 * m.overlapMap()->getNodeNumElements(), 0), kLambda, kMu);
+  const auto K = asmb.assembleOperator(0.0, 1.0, 1.0);
+  const auto modes = asmb.rigidBodyModes();
+  MultiVector Kr(asmb.ownedMap(), 3);
+  K->apply(*modes, Kr);
+  std::vector<double> norms(3), scale(3);
+  Kr.normInf(norms);
+  modes->normInf(scale);
+  for (int k = 0; k < 3; ++k) EXPECT_LT(norms[k], 1e-12 * scale[k] * (kLambda + 2 * kMu)) << "mode " << k;
+  // The rotation's stress vanishes pointwise too.
+  Vector rot(asmb.overlapMap());
+  asmb.toOverlap(*modes->getVector(2), rot);
+  for (LO e = 0; e < m.numLocalCells(); e += 3)
+    for (double s : {0.0, 0.3, 1.0})
+      for (double sxy : asmb.stressAt(rot, e, s, 1.0 - s)) EXPECT_NEAR(sxy, 0.0, 1e-12);
+}
+
+TEST_P(ElasticityAssembly, LinearFieldPassesThePatchTest) {
+  test::TestMesh tm(0.0, 2.0, -1.0, 0.5, 2, 1, 1);
+  if (GetParam()) tm.refineCorner();
+  const auto& m = tm.build();
+  fem::ElasticityAssembler asmb(m, std::vector<char>(2 * m.overlapMap()->getNodeNumElements(), 0), kLambda, kMu);
+  const auto K = asmb.assembleOperator(0.0, 1.0, 1.0);
+  // u = (0.1 + 0.3 x - 0.2 y, -0.4 + 0.5 x + 0.7 y): constant strain and stress.
+  const double a1 = 0.3, a2 = -0.2, b1 = 0.5, b2 = 0.7;
+  const double sxx = kLambda * (a1 + b2) + 2 * kMu * a1, syy = kLambda * (a1 + b2) + 2 * kMu * b2,
+               sxy = kMu * (a2 + b1);
+  Vector u(asmb.ownedMap()), Ku(asmb.ownedMap()), F(asmb.ownedMap());
+  interpolate(asmb, [](double x, double y) { return 0.1 + 0.3 * x - 0.2 * y; },
+              [](double x, double y) { return -0.4 + 0.5 * x + 0.7 * y; }, u);
+  K->apply(u, Ku);
+  auto traction = [](double qx, double qy) {
+    return core::ExpressionList(std::to_string(qx) + ", " + std::to_string(qy), "test", 2);
+  };
+  F.putScalar(0.0);
+  asmb.addBoundaryLoad(traction(-sxx, -sxy), 0.0, kLeft, 1.0, F);
+  asmb.addBoundaryLoad(traction(sxx, sxy), 0.0, kRight, 1.0, F);
+  asmb.addBoundaryLoad(traction(-sxy, -syy), 0.0, kBottom, 1.0, F);
+  asmb.addBoundaryLoad(traction(sxy, syy), 0.0, kTop, 1.0, F);
+  Ku.update(-1.0, F, 1.0);
+  EXPECT_LT(Ku.normInf(), 1e-6 * F.normInf());  // std::to_string keeps 6 digits of the tractions
+  // Energy: u^T K u = |Omega| sigma : eps.
+  K->apply(u, Ku);
+  const double area = 2.0 * 1.5;
+  EXPECT_NEAR(Ku.dot(u), area * (sxx * a1 + syy * b2 + 2 * sxy * 0.5 * (a2 + b1)), 1e-10);
+  // Stress at points of the cells.
+  Vector uo(asmb.overlapMap());
+  asmb.toOverlap(u, uo);
+  for (LO e = 0; e < m.numLocalCells(); ++e) {
+    const auto s = asmb.stressAt(uo, e, 0.25, 0.75);
+    EXPECT_NEAR(s[0], sxx, 1e-12);
+    EXPECT_NEAR(s[1], syy, 1e-12);
+    EXPECT_NEAR(s[2], sxy, 1e-12);
+  }
+  // Point values reproduce the field.
+  EXPECT_NEAR(asmb.evaluateComponent(uo, 1.3, 0.2, 0), 0.1 + 0.3 * 1.3 - 0.2 * 0.2, 1e-12);
+  EXPECT_NEAR(asmb.evaluateComponent(uo, 1.3, 0.2, 1), -0.4 + 0.5 * 1.3 + 0.7 * 0.2, 1e-12);
+}
+
+TEST_P(ElasticityAssembly, MassHoldsTheMassOncePerComponent) {
+  test::TestMesh tm(0.0, 2.0, -1.0, 0.5, 2, 1, 2);
+  if (GetParam()) tm.refineCorner();
+  const auto& m = tm.build();
+  fem::ElasticityAssembler asmb(m, std::vector<char>(2 * m.overlapMap()->getNodeNumElements(), 0), kLambda, kMu);
+  const double rho = 3.0;
+  const auto M = asmb.assembleOperator(1.0, 0.0, rho);
+  const auto modes = asmb.rigidBodyModes();
+  Vector Mx(asmb.ownedMap());
+  M->apply(*modes->getVector(0), Mx);  // translation in x: e_x^T M e_x = rho |Omega|, no y part
+  EXPECT_NEAR(Mx.dot(*modes->getVector(0)), rho * 3.0, 1e-12);
+  EXPECT_NEAR(Mx.dot(*modes->getVector(1)), 0.0, 1e-14);
+  // int f . phi for a constant body force (1, -2): the sum of the load is f |Omega|.
+  Vector b(asmb.ownedMap());
+  asmb.assembleLoad(core::ExpressionList("1, -2", "test", 2), 0.0, 1.0, b);
+  EXPECT_NEAR(b.dot(*modes->getVector(0)), 3.0, 1e-12);
+  EXPECT_NEAR(b.dot(*modes->getVector(1)), -6.0, 1e-12);
+}
+
+TEST_P(ElasticityAssembly, DirichletUnknownsPerComponent) {
+  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
+  if (GetParam()) tm.refineCorner();
+  const auto& m = tm.build();
+  // Rollers on the left (u_x = 0) and a clamp at the bottom.
+  std::vector<char> flags(2 * m.overlapMap()->getNodeNumElements(), 0);
+  const auto left = m.nodesOnSegments(kLeft), bottom = m.nodesOnSegments(kBottom);
+  for (size_t i = 0; i < left.size(); ++i) {
+    flags[2 * i] = left[i] || bottom[i];
+    flags[2 * i + 1] = bottom[i];
+  }
+  fem::ElasticityAssembler asmb(m, flags, kLambda, kMu);
+  const auto A = asmb.assembleOperator(1.0, 1.0, 1.0);
+  // Identity rows on the Dirichlet unknowns, symmetric elsewhere: A e_i = e_i for them.
+  Vector x(asmb.ownedMap()), y(asmb.ownedMap()), z(asmb.ownedMap());
+  x.randomize();
+  y.randomize();
+  asmb.zeroDirichlet(x);
+  Vector Ax(asmb.ownedMap()), Ay(asmb.ownedMap());
+  A->apply(x, Ax);
+  A->apply(y, Ay);
+  z.assign(y);
+  asmb.zeroDirichlet(z);
+  EXPECT_NEAR(Ax.dot(z), Ay.dot(x), 1e-12 * Ax.norm2() * z.norm2());  // x^T A z = z^T A x
+  auto h = Ax.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (size_t i = 0; i < h.extent(0); ++i)
+    if (flags[i]) EXPECT_EQ(h(i, 0), 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, ElasticityAssembly, ::testing::Values(false, true));
+
+}  // namespace
