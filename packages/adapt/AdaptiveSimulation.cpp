@@ -83,7 +83,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       double etaMax = 0;
       dynamics::StepHook hook = [&](const dynamics::StepView& s) {
         const auto r = estimator.estimate(estimate::EstimatorInput{
-            s.forest, s.mesh, s.assembler, s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor,
+            s.forest, s.mesh, dynamic_cast<const fem::Q1Assembler&>(s.assembler), s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor,
             s.lambda, [&](const RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
               // Every CG iterate is an extension of the boundary data, so its norm bounds s1 from above and
               // decreases to s1: a relative residual of 1e-4 leaves s1 accurate to about 1e-8 relative.

@@ -22,6 +22,7 @@
 #include "Newmark.hpp"
 #include "PhaseTimers.hpp"
 #include "ProblemData.hpp"
+#include "ElasticityAssembler.hpp"
 #include "Q1Assembler.hpp"
 #include "MeshTransfer.hpp"
 #include "ResultWriter.hpp"
@@ -82,6 +83,28 @@ void ensureWritableDirectory(const std::string& dir, const Comm& comm) {
   if (!ok) SIGNORINI_USER_ERROR("Output/Directory: cannot write to '" << dir << "'");
 }
 
+/// Component c of a vector with nc unknowns per node, as a vector on the node map \p nodes (owned
+/// or overlap: the unknowns follow the nodes' local order).
+RCP<Vector> component(const Vector& x, int c, int nc, const RCP<const Map>& nodes) {
+  auto out = Teuchos::rcp(new Vector(nodes));
+  auto xh = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto oh = out->getLocalViewHost(Tpetra::Access::OverwriteAll);
+  for (size_t i = 0; i < oh.extent(0); ++i) oh(i, 0) = xh(nc * i + c, 0);
+  return out;
+}
+
+/// The inverse of component(): one vector of parts.size() unknowns per node.
+RCP<Vector> interleave(const std::vector<RCP<Vector>>& parts, const RCP<const Map>& unknowns) {
+  auto out = Teuchos::rcp(new Vector(unknowns));
+  auto oh = out->getLocalViewHost(Tpetra::Access::OverwriteAll);
+  const size_t nc = parts.size();
+  for (size_t c = 0; c < nc; ++c) {
+    auto ph = parts[c]->getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (size_t i = 0; i < ph.extent(0); ++i) oh(nc * i + c, 0) = ph(i, 0);
+  }
+  return out;
+}
+
 }  // namespace
 
 core::ParameterList Simulation::getValidParameters() {
@@ -99,7 +122,7 @@ core::ParameterList Simulation::getValidParameters() {
 struct Discretisation {
   std::shared_ptr<mesh::Forest> forest;
   std::unique_ptr<mesh::Q1Mesh> mesh;
-  std::unique_ptr<fem::Q1Assembler> assembler;
+  std::unique_ptr<fem::Assembler> assembler;
   RCP<CrsMatrix> M, K, A;
   std::unique_ptr<solvers::LinearSolver> solver, massSolver;
   std::unique_ptr<fem::ContactCoupling> coupling;
@@ -132,18 +155,25 @@ struct Simulation::Impl {
     }
     {
       auto scope = timers.scope("assembly");
-      d->assembler = std::make_unique<fem::Q1Assembler>(*d->mesh, d->mesh->nodesOnSegments(problem->dirichletMask));
-      const double rho = problem->density, kappa = problem->stiffness, k = newmark->timeStep;
+      if (problem->components() == 1)
+        d->assembler = std::make_unique<fem::Q1Assembler>(*d->mesh, d->mesh->nodesOnSegments(problem->dirichletMask));
+      else
+        d->assembler = std::make_unique<fem::ElasticityAssembler>(
+            *d->mesh, fem::ElasticityAssembler::dirichletUnknowns(*d->mesh, *problem), problem->lameLambda,
+            problem->lameMu);
+      const double k = newmark->timeStep;
       std::vector<char> lump;
       if (problem->hasObstacle && deck.sublist("Contact").get<std::string>("Boundary Mass") == "lumped")
-        lump = d->mesh->nodesOnSegments(problem->contactMask);
-      d->M = d->assembler->assembleOperator(1.0, 0.0, rho, kappa, lump);
-      d->K = d->assembler->assembleOperator(0.0, 1.0, rho, kappa);
-      d->A = d->assembler->assembleOperator(1.0, newmark->beta * k * k, rho, kappa, lump);
+        lump = d->assembler->unknownsOnSegments(problem->contactMask);
+      d->M = d->assembler->assembleSystem(1.0, 0.0, *problem, lump);
+      d->K = d->assembler->assembleSystem(0.0, 1.0, *problem);
+      d->A = d->assembler->assembleSystem(1.0, newmark->beta * k * k, *problem, lump);
     }
     d->courant = problem->waveSpeed() * newmark->timeStep / d->mesh->hMin();
     auto scope = timers.scope("preconditioner");
     d->solver = std::make_unique<solvers::LinearSolver>(deck.sublist("Linear Solver"), comm);
+    if (auto* elasticity = dynamic_cast<const fem::ElasticityAssembler*>(d->assembler.get()))
+      d->solver->setNearNullspace(elasticity->rigidBodyModes(), 2);
     d->solver->setOperator(d->A, d->courant);
     auto massParams = deck.sublist("Linear Solver");
     massParams.set("Preconditioner", "Jacobi");
@@ -153,8 +183,11 @@ struct Simulation::Impl {
       const auto size = deck.sublist("Contact").get<std::string>("Multiplier Segments") == "H = h"
                             ? fem::ContactCoupling::SegmentSize::OneEdge
                             : fem::ContactCoupling::SegmentSize::TwoEdges;
+      fem::ContactUnknowns unknowns{d->assembler->ownedMap(), d->assembler->overlapMap(), problem->components(),
+                                    problem->components() == 1 ? 0 : problem->contactComponent,
+                                    problem->components() == 1 ? 1.0 : problem->contactSign};
       d->coupling = std::make_unique<fem::ContactCoupling>(*d->mesh, problem->contactMask, size,
-                                                           d->assembler->dirichletFlags());
+                                                           d->assembler->dirichletFlags(), unknowns);
       if (d->coupling->numSegments() == 0)
         SIGNORINI_USER_ERROR("Problem/Contact Segments: the named segments contain no boundary edge of the mesh");
       d->qp = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), coarse->diameter());
@@ -167,10 +200,10 @@ struct Simulation::Impl {
     return d;
   }
 
-  /// L2 projection of an expression at t = 0 (M x = int f phi).
-  void projectL2(Discretisation& d, const core::Expression& f, Vector& out) {
-    Vector b(d.mesh->ownedMap());
-    d.assembler->assembleLoad(f, 0.0, 1.0, b);
+  /// L2 projection of an expression at t = 0 (M_rho x = int rho f phi).
+  void projectL2(Discretisation& d, const core::ExpressionList& f, Vector& out) {
+    Vector b(d.assembler->ownedMap());
+    d.assembler->assembleLoad(f, 0.0, problem->density, b);
     out.putScalar(0.0);
     d.massSolver->solve(b, out);
   }
@@ -179,7 +212,7 @@ struct Simulation::Impl {
   void initialState(Discretisation& d, Vector& u, Vector& v, Vector& a) {
     projectL2(d, problem->initialDisplacement, u);
     projectL2(d, problem->initialVelocity, v);
-    Vector rhs(d.mesh->ownedMap()), Ku(d.mesh->ownedMap());
+    Vector rhs(d.assembler->ownedMap()), Ku(d.assembler->ownedMap());
     d.assembler->assembleLoad(problem->bodyForce, 0.0, 1.0, rhs);
     d.assembler->addBoundaryLoad(problem->neumannData, 0.0, problem->neumannMask, 1.0, rhs);
     d.K->apply(u, Ku);
@@ -203,7 +236,7 @@ struct Simulation::Impl {
   }
 
   double energy(const Discretisation& d, const Vector& u, const Vector& v) const {
-    Vector tmp(d.mesh->ownedMap());
+    Vector tmp(d.assembler->ownedMap());
     d.M->apply(v, tmp);
     const double kin = 0.5 * tmp.dot(v);
     d.K->apply(u, tmp);
@@ -212,7 +245,7 @@ struct Simulation::Impl {
   /// The energy the Newmark scheme with alpha = 1/2 conserves without contact and loads:
   /// kinetic + strain + (beta - 1/4) k^2 / 2 a^T M a.
   double newmarkEnergy(const Discretisation& d, const Vector& u, const Vector& v, const Vector& a) const {
-    Vector tmp(d.mesh->ownedMap());
+    Vector tmp(d.assembler->ownedMap());
     d.M->apply(a, tmp);
     const double k = newmark->timeStep;
     return energy(d, u, v) + (newmark->beta - 0.25) * 0.5 * k * k * tmp.dot(a);
@@ -223,18 +256,37 @@ struct Simulation::Impl {
   void transfer(const Discretisation& from, Discretisation& to, bool interpolate, RCP<Vector>& u, RCP<Vector>& v,
                 RCP<Vector>& a, std::vector<double>& lambda) {
     auto scope = timers.scope("transfer");
-    fem::MeshTransfer t(*from.forest, *from.mesh, {u.get(), v.get(), a.get()}, *to.forest, *to.mesh);
-    std::vector<RCP<Vector>> fields;
+    const int nc = problem->components();
+    // Vector fields move component by component (the transfer is the scalar one per component).
+    std::vector<RCP<Vector>> parts;
+    for (const auto& f : {u, v, a})
+      for (int c = 0; c < nc; ++c) parts.push_back(nc == 1 ? f : component(*f, c, nc, from.mesh->ownedMap()));
+    std::vector<const Vector*> raw;
+    for (const auto& p : parts) raw.push_back(p.get());
+    fem::MeshTransfer t(*from.forest, *from.mesh, raw, *to.forest, *to.mesh);
+    std::vector<RCP<Vector>> moved;
     if (interpolate) {
-      fields = t.interpolate();
-      for (auto& f : fields) to.assembler->zeroDirichlet(*f);
+      moved = t.interpolate();
     } else {
-      fields = t.projectionLoads(*to.assembler);
-      for (auto& b : fields) {
-        auto x = Teuchos::rcp(new Vector(to.mesh->ownedMap()));
-        to.massSolver->solve(*b, *x);
-        b = x;
+      const auto* scalar = dynamic_cast<const fem::Q1Assembler*>(to.assembler.get());
+      std::unique_ptr<fem::Q1Assembler> nodal;  // vector problems: loads per component, no Dirichlet rows
+      if (!scalar) {
+        nodal = std::make_unique<fem::Q1Assembler>(*to.mesh, std::vector<char>(to.mesh->overlapMap()->getNodeNumElements(), 0));
+        scalar = nodal.get();
       }
+      moved = t.projectionLoads(*scalar);
+    }
+    std::vector<RCP<Vector>> fields;
+    for (int f = 0; f < 3; ++f) {
+      auto x = nc == 1 ? moved[f] : interleave({moved.begin() + nc * f, moved.begin() + nc * (f + 1)}, to.assembler->ownedMap());
+      to.assembler->zeroDirichlet(*x);
+      if (!interpolate) {  // M_rho x = rho int u_old phi
+        x->scale(problem->density);
+        auto y = Teuchos::rcp(new Vector(to.assembler->ownedMap()));
+        to.massSolver->solve(*x, *y);
+        x = y;
+      }
+      fields.push_back(x);
     }
     u = fields[0];
     v = fields[1];
@@ -300,7 +352,7 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     if (!any) SIGNORINI_USER_ERROR("Output/Probes/" << name << ": point (" << p[0] << ", " << p[1] << ") is outside the mesh");
   }
   {
-    Vector u(d->mesh->ownedMap()), v(d->mesh->ownedMap()), a(d->mesh->ownedMap());
+    Vector u(d->assembler->ownedMap()), v(d->assembler->ownedMap()), a(d->assembler->ownedMap());
     I.initialState(*d, u, v, a);
     I.checkInitialGap(*d, u);
   }
@@ -342,7 +394,9 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                       "contact_force", "max_lambda", "min_gap", "max_complementarity",
                                       "time_assembly", "time_contact", "time_output", "time_unconstrained",
                                       "time_remesh", "time_estimate"};
-  for (const auto& p : I.probes) columns.push_back("probe:" + p.first);
+  const int nc = I.problem->components();
+  for (const auto& p : I.probes)
+    for (int c = 0; c < nc; ++c) columns.push_back("probe:" + p.first + (nc == 1 ? "" : c == 0 ? ":x" : ":y"));
   if (I.problem->exactSolution) {
     columns.push_back("error_l2");
     columns.push_back("error_h1");
@@ -365,7 +419,9 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   std::vector<std::string> cellNames = {"level"};
   if (!options.cellFieldName.empty()) cellNames.push_back(options.cellFieldName);
   if (outParams.get<bool>("Write Exodus") && options.writeExodus)
-    exodus = std::make_unique<ResultWriter>(base, std::vector<std::string>{"u", "v", "a"}, cellNames,
+    exodus = std::make_unique<ResultWriter>(base, nc == 1 ? std::vector<std::string>{"u", "v", "a"}
+                                                          : std::vector<std::string>{"u_x", "u_y", "v_x", "v_y", "a_x", "a_y"},
+                                            cellNames,
                                             std::vector<std::string>{"lambda", "gap"}, I.comm);
 
   RunSummary summary;
@@ -381,8 +437,9 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   } else {
     d = I.build(meshes[0], 1);
   }
-  RCP<Vector> u = Teuchos::rcp(new Vector(d->mesh->ownedMap())), v = Teuchos::rcp(new Vector(d->mesh->ownedMap())),
-              a = Teuchos::rcp(new Vector(d->mesh->ownedMap()));
+  RCP<Vector> u = Teuchos::rcp(new Vector(d->assembler->ownedMap())),
+              v = Teuchos::rcp(new Vector(d->assembler->ownedMap())),
+              a = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
   I.initialState(*d, *u, *v, *a);
   I.checkInitialGap(*d, *u);
   std::vector<double> lambda(d->coupling ? d->coupling->numSegments() : 0, 0.0), gap;
@@ -397,18 +454,19 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                           double tFree, const StepExtras& extras) {
     auto scope = I.timers.scope("output");
     const auto t0 = std::chrono::steady_clock::now();
-    const auto dofs = static_cast<double>(d->mesh->numGlobalNodes());
+    const auto dofs = static_cast<double>(d->assembler->ownedMap()->getGlobalNumElements());
     double force = 0;
     if (d->coupling)
       for (int j = 0; j < d->coupling->numSegments(); ++j) force -= toPhysical * lambda[j] * d->coupling->segmentLength()[j];
-    Vector uOverlap(d->mesh->overlapMap());
+    Vector uOverlap(d->assembler->overlapMap());
     d->assembler->toOverlap(*u, uOverlap);
     std::vector<double> row = {double(step), t, dofs, double(qr.active), double(qr.activeSetIterations),
                                double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),
                                I.energy(*d, *u, *v), I.newmarkEnergy(*d, *u, *v, *a), force,
                                toPhysical * qr.maxLambda, qr.minGap, toPhysical * qr.maxComplementarity, tAssembly,
                                tContact, 0.0, tFree, tRemesh, tEstimate};
-    for (const auto& p : I.probes) row.push_back(d->assembler->evaluate(uOverlap, p.second[0], p.second[1]));
+    for (const auto& p : I.probes)
+      for (int c = 0; c < nc; ++c) row.push_back(d->assembler->evaluateComponent(uOverlap, p.second[0], p.second[1], c));
     if (I.problem->exactSolution) {
       const auto [l2, h1] = d->assembler->errorNorms(*u, *I.problem->exactSolution, t);
       row.push_back(l2);
@@ -417,7 +475,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     for (size_t c = 0; c < options.extraColumns.size(); ++c)
       row.push_back(c < extras.columns.size() ? extras.columns[c] : 0.0);
     if (exodus && (step % exodusInterval == 0 || step == nSteps)) {
-      Vector vOverlap(d->mesh->overlapMap()), aOverlap(d->mesh->overlapMap());
+      Vector vOverlap(d->assembler->overlapMap()), aOverlap(d->assembler->overlapMap());
       d->assembler->toOverlap(*v, vOverlap);
       d->assembler->toOverlap(*a, aOverlap);
       std::vector<std::vector<double>> cell = {std::vector<double>(d->mesh->cellLevel().begin(), d->mesh->cellLevel().end())};
@@ -433,7 +491,13 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
           contact[0].push_back(toPhysical * lambda[j]);
           contact[1].push_back(gap[j] / d->coupling->segmentLength()[j]);
         }
-      exodus->write(d->builtAtStep, *d->mesh, t, {&uOverlap, &vOverlap, &aOverlap}, cell, contactEdges, contact);
+      std::vector<RCP<Vector>> parts;
+      for (const Vector* f : {&uOverlap, &vOverlap, &aOverlap})
+        for (int c = 0; c < nc; ++c)
+          parts.push_back(nc == 1 ? Teuchos::rcpFromRef(const_cast<Vector&>(*f)) : component(*f, c, nc, d->mesh->overlapMap()));
+      std::vector<const Vector*> nodal;
+      for (const auto& p : parts) nodal.push_back(p.get());
+      exodus->write(d->builtAtStep, *d->mesh, t, nodal, cell, contactEdges, contact);
     }
     row[16] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (csv) csv->row(row);
@@ -451,8 +515,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         ++summary.meshChanges;
       }
       tRemesh = std::chrono::duration<double>(std::chrono::steady_clock::now() - tR0).count();
-      const auto owned = d->mesh->ownedMap();
-      summary.totalDofs += static_cast<long long>(d->mesh->numGlobalNodes());
+      const auto owned = d->assembler->ownedMap();
+      summary.totalDofs += static_cast<long long>(owned->getGlobalNumElements());
       Vector F(owned), pred(owned), load(owned), uOld(owned);
       const auto tA0 = std::chrono::steady_clock::now();
       {
@@ -514,7 +578,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       if (n % progress == 0 || n == nSteps) {
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         core::rootOut(rank) << std::fixed << std::setprecision(4) << "  step " << n << "/" << nSteps << "  t = " << t
-                            << "  dofs = " << d->mesh->numGlobalNodes() << "  active = " << qr.active
+                            << "  dofs = " << d->assembler->ownedMap()->getGlobalNumElements() << "  active = " << qr.active
                             << "  qp it = " << qr.activeSetIterations << "  lin it = " << qr.linearIterations
                             << std::setprecision(1) << "  elapsed " << elapsed << " s  remaining ~"
                             << elapsed / n * (nSteps - n) << " s" << std::endl;
@@ -532,7 +596,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   if (exodus)
     for (const auto& f : exodus->close()) summary.files.push_back(f);
   summary.steps = nSteps;
-  summary.dofsPerStep = static_cast<long long>(d->mesh->numGlobalNodes());
+  summary.dofsPerStep = static_cast<long long>(d->assembler->ownedMap()->getGlobalNumElements());
   summary.phaseSeconds = I.timers.all();
   summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return summary;

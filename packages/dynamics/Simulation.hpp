@@ -37,7 +37,7 @@ struct StepView {
   double time, timeStep, beta;
   const mesh::Forest& forest;
   const mesh::Q1Mesh& mesh;
-  const fem::Q1Assembler& assembler;
+  const fem::Assembler& assembler;       ///< fem::Q1Assembler (scalar wave) or fem::ElasticityAssembler
   const fem::ContactCoupling* coupling;  ///< null without obstacle
   const fem::ProblemData& problem;
   const Vector& u;                       ///< u_h^n

@@ -23,7 +23,7 @@ constexpr double kGauss3Point[3] = {0.11270166537925831, 0.5, 0.8872983346207416
 }  // namespace
 
 ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask, SegmentSize size,
-                                 const std::vector<char>& dirichlet)
+                                 const std::vector<char>& dirichlet, const Unknowns& unknowns)
     : comm_(mesh.comm()) {
   const auto& bedges = mesh.boundaryEdges();
   std::vector<double> mine;
@@ -152,19 +152,24 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
   localEdgeSegment_.assign(bedges.size(), -1);
   for (size_t k = 0; k < localIds.size(); ++k) localEdgeSegment_[localIds[k]] = edgeSegment_[myOffset + static_cast<int>(k)];
 
-  // B as a finite element matrix: rows are nodes (owned + shared), columns are segments.
-  const auto overlap = mesh.overlapMap();
+  // B as a finite element matrix: rows are unknowns (owned + shared), columns are segments.
+  const auto ownedRows = unknowns.owned ? unknowns.owned : mesh.ownedMap();
+  const auto overlap = unknowns.overlap ? unknowns.overlap : mesh.overlapMap();
+  const int nc = unknowns.components, comp = unknowns.component;
+  SIGNORINI_ASSERT(dirichlet.size() == overlap->getNodeNumElements(), "Dirichlet flags do not match the unknowns");
+  auto row = [&](LO node) { return static_cast<LO>(nc * node + comp); };
   using Graph = Tpetra::FECrsGraph<LO, GO, Node>;
   using FEMatrix = Tpetra::FECrsMatrix<Scalar, LO, GO, Node>;
-  auto graph = Teuchos::rcp(new Graph(mesh.ownedMap(), overlap, 4));
+  auto graph = Teuchos::rcp(new Graph(ownedRows, overlap, 4));
   graph->beginAssembly();
   for (size_t k = 0; k < localIds.size(); ++k) {
     const auto& be = bedges[localIds[k]];
     const GO seg = localEdgeSegment_[localIds[k]];
     for (int p = 0; p < 2; ++p)
-      if (!dirichlet[be.node[p]]) graph->insertGlobalIndices(overlap->getGlobalElement(be.node[p]), Teuchos::tuple(seg));
+      if (!dirichlet[row(be.node[p])])
+        graph->insertGlobalIndices(overlap->getGlobalElement(row(be.node[p])), Teuchos::tuple(seg));
   }
-  graph->endAssembly(segmentMap_, mesh.ownedMap());
+  graph->endAssembly(segmentMap_, ownedRows);
   auto B = Teuchos::rcp(new FEMatrix(graph));
   B->beginAssembly();
   {
@@ -181,7 +186,7 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
       for (int p = 0; p < 2; ++p) {
         Xh(k, p, 0) = be.x[p][0];
         Xh(k, p, 1) = be.x[p][1];
-        rowsh(k, p) = dirichlet[be.node[p]] ? -1 : be.node[p];
+        rowsh(k, p) = dirichlet[row(be.node[p])] ? -1 : row(be.node[p]);
       }
       colh(k) = colMap->getLocalElement(localEdgeSegment_[localIds[k]]);
     }
@@ -189,11 +194,12 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
     Kokkos::deep_copy(rows, rowsh);
     Kokkos::deep_copy(col, colh);
     auto local = B->getLocalMatrixDevice();
-    // int_E phi_i ds = |E| / 2 for both end points of a straight edge.
+    const double sign = unknowns.sign;
+    // sign int_E phi_i ds = sign |E| / 2 for both end points of a straight edge.
     Kokkos::parallel_for(
         "signorini::assembleContactCoupling", Kokkos::RangePolicy<ExecSpace>(0, ne), KOKKOS_LAMBDA(const LO k) {
           const double dx = X(k, 1, 0) - X(k, 0, 0), dy = X(k, 1, 1) - X(k, 0, 1);
-          double half = 0.5 * Kokkos::Experimental::sqrt(dx * dx + dy * dy);
+          double half = 0.5 * sign * Kokkos::Experimental::sqrt(dx * dx + dy * dy);
           LO c = col(k);
           for (int p = 0; p < 2; ++p)
             if (rows(k, p) >= 0) local.sumIntoValues(rows(k, p), &c, 1, &half, false, kAtomicScatter);

@@ -15,12 +15,24 @@
 
 namespace signorini::fem {
 
+/// Which unknowns a contact constraint acts on: component \p component of each node (of
+/// \p components per node, numbered as in fem::Assembler), with \p sign: sign u_c >= g.
+/// Null maps: the mesh's node maps (one unknown per node).
+struct ContactUnknowns {
+  RCP<const Map> owned, overlap;
+  int components = 1, component = 0;
+  double sign = 1.0;
+};
+
 class ContactCoupling {
  public:
   enum class SegmentSize { TwoEdges, OneEdge };
+  using Unknowns = ContactUnknowns;
 
-  /// Segments of the boundary edges in \p contactMask; rows of Dirichlet nodes stay empty.
-  ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask, SegmentSize size, const std::vector<char>& dirichlet);
+  /// Segments of the boundary edges in \p contactMask; rows of Dirichlet unknowns (flags on the
+  /// overlap unknowns) stay empty.
+  ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask, SegmentSize size, const std::vector<char>& dirichlet,
+                  const Unknowns& unknowns = Unknowns());
 
   int numSegments() const { return static_cast<int>(length_.size()); }
   /// |E_j| [length], replicated.
@@ -38,7 +50,7 @@ class ContactCoupling {
   std::vector<double> applyTranspose(const Vector& u) const;
   /// gbar_j = int_{E_j} g(., t) ds (3-point Gauss per fine edge), replicated.
   std::vector<double> weightedObstacle(const core::Expression& g, double t) const;
-  /// B as a Tpetra matrix: rows on the mesh's owned map, columns = segments (domain map: all on rank 0).
+  /// B as a Tpetra matrix: rows on the owned unknowns, columns = segments (domain map: all on rank 0).
   RCP<const CrsMatrix> matrix() const { return B_; }
   /// For every segment j: sum_i B_ij^2 / d_i ... the "lumped" Schur complement B^T D^{-1} B for a
   /// positive diagonal d (owned vector), as a dense row-major m x m matrix replicated on all ranks.

@@ -23,6 +23,8 @@ struct LinearSolver::Impl {
   RCP<Belos::LinearProblem<Scalar, MultiVector, Operator>> problem;
   std::string precName = "none";
   long solves = 0, iterations = 0;
+  RCP<MultiVector> nullspace;
+  int equationsPerNode = 1;
 };
 
 core::ParameterList LinearSolver::getValidParameters() {
@@ -48,6 +50,11 @@ LinearSolver::LinearSolver(const core::ParameterList& params, RCP<const Comm> co
 
 LinearSolver::~LinearSolver() = default;
 
+void LinearSolver::setNearNullspace(RCP<MultiVector> modes, int equationsPerNode) {
+  impl_->nullspace = modes;
+  impl_->equationsPerNode = equationsPerNode;
+}
+
 void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
   auto& I = *impl_;
   I.A = A;
@@ -66,6 +73,8 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
     mueluParams.set("coarse: type", "RELAXATION");
     mueluParams.sublist("coarse: params").set("relaxation: type", "Symmetric Gauss-Seidel");
     mueluParams.sublist("coarse: params").set("relaxation: sweeps", 4);
+    if (I.equationsPerNode > 1) mueluParams.set("number of equations", I.equationsPerNode);
+    if (!I.nullspace.is_null()) mueluParams.sublist("user data").set("Nullspace", I.nullspace);
     mueluParams.setParameters(I.params.sublist("MueLu"));
     // MueLu gets a plain CrsMatrix copy (not the FECrsMatrix itself).
     RCP<Operator> op = Teuchos::rcp(new CrsMatrix(*A, Teuchos::Copy));

@@ -19,6 +19,10 @@ class LinearSolver {
   LinearSolver(const core::ParameterList& params, RCP<const Comm> comm);
   ~LinearSolver();
 
+  /// For systems with several unknowns per node (numbered node-major, as fem::Assembler does):
+  /// MueLu aggregates nodes of \p equationsPerNode unknowns and interpolates \p modes (e.g. the
+  /// rigid body modes of elasticity) exactly. Takes effect at the next setOperator().
+  void setNearNullspace(RCP<MultiVector> modes, int equationsPerNode);
   /// Sets A and (re)builds the preconditioner. \p courant = c k / h_min chooses the
   /// preconditioner when "Preconditioner" is "auto" (Jacobi below the threshold, MueLu above).
   void setOperator(RCP<const CrsMatrix> A, double courant);

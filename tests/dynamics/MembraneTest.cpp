@@ -102,6 +102,33 @@ std::string oneDimensionalSolution(double g) {
   return s.str();
 }
 
+TEST(Membrane, DensityAndStiffnessScaledTogetherGiveTheSameSolution) {
+  // rho u_tt = kappa u_xx depends on kappa / rho only: rho = kappa = 4 must reproduce rho = kappa = 1
+  // (initial projections and the contact force scale with rho).
+  std::vector<io::CsvTable> runs;
+  for (double scale : {1.0, 4.0}) {
+    auto deck = membraneDeck(2, 0.01, 0.3, "sin(pi*y) - 1.05");
+    deck.sublist("Problem").set("Density", scale);
+    deck.sublist("Problem").set("Stiffness", scale);
+    deck.sublist("Output").sublist("Probes").set("corner", "1.0, 0.5");
+    runs.push_back(run(deck, "scaled" + std::to_string(static_cast<int>(scale)), Tpetra::getDefaultComm()));
+  }
+  const auto& a = runs[0];
+  const auto& b = runs[1];
+  ASSERT_EQ(a.rows.size(), b.rows.size());
+  double maxProbe = 0;
+  for (size_t n = 0; n < a.rows.size(); ++n) {
+    EXPECT_NEAR(a.rows[n][a.column("probe:corner")], b.rows[n][b.column("probe:corner")], 1e-8) << "step " << n;
+    EXPECT_NEAR(4 * a.rows[n][a.column("energy")], b.rows[n][b.column("energy")], 1e-8) << "step " << n;
+    EXPECT_NEAR(4 * a.rows[n][a.column("contact_force")], b.rows[n][b.column("contact_force")],
+                1e-6 * std::max(1.0, std::abs(b.rows[n][b.column("contact_force")])))
+        << "step " << n;
+    maxProbe = std::max(maxProbe, std::abs(a.rows[n][a.column("probe:corner")]));
+  }
+  EXPECT_GT(maxProbe, 0.05);  // the membrane moves
+  EXPECT_GT(columnMax(a, "contact_force"), 0.0);  // and touches the obstacle
+}
+
 TEST(Membrane, FlatObstacleGivesTheOneDimensionalSolution) {
   // Courant number k/h = 1: the step matrix M + k^2/2 K has no positive off-diagonal entries, so
   // the contact node does not chatter (with k/h well below 1 it does; DESIGN 1.6).
