@@ -12,6 +12,7 @@
 #include "Error.hpp"
 #include "Marking.hpp"
 #include "PhaseTimers.hpp"
+#include "ElasticityEstimator.hpp"
 #include "ResidualEstimator.hpp"
 #include "TemporalRegularisation.hpp"
 
@@ -65,6 +66,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   const double fraction = ap.get<double>("Refinement Fraction");
   const double coarsen = ap.get<double>("Coarsening Fraction");
   estimate::ResidualEstimator estimator(deck_.sublist("Estimator"));
+  estimate::ElasticityEstimator elasticityEstimator(deck_.sublist("Estimator"));
   const std::string base = sim_->outputBase();
 
   std::unique_ptr<io::CsvWriter> cyclesCsv;
@@ -82,17 +84,23 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       std::vector<std::shared_ptr<mesh::Forest>> next(nSteps);
       double etaMax = 0;
       dynamics::StepHook hook = [&](const dynamics::StepView& s) {
-        const auto r = estimator.estimate(estimate::EstimatorInput{
-            s.forest, s.mesh, dynamic_cast<const fem::Q1Assembler&>(s.assembler), s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor,
-            s.lambda, [&](const RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
-              // Every CG iterate is an extension of the boundary data, so its norm bounds s1 from above and
-              // decreases to s1: a relative residual of 1e-4 leaves s1 accurate to about 1e-8 relative.
-              auto params = deck_.sublist("Linear Solver");
-              params.set("Relative Tolerance", std::max(1e-4, params.get<double>("Relative Tolerance")));
-              solvers::LinearSolver cg(params, comm);
-              cg.setOperator(A, 0.0);
-              cg.solve(b, x);
-            }});
+        // Every CG iterate is an extension of the boundary data, so its norm bounds s1 from above and
+        // decreases to s1: a relative residual of 1e-4 leaves s1 accurate to about 1e-8 relative.
+        auto solveSPD = [&](const RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
+          auto params = deck_.sublist("Linear Solver");
+          params.set("Relative Tolerance", std::max(1e-4, params.get<double>("Relative Tolerance")));
+          solvers::LinearSolver cg(params, comm);
+          cg.setOperator(A, 0.0);
+          cg.solve(b, x);
+        };
+        const auto* scalar = dynamic_cast<const fem::Q1Assembler*>(&s.assembler);
+        const auto r = scalar ? estimator.estimate(estimate::EstimatorInput{s.forest, s.mesh, *scalar, s.problem,
+                                                                            s.coupling, s.time, s.timeStep, s.beta,
+                                                                            s.u, s.predictor, s.lambda, solveSPD})
+                              : elasticityEstimator.estimate(estimate::ElasticityEstimatorInput{
+                                    s.forest, s.mesh, dynamic_cast<const fem::ElasticityAssembler&>(s.assembler),
+                                    s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor, s.lambda,
+                                    solveSPD});
         etaMax = std::max(etaMax, r.eta);
         // T^n_{l+1}: T^n_l refined by the strategy, 2:1 balanced (Algorithm 5.2).
         std::vector<char> flags;

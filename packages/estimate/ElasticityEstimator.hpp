@@ -1,0 +1,46 @@
+#pragma once
+/// \file ElasticityEstimator.hpp
+/// The residual estimator of paper Sec. 4 for plane strain elasticity (DESIGN 1.3, derivation in
+/// docs/estimator.md): the scalar estimator's structure with the traction sigma(u_h) n in place of
+/// kappa du_h/dn and div sigma(u_h) in the cell residual:
+///   eta_*^2 = sum_K h_K^2 ||r||_K^2 + h_K ||R||_{dK}^2,
+///   r = beta k^2 f + rho (predictor - u_h) + beta k^2 div sigma(u_h)   (non-zero on rectangles:
+///       the mixed second derivatives of bilinear fields remain),
+///   R = -(beta k^2 / 2) [sigma(u_h) n] on interior edges (hanging edges included),
+///   R = beta k^2 (sigma(u_h) n - q) on Neumann edges, beta k^2 sigma(u_h) n on free edges,
+///   R = beta k^2 sigma(u_h) n + sign lambda_H e_c on contact edges (the constraint sign u_c >= g
+///       acts on component c; the tangential traction must vanish), the components fixed by a
+///       Dirichlet condition left out;
+///   s0 = sqrt(|<lambda_H, (g - sign u_c)_+>|), s1 = ||(g - sign u_c)_+||_{1/2,Gamma_C} through the
+///   harmonic continuation. Cell indicators: eta_K^2 plus the s0 share of the cell's contact edges.
+#include "ElasticityAssembler.hpp"
+#include "ResidualEstimator.hpp"
+
+namespace signorini::estimate {
+
+/// The inputs of one evaluation (as EstimatorInput, with the elasticity assembler).
+struct ElasticityEstimatorInput {
+  const mesh::Forest& forest;
+  const mesh::Q1Mesh& mesh;
+  const fem::ElasticityAssembler& assembler;
+  const fem::ProblemData& problem;
+  const fem::ContactCoupling* coupling;  ///< null without obstacle
+  double time, timeStep, beta;
+  const Vector& u;          ///< u_h^n (owned unknowns, two per node)
+  const Vector& predictor;  ///< the Newmark predictor from the transferred fields (owned unknowns)
+  const std::vector<double>& lambda;  ///< scaled QP multipliers (per segment, replicated)
+  /// Solves A x = b for an SPD matrix A on the mesh's nodes (x holds the initial guess); for s1.
+  std::function<void(const RCP<const CrsMatrix>& A, const Vector& b, Vector& x)> solveSPD;
+};
+
+class ElasticityEstimator {
+ public:
+  /// \param params the validated "Estimator" sublist (ResidualEstimator::getValidParameters()).
+  explicit ElasticityEstimator(const core::ParameterList& params);
+  EstimatorResult estimate(const ElasticityEstimatorInput& in) const;
+
+ private:
+  core::ParameterList params_;
+};
+
+}  // namespace signorini::estimate

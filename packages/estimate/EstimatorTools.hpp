@@ -1,0 +1,181 @@
+#pragma once
+/// \file EstimatorTools.hpp
+/// Pieces the residual estimators share (internal to the estimate package): quadrature, cell and
+/// face geometry, the positive-part integral of s0, and the iteration over the interior faces of
+/// a forest with p4est's face ghost layer (hanging faces split into their fine edges).
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <p4est_ghost.h>
+#include <p4est_iterate.h>
+
+#include "Error.hpp"
+#include "Forest.hpp"
+#include "Types.hpp"
+
+namespace signorini::estimate {
+
+/// 3-point Gauss rule on [0,1] (exact for quintics).
+constexpr double kG3[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
+constexpr double kW3[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+
+/// Longest diagonal of a cell (h_K).
+KOKKOS_INLINE_FUNCTION double cellDiameter(const double X[4][2]) {
+  const double d0 = (X[3][0] - X[0][0]) * (X[3][0] - X[0][0]) + (X[3][1] - X[0][1]) * (X[3][1] - X[0][1]);
+  const double d1 = (X[2][0] - X[1][0]) * (X[2][0] - X[1][0]) + (X[2][1] - X[1][1]) * (X[2][1] - X[1][1]);
+  return Kokkos::Experimental::sqrt(d0 > d1 ? d0 : d1);
+}
+
+/// Reference point of face f (0:-x 1:+x 2:-y 3:+y) at parameter tau, which runs from corner
+/// p4est_face_corners[f][0] (tau = 0) to p4est_face_corners[f][1] (tau = 1).
+inline void faceReference(int f, double tau, double& s, double& r) {
+  if (f < 2) {
+    s = f == 0 ? 0.0 : 1.0;
+    r = tau;
+  } else {
+    s = tau;
+    r = f == 2 ? 0.0 : 1.0;
+  }
+}
+
+/// Unit outward normal of (straight) face f of the cell with corners X.
+inline void outwardNormal(const double X[4][2], int f, double n[2]) {
+  const double* p0 = X[p4est_face_corners[f][0]];
+  const double* p1 = X[p4est_face_corners[f][1]];
+  const double tx = p1[0] - p0[0], ty = p1[1] - p0[1], len = std::hypot(tx, ty);
+  n[0] = ty / len;
+  n[1] = -tx / len;
+  double cx = 0, cy = 0;
+  for (int k = 0; k < 4; ++k) cx += 0.25 * X[k][0], cy += 0.25 * X[k][1];
+  if (n[0] * (0.5 * (p0[0] + p1[0]) - cx) + n[1] * (0.5 * (p0[1] + p1[1]) - cy) < 0) n[0] = -n[0], n[1] = -n[1];
+}
+
+/// Parameter tau of the physical point P on face f of the cell with corners X (orthogonal projection).
+inline double faceParameter(const double X[4][2], int f, const double P[2]) {
+  const double* p0 = X[p4est_face_corners[f][0]];
+  const double* p1 = X[p4est_face_corners[f][1]];
+  const double tx = p1[0] - p0[0], ty = p1[1] - p0[1];
+  return ((P[0] - p0[0]) * tx + (P[1] - p0[1]) * ty) / (tx * tx + ty * ty);
+}
+
+/// int_0^1 max(d(tau), 0) dtau for a function d on [0, 1] (the edge parameter): four pieces, each
+/// split at a sign change of d (regula falsi, then Illinois steps: exact in one step for linear d),
+/// 3-point Gauss on every part. Exact when d is linear (g linear along the edge).
+template <class F>
+double positivePartIntegral(const F& d) {
+  constexpr int pieces = 4;
+  auto gauss = [&](double a, double b) {
+    double s = 0;
+    for (int g = 0; g < 3; ++g) s += kW3[g] * std::max(d(a + kG3[g] * (b - a)), 0.0);
+    return (b - a) * s;
+  };
+  double total = 0;
+  for (int p = 0; p < pieces; ++p) {
+    double a = static_cast<double>(p) / pieces, b = static_cast<double>(p + 1) / pieces;
+    double da = d(a), db = d(b);
+    if ((da > 0 && db < 0) || (da < 0 && db > 0)) {
+      const double a0 = a, b0 = b;
+      const bool positiveLeft = da > 0;
+      double root = a - da * (b - a) / (db - da);
+      for (int it = 0, side = 0; it < 100; ++it) {
+        const double dr = d(root);
+        if (dr == 0.0 || b - a < 1e-15) break;
+        if ((dr > 0) == (da > 0)) {
+          a = root, da = dr;
+          if (side == -1) db *= 0.5;
+          side = -1;
+        } else {
+          b = root, db = dr;
+          if (side == 1) da *= 0.5;
+          side = 1;
+        }
+        const double next = a - da * (b - a) / (db - da);
+        if (std::abs(next - root) <= 1e-15) {
+          root = next;
+          break;
+        }
+        root = next;
+      }
+      total += positiveLeft ? gauss(a0, root) : gauss(root, b0);
+    } else {
+      total += gauss(a, b);  // one sign at the ends; interior bumps are caught by the Gauss points
+    }
+  }
+  return total;
+}
+
+/// One cell on one side of a face: its payload, its local index (-1 for a ghost) and its face.
+template <class Payload>
+struct FaceSide {
+  const Payload* data;
+  LO local;
+  int face;
+};
+
+namespace detail {
+template <class Payload, class OnPair>
+struct FaceIteration {
+  const std::vector<Payload>* local;
+  const std::vector<Payload>* ghosts;
+  OnPair* onPair;
+
+  FaceSide<Payload> side(p4est_t* p4est, p4est_topidx_t tree, int face, int8_t isGhost, p4est_locidx_t quadid) const {
+    if (isGhost) {
+      SIGNORINI_ASSERT(quadid >= 0 && static_cast<size_t>(quadid) < ghosts->size(),
+                       "face neighbour missing from the ghost layer");
+      return {&(*ghosts)[quadid], -1, face};
+    }
+    const p4est_tree_t* t = p4est_tree_array_index(p4est->trees, tree);
+    const LO e = static_cast<LO>(t->quadrants_offset + quadid);
+    return {&(*local)[e], e, face};
+  }
+
+  static void callback(p4est_iter_face_info_t* info, void* user) {
+    const auto& it = *static_cast<const FaceIteration*>(user);
+    if (info->sides.elem_count != 2) return;  // domain boundary: from Q1Mesh::boundaryEdges()
+    const auto* s0 = static_cast<const p4est_iter_face_side_t*>(sc_array_index(&info->sides, 0));
+    const auto* s1 = static_cast<const p4est_iter_face_side_t*>(sc_array_index(&info->sides, 1));
+    p4est_t* p4est = info->p4est;
+    if (!s0->is_hanging && !s1->is_hanging) {
+      (*it.onPair)(it.side(p4est, s0->treeid, s0->face, s0->is.full.is_ghost, s0->is.full.quadid),
+                   it.side(p4est, s1->treeid, s1->face, s1->is.full.is_ghost, s1->is.full.quadid));
+      return;
+    }
+    // 2:1 face: two half-size cells on one side, one full cell on the other (never both in 2D).
+    const auto* fine = s0->is_hanging ? s0 : s1;
+    const auto* coarse = s0->is_hanging ? s1 : s0;
+    SIGNORINI_ASSERT(!coarse->is_hanging, "both sides of a face are hanging");
+    const auto big = it.side(p4est, coarse->treeid, coarse->face, coarse->is.full.is_ghost, coarse->is.full.quadid);
+    for (int i = 0; i < 2; ++i) {
+      if (fine->is.hanging.quadid[i] < 0) continue;  // not in the ghost layer: touches no local cell here
+      (*it.onPair)(it.side(p4est, fine->treeid, fine->face, fine->is.hanging.is_ghost[i], fine->is.hanging.quadid[i]),
+                   big);
+    }
+  }
+};
+}  // namespace detail
+
+/// Calls onPair(A, B) for every interior face with a local cell on at least one side: A's face is
+/// the whole fine edge, B the (equal or coarser) neighbour; a 2:1 face gives one call per fine
+/// half. The payloads of the neighbours on other ranks come from p4est's face ghost layer;
+/// onGhosts(ghosts) is called once they have arrived.
+template <class Payload, class OnGhosts, class OnPair>
+void forEachInteriorFace(const mesh::Forest& forest, const std::vector<Payload>& local, OnGhosts onGhosts,
+                         OnPair onPair) {
+  p4est_t* p4est = forest.p4est();
+  p4est_ghost_t* ghost = p4est_ghost_new(p4est, P4EST_CONNECT_FACE);
+  std::vector<Payload> ghosts(ghost->ghosts.elem_count);
+  std::vector<void*> mirrors(ghost->mirrors.elem_count);
+  for (size_t m = 0; m < mirrors.size(); ++m) {
+    const auto* q = p4est_quadrant_array_index(&ghost->mirrors, m);
+    mirrors[m] = const_cast<Payload*>(&local[q->p.piggy3.local_num]);
+  }
+  p4est_ghost_exchange_custom(p4est, ghost, sizeof(Payload), mirrors.data(), ghosts.data());
+  onGhosts(ghosts);
+  detail::FaceIteration<Payload, OnPair> it{&local, &ghosts, &onPair};
+  p4est_iterate(p4est, ghost, &it, nullptr, &detail::FaceIteration<Payload, OnPair>::callback, nullptr);
+  p4est_ghost_destroy(ghost);
+}
+
+}  // namespace signorini::estimate
