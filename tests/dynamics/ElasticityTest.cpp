@@ -148,7 +148,7 @@ TEST(Elasticity, UniaxialStrainFollowsTheOneDimensionalWaveSolution) {
     RecordProperty("rate_l2_" + std::to_string(i), number(rate));
     EXPECT_GT(rate, 0.9) << "level " << i;  // the solution has a kink, as for the membrane
   }
-  EXPECT_LT(l2.back(), 0.01 * 0.25);  // the strip's width scales the L2 norm by sqrt(0.25)
+  EXPECT_LT(l2.back(), 0.01 * 0.25);  // the L2 norm scales by sqrt(width) / c = 0.25 against the membrane
 }
 
 }  // namespace
