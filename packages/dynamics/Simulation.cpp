@@ -9,9 +9,11 @@
 #include <sstream>
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "CoarseSchurCorrection.hpp"
 #include "ContactCoupling.hpp"
 #include "ContactQP.hpp"
 #include "CsvWriter.hpp"
@@ -132,6 +134,15 @@ struct Discretisation {
   long builtAtStep = 0;  ///< identifies the mesh in the Exodus series
 };
 
+/// The deck's initial mesh held whole on every rank, for the far-field part of the Schur
+/// preconditioner (solvers::CoarseSchurCorrection); built once per run when needed.
+struct CoarseProblem {
+  std::shared_ptr<mesh::Forest> forest;
+  std::unique_ptr<mesh::Q1Mesh> mesh;
+  std::unique_ptr<fem::Assembler> assembler;
+  std::unique_ptr<solvers::CoarseSchurCorrection> schur;
+};
+
 struct Simulation::Impl {
   RCP<const Comm> comm;
   core::ParameterList deck;
@@ -144,6 +155,33 @@ struct Simulation::Impl {
   std::unique_ptr<Discretisation> initialDiscretisation;  ///< built for the set-up checks; used by the first pass
   std::vector<std::pair<std::string, std::array<double, 2>>> probes;
   core::PhaseTimers timers;
+  std::unique_ptr<CoarseProblem> coarseProblem;
+
+  std::unique_ptr<fem::Assembler> makeAssembler(const mesh::Q1Mesh& m) const {
+    if (problem->components() == 1) return std::make_unique<fem::Q1Assembler>(m, m.nodesOnSegments(problem->dirichletMask));
+    return std::make_unique<fem::ElasticityAssembler>(m, fem::ElasticityAssembler::dirichletUnknowns(m, *problem),
+                                                      problem->lameLambda, problem->lameMu);
+  }
+  std::vector<char> lumpedUnknowns(const fem::Assembler& a) const {
+    if (problem->hasObstacle && deck.sublist("Contact").get<std::string>("Boundary Mass") == "lumped")
+      return a.unknownsOnSegments(problem->contactMask);
+    return {};
+  }
+  /// The coarse step matrix, factored (once per run).
+  const CoarseProblem& coarseCorrection() {
+    if (!coarseProblem) {
+      auto c = std::make_unique<CoarseProblem>();
+      RCP<const Comm> self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+      c->forest = std::make_shared<mesh::Forest>(coarse, MPI_COMM_SELF, deck.sublist("Mesh").get<int>("Refinement Level"));
+      c->mesh = std::make_unique<mesh::Q1Mesh>(*c->forest, *segments, self);
+      c->assembler = makeAssembler(*c->mesh);
+      const double k = newmark->timeStep;
+      c->schur = std::make_unique<solvers::CoarseSchurCorrection>(
+          c->assembler->assembleSystem(1.0, newmark->beta * k * k, *problem, lumpedUnknowns(*c->assembler)));
+      coarseProblem = std::move(c);
+    }
+    return *coarseProblem;
+  }
 
   std::unique_ptr<Discretisation> build(std::shared_ptr<mesh::Forest> forest, long step) {
     auto d = std::make_unique<Discretisation>();
@@ -155,16 +193,9 @@ struct Simulation::Impl {
     }
     {
       auto scope = timers.scope("assembly");
-      if (problem->components() == 1)
-        d->assembler = std::make_unique<fem::Q1Assembler>(*d->mesh, d->mesh->nodesOnSegments(problem->dirichletMask));
-      else
-        d->assembler = std::make_unique<fem::ElasticityAssembler>(
-            *d->mesh, fem::ElasticityAssembler::dirichletUnknowns(*d->mesh, *problem), problem->lameLambda,
-            problem->lameMu);
+      d->assembler = makeAssembler(*d->mesh);
       const double k = newmark->timeStep;
-      std::vector<char> lump;
-      if (problem->hasObstacle && deck.sublist("Contact").get<std::string>("Boundary Mass") == "lumped")
-        lump = d->assembler->unknownsOnSegments(problem->contactMask);
+      const std::vector<char> lump = lumpedUnknowns(*d->assembler);
       d->M = d->assembler->assembleSystem(1.0, 0.0, *problem, lump);
       d->K = d->assembler->assembleSystem(0.0, 1.0, *problem);
       d->A = d->assembler->assembleSystem(1.0, newmark->beta * k * k, *problem, lump);
@@ -191,7 +222,12 @@ struct Simulation::Impl {
       if (d->coupling->numSegments() == 0)
         SIGNORINI_USER_ERROR("Problem/Contact Segments: the named segments contain no boundary edge of the mesh");
       d->qp = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), coarse->diameter());
-      d->qp->setSystem(*d->A, *d->coupling, d->courant);
+      std::vector<double> coarseQ;
+      if (d->qp->usesCoarseCorrection(d->courant)) {
+        const auto& c = coarseCorrection();
+        coarseQ = c.schur->schur(d->coupling->coarseLoads(*c.assembler), d->coupling->numSegments());
+      }
+      d->qp->setSystem(*d->A, *d->coupling, d->courant, coarseQ);
       if (newmark->stabilised) {
         d->projection = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), coarse->diameter());
         d->projection->setSystem(*d->M, *d->coupling, 0.0);

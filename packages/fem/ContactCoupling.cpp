@@ -24,7 +24,7 @@ constexpr double kGauss3Point[3] = {0.11270166537925831, 0.5, 0.8872983346207416
 
 ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask, SegmentSize size,
                                  const std::vector<char>& dirichlet, const Unknowns& unknowns)
-    : comm_(mesh.comm()) {
+    : comm_(mesh.comm()), unknowns_(unknowns) {
   const auto& bedges = mesh.boundaryEdges();
   std::vector<double> mine;
   std::vector<int> localIds;
@@ -264,6 +264,39 @@ std::vector<double> ContactCoupling::weightedObstacle(const core::Expression& g,
       });
   auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), gbar);
   return std::vector<double>(h.data(), h.data() + m);
+}
+
+std::vector<double> ContactCoupling::coarseLoads(const Assembler& coarse) const {
+  const auto& cm = coarse.mesh();
+  const int nc = coarse.components(), comp = unknowns_.component;
+  SIGNORINI_ASSERT(nc == unknowns_.components, "the coarse discretisation has another number of components");
+  SIGNORINI_ASSERT(cm.comm()->getSize() == 1, "the coarse discretisation must live on one rank");
+  const size_t n = coarse.ownedMap()->getNodeNumElements();
+  const int m = numSegments();
+  const auto& dirichlet = coarse.dirichletFlags();
+  std::vector<double> loads(n * static_cast<size_t>(m), 0.0);
+  for (size_t e = 0; e < edges_.size(); ++e) {
+    const auto& x = edges_[e];
+    const double len = std::hypot(x[2] - x[0], x[3] - x[1]);
+    for (int q = 0; q < 3; ++q) {
+      double s, r;
+      const double px = x[0] + kGauss3Point[q] * (x[2] - x[0]), py = x[1] + kGauss3Point[q] * (x[3] - x[1]);
+      const LO cell = cm.locate(px, py, s, r);
+      SIGNORINI_ASSERT(cell >= 0, "contact edge point (" << px << ", " << py << ") outside the coarse mesh");
+      const double w = (q == 1 ? 8.0 : 5.0) / 18.0 * len * unknowns_.sign;
+      for (int a = 0; a < 4; ++a) {
+        const double N = ((a & 1) ? s : 1 - s) * ((a & 2) ? r : 1 - r);
+        for (int k = 0; k < 2; ++k) {
+          const LO node = cm.cornerDofsHost(cell, a, k);
+          if (node < 0) continue;
+          const size_t i = static_cast<size_t>(nc * node + comp);
+          if (dirichlet[i]) continue;
+          loads[static_cast<size_t>(edgeSegment_[e]) * n + i] += w * cm.cornerWeightsHost(cell, a, k) * N;
+        }
+      }
+    }
+  }
+  return loads;
 }
 
 std::vector<double> ContactCoupling::lumpedSchurComplement(const Vector& d) const {

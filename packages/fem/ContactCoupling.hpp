@@ -10,6 +10,7 @@
 #include <array>
 #include <vector>
 
+#include "Assembler.hpp"
 #include "Expression.hpp"
 #include "Q1Mesh.hpp"
 
@@ -52,12 +53,18 @@ class ContactCoupling {
   std::vector<double> weightedObstacle(const core::Expression& g, double t) const;
   /// B as a Tpetra matrix: rows on the owned unknowns, columns = segments (domain map: all on rank 0).
   RCP<const CrsMatrix> matrix() const { return B_; }
+  /// P^T B for a coarser discretisation \p coarse of the same domain held whole on one rank (its
+  /// mesh refines the same coarse mesh less): column j holds sign int_{E_j} phi^c_i ds for the
+  /// coarse unknowns i of the constrained component (3-point Gauss on every fine edge; Dirichlet
+  /// unknowns of \p coarse left zero). Dense, column-major, n_coarse x m, the same on every rank.
+  std::vector<double> coarseLoads(const Assembler& coarse) const;
   /// For every segment j: sum_i B_ij^2 / d_i ... the "lumped" Schur complement B^T D^{-1} B for a
   /// positive diagonal d (owned vector), as a dense row-major m x m matrix replicated on all ranks.
   std::vector<double> lumpedSchurComplement(const Vector& d) const;
 
  private:
   RCP<const Comm> comm_;
+  ContactUnknowns unknowns_;
   RCP<const Map> segmentMap_;
   RCP<CrsMatrix> B_;
   std::vector<double> length_;

@@ -56,14 +56,24 @@ core::ParameterList ContactQP::getValidParameters() {
                   1e-15, 1e-2);
   core::addInt(p, "Maximum Active Set Iterations", 50, "Semismooth Newton steps per time step", 1);
   core::addInt(p, "Maximum CG Iterations", 500, "CG iterations on the Schur complement per Newton step", 1);
+  core::addChoice(p, "Newton Step Solver", "auto",
+                  "How each active-set step solves Q_AA d = G_A: \"CG\" (one A-solve per iteration), or \"cached "
+                  "columns\": from the second step on one mesh the columns A^{-1} B e_j of the segments that were "
+                  "active are kept (one vector each, at most 'Cached Columns') and Q_AA is exact, so a step costs "
+                  "one A-solve plus one per newly active segment; \"auto\": cached columns when A^{-1} reaches "
+                  "further than the strip (the same test as the coarse Schur correction), else CG",
+                  {"auto", "CG", "cached columns"});
+  core::addInt(p, "Cached Columns", 256, "At most this many cached columns per mesh (memory: one vector each)", 1);
   core::addChoice(p, "Boundary Mass", "consistent",
                   "Mass matrix on the contact boundary: consistent (the paper), or lumped at the nodes of Gamma_C "
                   "(removes the chattering of impacting nodes, DESIGN 1.6)",
                   {"consistent", "lumped"});
-  core::addChoice(p, "Schur Preconditioner", "strip",
+  core::addChoice(p, "Schur Preconditioner", "auto",
                   "Preconditioner of CG on Q_AA: B^T A_s^{-1} B with A on a strip along Gamma_C (factored once per "
-                  "mesh, KLU2), the lumped B^T diag(A)^{-1} B, or none",
-                  {"strip", "lumped", "none"});
+                  "mesh, KLU2); \"strip + coarse\" adds B^T P A_c^{-1} P^T B from the deck's initial mesh (the far "
+                  "field); \"auto\": strip + coarse when the strip would need more than 40 node layers, else strip; "
+                  "the lumped B^T diag(A)^{-1} B; or none",
+                  {"auto", "strip", "strip + coarse", "lumped", "none"});
   core::addDouble(p, "Strip Width", 6.0,
                   "Width of the strip in units of c k (wave speed times time step; Q decays like exp(-1.4 d/k))",
                   0.1, 1000.0);
@@ -77,14 +87,35 @@ ContactQP::ContactQP(const core::ParameterList& params, double lengthScale)
 
 ContactQP::~ContactQP() = default;
 
-void ContactQP::setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupling, double courant) {
+namespace {
+constexpr int kMaxStripLayers = 40;
+int stripLayers(const core::ParameterList& p, double courant) {
+  return static_cast<int>(std::ceil(p.get<double>("Strip Width") * courant));
+}
+}  // namespace
+
+bool ContactQP::usesCoarseCorrection(double courant) const {
+  return preconditioner_ == "strip + coarse" ||
+         (preconditioner_ == "auto" && stripLayers(params_, courant) > kMaxStripLayers);
+}
+
+void ContactQP::setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupling, double courant,
+                          const std::vector<double>& coarseQ) {
   const int m = coupling.numSegments();
   segLen_ = coupling.segmentLength();
   strip_.reset();
-  if (preconditioner_ == "strip") {
-    const int layers = std::clamp(static_cast<int>(std::ceil(params_.get<double>("Strip Width") * courant)), 2, 40);
+  columns_.clear();
+  solvesOnSystem_ = 0;
+  const std::string method = params_.get<std::string>("Newton Step Solver");
+  cachedColumns_ = method == "cached columns" || (method == "auto" && usesCoarseCorrection(courant));
+  if (preconditioner_ == "strip" || preconditioner_ == "strip + coarse" || preconditioner_ == "auto") {
+    const int layers = std::clamp(stripLayers(params_, courant), 2, kMaxStripLayers);
     strip_ = std::make_unique<StripSchurApproximation>(A, coupling, layers);
     approxQ_ = strip_->matrix();
+    if (usesCoarseCorrection(courant)) {
+      SIGNORINI_ASSERT(coarseQ.size() == approxQ_.size(), "the coarse Schur correction is missing");
+      for (size_t i = 0; i < approxQ_.size(); ++i) approxQ_[i] += coarseQ[i];
+    }
   } else {
     // The lumped approximation also scales the active-set test and the multiplier tolerance.
     Vector d(A.getRowMap());
@@ -100,6 +131,87 @@ double ContactQP::lambdaTolerance(int j) const {
   return gapTol_ * segLen_[j] / approxQ_[static_cast<size_t>(j) * m + j];
 }
 
+bool ContactQP::solveWithColumns(LinearSolver& solver, const fem::ContactCoupling& B, const Vector& F,
+                                 const std::vector<double>& gbar, std::vector<double>& lambda, Vector& u,
+                                 std::vector<double>& G, ContactQPResult& res) {
+  const int m = B.numSegments();
+  const size_t cap = static_cast<size_t>(params_.get<int>("Cached Columns"));
+  auto column = [&](int j) -> const Column& {  // A^{-1} B e_j and B^T A^{-1} B e_j, computed once per mesh
+    auto it = columns_.find(j);
+    if (it != columns_.end()) return it->second;
+    std::vector<double> e(m, 0.0);
+    e[j] = 1.0;
+    Vector rhs(F.getMap());
+    B.apply(e, rhs);
+    Column c{Teuchos::rcp(new Vector(F.getMap())), {}};
+    if (strip_)
+      strip_->applyStripInverse(e, *c.w);
+    else
+      c.w->putScalar(0.0);
+    solver.solve(rhs, *c.w);
+    ++res.linearSolves;
+    c.q = B.applyTranspose(*c.w);
+    return columns_.emplace(j, std::move(c)).first->second;
+  };
+  // u_f = A^{-1} F and G_f = B^T u_f - gbar; then G = G_f - Q lambda, u = u_f - sum_j lambda_j W_j.
+  solver.solve(F, u);
+  ++res.linearSolves;
+  std::vector<double> Gf = B.applyTranspose(u);
+  for (int j = 0; j < m; ++j) Gf[j] -= gbar[j];
+  auto gapOf = [&](const std::vector<double>& l) {
+    std::vector<double> g = Gf;
+    for (int j = 0; j < m; ++j)
+      if (l[j] != 0.0) {
+        const auto& q = column(j).q;
+        for (int i = 0; i < m; ++i) g[i] -= q[i] * l[j];
+      }
+    return g;
+  };
+  for (int j = 0; j < m; ++j)
+    if (lambda[j] != 0.0 && columns_.size() >= cap && !columns_.count(j)) return false;
+  G = gapOf(lambda);
+  std::vector<double> c(m);
+  for (int j = 0; j < m; ++j) c[j] = 1.0 / approxQ_[static_cast<size_t>(j) * m + j];
+  std::vector<char> active(m, 0), previous(m, 2);
+  const int maxNewton = params_.get<int>("Maximum Active Set Iterations");
+  for (int it = 1; it <= maxNewton; ++it) {
+    res.activeSetIterations = it;
+    std::vector<int> idx;
+    for (int j = 0; j < m; ++j)
+      if ((active[j] = (lambda[j] + c[j] * G[j] < 0) ? 1 : 0)) idx.push_back(j);
+    const int nA = static_cast<int>(idx.size());
+    size_t missing = 0;
+    for (int j : idx) missing += columns_.count(j) ? 0 : 1;
+    if (columns_.size() + missing > cap) return false;
+    // Q_AA lambda_A = G_f,A (the gap vanishes on the active set), lambda = 0 elsewhere.
+    std::vector<double> Q(static_cast<size_t>(nA) * nA), l(m, 0.0), rhsA(nA);
+    for (int b = 0; b < nA; ++b) {
+      const auto& q = column(idx[b]).q;
+      for (int a = 0; a < nA; ++a) Q[a * nA + b] = q[idx[a]];
+    }
+    for (int a = 0; a < nA; ++a) {
+      rhsA[a] = Gf[idx[a]];
+      for (int b = 0; b < a; ++b) Q[a * nA + b] = Q[b * nA + a] = 0.5 * (Q[a * nA + b] + Q[b * nA + a]);
+    }
+    if (nA > 0 && !cholesky(Q, nA)) return false;  // redundant constraints: CG copes with them
+    if (nA > 0) choleskySolve(Q, nA, rhsA);
+    for (int a = 0; a < nA; ++a) l[idx[a]] = rhsA[a];
+    lambda = l;
+    G = gapOf(lambda);
+    bool ok = true;
+    for (int j = 0; j < m; ++j)
+      if (-G[j] / segLen_[j] > gapTol_ || lambda[j] / lambdaTolerance(j) * gapTol_ > gapTol_) ok = false;
+    int changes = 0;
+    for (int j = 0; j < m; ++j) changes += active[j] != previous[j];
+    previous = active;
+    if (ok || (changes == 0 && it > 1)) break;
+    if (it == maxNewton) return false;
+  }
+  for (int j = 0; j < m; ++j)
+    if (lambda[j] != 0.0) u.update(-lambda[j], *column(j).w, 1.0);
+  return true;
+}
+
 ContactQPResult ContactQP::solve(LinearSolver& solver, const fem::ContactCoupling& B, const Vector& F,
                                  const std::vector<double>& gbar, std::vector<double>& lambda, Vector& u,
                                  std::vector<double>& G) {
@@ -108,6 +220,13 @@ ContactQPResult ContactQP::solve(LinearSolver& solver, const fem::ContactCouplin
   SIGNORINI_ASSERT(static_cast<int>(segLen_.size()) == m, "setSystem() not called for this coupling");
   ContactQPResult res;
   const long its0 = solver.totalIterations();
+  if (solvesOnSystem_++ > 0 && cachedColumns_) {
+    const std::vector<double> lambda0 = lambda;
+    Vector u0(u, Teuchos::Copy);
+    if (solveWithColumns(solver, B, F, gbar, lambda, u, G, res)) return finish(res, solver, its0, lambda, G);
+    lambda = lambda0;  // the cache is full or Q_AA is singular: CG below
+    u.assign(u0);
+  }
   Vector rhs(F.getMap()), w(F.getMap());
   auto solveA = [&](const Vector& b, Vector& x) {
     solver.solve(b, x);
@@ -224,6 +343,12 @@ ContactQPResult ContactQP::solve(LinearSolver& solver, const fem::ContactCouplin
                               "Contact/Maximum Active Set Iterations = " + std::to_string(maxNewton) +
                               "; history:\n" + history.str());
   }
+  return finish(res, solver, its0, lambda, G);
+}
+
+ContactQPResult ContactQP::finish(ContactQPResult res, const LinearSolver& solver, long its0,
+                                  const std::vector<double>& lambda, const std::vector<double>& G) const {
+  const int m = static_cast<int>(lambda.size());
   res.linearIterations = static_cast<int>(solver.totalIterations() - its0);
   res.maxLambda = -1e300;
   res.minGap = 1e300;

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <map>
 #include <memory>
 
 #include "ContactCoupling.hpp"
@@ -41,7 +42,12 @@ class ContactQP {
   ~ContactQP();
   /// Prepares for a new step matrix or contact coupling (the Schur preconditioner).
   /// \p courant = c k / h_min sets the strip width in node layers ("Strip Width" times it).
-  void setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupling, double courant);
+  /// \p coarseQ: the far-field part B^T P A_c^{-1} P^T B (CoarseSchurCorrection), required when
+  /// usesCoarseCorrection(courant).
+  void setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupling, double courant,
+                 const std::vector<double>& coarseQ = {});
+  /// Whether setSystem() at this Courant number needs the coarse correction.
+  bool usesCoarseCorrection(double courant) const;
   /// Solves the QP for load F (owned) and weighted obstacle gbar. \p lambda is the warm start
   /// on entry and the multiplier on exit; \p u is the initial guess of the first A-solve on entry
   /// and the displacement on exit; \p G returns the weighted gap.
@@ -61,6 +67,21 @@ class ContactQP {
   std::vector<double> approxQ_;  // the local approximation of Q, dense m x m (identity for "none")
   std::unique_ptr<StripSchurApproximation> strip_;
   std::vector<double> segLen_;
+  struct Column {
+    RCP<Vector> w;          ///< A^{-1} B e_j
+    std::vector<double> q;  ///< B^T A^{-1} B e_j (replicated)
+  };
+  std::map<int, Column> columns_;  ///< per mesh (cleared by setSystem)
+  long solvesOnSystem_ = 0;
+  bool cachedColumns_ = false;
+
+  /// The QP with exact Q_AA from cached columns; false (nothing usable) when the cache would
+  /// exceed "Cached Columns", Q_AA is singular or the iterations run out.
+  bool solveWithColumns(LinearSolver& solver, const fem::ContactCoupling& B, const Vector& F,
+                        const std::vector<double>& gbar, std::vector<double>& lambda, Vector& u,
+                        std::vector<double>& G, ContactQPResult& res);
+  ContactQPResult finish(ContactQPResult res, const LinearSolver& solver, long its0, const std::vector<double>& lambda,
+                         const std::vector<double>& G) const;
 };
 
 }  // namespace signorini::solvers

@@ -1,0 +1,30 @@
+#pragma once
+/// \file CoarseSchurCorrection.hpp
+/// The far-field part of the Schur complement Q = B^T A^{-1} B (DESIGN 1.6): the step matrix A_c
+/// of the deck's initial (coarsest) mesh, held whole on every rank and factored once per run
+/// with Amesos2/KLU2, gives Q_c = (P^T B)^T A_c^{-1} (P^T B), P the embedding of the coarse space.
+/// Added to the strip approximation it forms B^T (R^T A_s^{-1} R + P A_c^{-1} P^T) B, the
+/// two-level additive Schwarz approximation of A^{-1} seen through B: needed when A^{-1} reaches
+/// further than any affordable strip (elasticity, where c k is as large as the body).
+#include <memory>
+#include <vector>
+
+#include "Types.hpp"
+
+namespace signorini::solvers {
+
+class CoarseSchurCorrection {
+ public:
+  /// \param A the coarse step matrix on a one-rank communicator (each rank its own copy).
+  explicit CoarseSchurCorrection(RCP<const CrsMatrix> A);
+  ~CoarseSchurCorrection();
+  /// L^T A_c^{-1} L for the column-major n x m loads L (fem::ContactCoupling::coarseLoads):
+  /// dense, row-major m x m.
+  std::vector<double> schur(const std::vector<double>& loads, int m) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace signorini::solvers
