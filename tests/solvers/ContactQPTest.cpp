@@ -142,7 +142,8 @@ std::vector<double> bruteForce(const std::vector<double>& Q, const std::vector<d
   return {};
 }
 
-class ContactQPTest : public ::testing::TestWithParam<std::tuple<double, std::string>> {};
+// (obstacle height, Schur preconditioner, Newton step solver)
+class ContactQPTest : public ::testing::TestWithParam<std::tuple<double, std::string, std::string>> {};
 
 TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
   const double obstacleHeight = std::get<0>(GetParam());
@@ -177,9 +178,11 @@ TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
   core::ParameterList cp;
   cp.set("KKT Tolerance", 1e-12);
   cp.set("Schur Preconditioner", std::get<1>(GetParam()));
+  cp.set("Newton Step Solver", std::get<2>(GetParam()));  // cached columns: used from the second solve on
   solvers::ContactQP qp(validated(solvers::ContactQP::getValidParameters(), cp), 1.0);
   qp.setSystem(*A, B, 1.0);
-  for (int warm = 0; warm < 2; ++warm) {  // cold start, then warm start from the solution
+  for (int pass = 0; pass < 3; ++pass) {  // cold start, warm start from the solution, cold again
+    const bool warm = pass == 1;
     std::vector<double> lambda = warm ? reference : std::vector<double>(ns, 0.0), G;
     Vector u(m.ownedMap());
     const auto res = qp.solve(solver, B, F, gbar, lambda, u, G);
@@ -213,6 +216,7 @@ TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
 // Obstacles: far away (no contact), partly touching, pushing everywhere.
 INSTANTIATE_TEST_SUITE_P(Obstacles, ContactQPTest,
                          ::testing::Combine(::testing::Values(-100.0, -1.6, -1.3, -0.5),
-                                            ::testing::Values("strip", "lumped", "none")));
+                                            ::testing::Values("strip", "lumped", "none"),
+                                            ::testing::Values("CG", "cached columns")));
 
 }  // namespace
