@@ -72,12 +72,31 @@ int coarsenCallback(p4est_t* p, p4est_topidx_t tree, p4est_quadrant_t* children[
     if (!ctx.keys.count({static_cast<int>(tree), children[c]->x, children[c]->y, children[c]->level})) return 0;
   return 1;
 }
+
+/// Stores the flags (local cell order) in the quadrants' user_int: the forest holds no user data
+/// (data_size 0), so the field is free, and a refine callback can read its own quadrant's flag
+/// without a search.
+void storeFlags(p4est_t* p4est, const std::vector<char>& flags) {
+  SIGNORINI_ASSERT(p4est->data_size == 0, "the forest carries user data");
+  size_t e = 0;
+  for (p4est_topidx_t t = p4est->first_local_tree; t <= p4est->last_local_tree; ++t) {
+    p4est_tree_t* tree = p4est_tree_array_index(p4est->trees, t);
+    for (size_t qi = 0; qi < tree->quadrants.elem_count; ++qi, ++e)
+      p4est_quadrant_array_index(&tree->quadrants, qi)->p.user_int = flags[e] ? 1 : 0;
+  }
+}
+
+/// Refines, once, the quadrants flagged by storeFlags.
+void refineStoredFlags(p4est_t* p4est) {
+  p4est_refine(
+      p4est, 0, [](p4est_t*, p4est_topidx_t, p4est_quadrant_t* q) { return q->p.user_int; }, nullptr);
+}
 }  // namespace
 
 void Forest::refineMarked(const std::vector<char>& flags) {
   SIGNORINI_ASSERT(flags.size() == static_cast<size_t>(numLocalCells()), "one flag per local cell");
-  const auto keys = flaggedCells(p4est_, flags);
-  refineIf([&](int tree, const p4est_quadrant_t& q) { return keys.count({tree, q.x, q.y, q.level}) > 0; });
+  storeFlags(p4est_, flags);
+  refineStoredFlags(p4est_);
 }
 
 namespace {
@@ -100,17 +119,22 @@ void Forest::refineAndCoarsen(const std::vector<char>& refine, const std::vector
   SIGNORINI_ASSERT(refine.size() == static_cast<size_t>(numLocalCells()) &&
                        coarsen.size() == static_cast<size_t>(numLocalCells()),
                    "one flag per local cell");
+  int coarsenLocal = 0, coarsenAny = 0;
+  for (char c : coarsen) coarsenLocal |= c ? 1 : 0;
+  MPI_Allreduce(&coarsenLocal, &coarsenAny, 1, MPI_INT, MPI_MAX, p4est_->mpicomm);
+  if (!coarsenAny) {  // refinement only: the flags stay with the cells, no exchange needed
+    refineMarked(refine);
+    return;
+  }
   // Families may be split between ranks: share the flagged cells, partition so that families
   // are local, coarsen, then refine by position.
   const auto refineKeys = allFlaggedCells(p4est_, refine);
   CoarsenContext ctx{allFlaggedCells(p4est_, coarsen), minLevel};
-  if (!ctx.keys.empty()) {
-    p4est_partition(p4est_, 1, nullptr);
-    void* saved = p4est_->user_pointer;
-    p4est_->user_pointer = &ctx;
-    p4est_coarsen(p4est_, 0, coarsenCallback, nullptr);
-    p4est_->user_pointer = saved;
-  }
+  p4est_partition(p4est_, 1, nullptr);
+  void* saved = p4est_->user_pointer;
+  p4est_->user_pointer = &ctx;
+  p4est_coarsen(p4est_, 0, coarsenCallback, nullptr);
+  p4est_->user_pointer = saved;
   refineIf([&](int tree, const p4est_quadrant_t& q) { return refineKeys.count({tree, q.x, q.y, q.level}) > 0; });
 }
 
