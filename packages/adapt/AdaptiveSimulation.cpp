@@ -106,13 +106,14 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         for (size_t e = 0; e < flags.size(); ++e)
           if (s.mesh.cellLevel()[e] >= maxLevel) flags[e] = 0;
         auto refined = std::make_shared<mesh::Forest>(s.forest);
-        std::vector<char> small(flags.size(), 0);
         if (coarsen > 0 && strategy != "uniform") {
-          small = markSmallest(r.cellIndicator, coarsen, raw);
+          std::vector<char> small = markSmallest(r.cellIndicator, coarsen, raw);
           for (size_t e = 0; e < small.size(); ++e) small[e] = small[e] && !flags[e];
+          refined->refineAndCoarsen(flags, small, baseLevel);
+          refined->balance();
+        } else {
+          refined->refineMarkedBalanced(flags);  // T^n_l is balanced: adds only the cells the balance forces
         }
-        refined->refineAndCoarsen(flags, small, baseLevel);
-        refined->balance();
         refined->partition();
         const int n = s.step;
         next[n - 1] = (n > 1 && next[n - 2]->sameCells(*refined)) ? next[n - 2] : refined;
