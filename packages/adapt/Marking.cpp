@@ -1,5 +1,6 @@
 #include "Marking.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -32,9 +33,21 @@ uint64_t bisect(Accept accept) {
   return lo;
 }
 
-long long globalCount(const std::vector<double>& v, uint64_t threshold, bool above, MPI_Comm comm) {
-  long long local = 0, global = 0;
-  for (double x : v) local += above ? (key(x) >= threshold) : (key(x) <= threshold);
+/// The keys of the local indicators in ascending order: each bisection step then counts the
+/// cells on either side of a threshold by binary search instead of a pass over all cells.
+std::vector<uint64_t> sortedKeys(const std::vector<double>& v) {
+  std::vector<uint64_t> keys(v.size());
+  for (size_t i = 0; i < v.size(); ++i) keys[i] = key(v[i]);
+  std::sort(keys.begin(), keys.end());
+  return keys;
+}
+
+/// Number of cells of all ranks with key >= threshold (above) or key <= threshold (!above).
+long long globalCount(const std::vector<uint64_t>& sorted, uint64_t threshold, bool above, MPI_Comm comm) {
+  const long long local =
+      above ? static_cast<long long>(sorted.end() - std::lower_bound(sorted.begin(), sorted.end(), threshold))
+            : static_cast<long long>(std::upper_bound(sorted.begin(), sorted.end(), threshold) - sorted.begin());
+  long long global = 0;
   MPI_Allreduce(&local, &global, 1, MPI_LONG_LONG, MPI_SUM, comm);
   return global;
 }
@@ -51,7 +64,8 @@ std::vector<char> markFixedFraction(const std::vector<double>& indicators, doubl
   const long long wanted = static_cast<long long>(std::ceil(fraction * globalSize(indicators, comm)));
   std::vector<char> flags(indicators.size(), 0);
   if (wanted <= 0) return flags;
-  const uint64_t t = bisect([&](uint64_t th) { return globalCount(indicators, th, true, comm) >= wanted; });
+  const auto sorted = sortedKeys(indicators);
+  const uint64_t t = bisect([&](uint64_t th) { return globalCount(sorted, th, true, comm) >= wanted; });
   for (size_t i = 0; i < flags.size(); ++i) flags[i] = key(indicators[i]) >= t;
   return flags;
 }
@@ -78,11 +92,12 @@ std::vector<char> markSmallest(const std::vector<double>& indicators, double fra
   std::vector<char> flags(indicators.size(), 0);
   if (allowed <= 0) return flags;
   // The largest threshold with at most `allowed` cells at or below it.
+  const auto sorted = sortedKeys(indicators);
   uint64_t lo = 0, hi = key(std::numeric_limits<double>::max());
-  if (globalCount(indicators, 0, false, comm) > allowed) return flags;
+  if (globalCount(sorted, 0, false, comm) > allowed) return flags;
   while (lo < hi) {
     const uint64_t mid = lo + (hi - lo + 1) / 2;
-    if (globalCount(indicators, mid, false, comm) <= allowed)
+    if (globalCount(sorted, mid, false, comm) <= allowed)
       lo = mid;
     else
       hi = mid - 1;

@@ -1,9 +1,12 @@
 #include "Forest.hpp"
 
+#include <algorithm>
 #include <set>
 #include <tuple>
 
 #include <p4est_extended.h>
+#include <p4est_ghost.h>
+#include <p4est_iterate.h>
 
 #include "Error.hpp"
 #include "MpiComm.hpp"
@@ -72,12 +75,127 @@ int coarsenCallback(p4est_t* p, p4est_topidx_t tree, p4est_quadrant_t* children[
     if (!ctx.keys.count({static_cast<int>(tree), children[c]->x, children[c]->y, children[c]->level})) return 0;
   return 1;
 }
+
+/// Stores the flags (local cell order) in the quadrants' user_int: the forest holds no user data
+/// (data_size 0), so the field is free, and a refine callback can read its own quadrant's flag
+/// without a search.
+void storeFlags(p4est_t* p4est, const std::vector<char>& flags) {
+  SIGNORINI_ASSERT(p4est->data_size == 0, "the forest carries user data");
+  size_t e = 0;
+  for (p4est_topidx_t t = p4est->first_local_tree; t <= p4est->last_local_tree; ++t) {
+    p4est_tree_t* tree = p4est_tree_array_index(p4est->trees, t);
+    for (size_t qi = 0; qi < tree->quadrants.elem_count; ++qi, ++e)
+      p4est_quadrant_array_index(&tree->quadrants, qi)->p.user_int = flags[e] ? 1 : 0;
+  }
+}
+
+/// Refines, once, the quadrants flagged by storeFlags.
+void refineStoredFlags(p4est_t* p4est) {
+  p4est_refine(
+      p4est, 0, [](p4est_t*, p4est_topidx_t, p4est_quadrant_t* q) { return q->p.user_int; }, nullptr);
+}
 }  // namespace
 
 void Forest::refineMarked(const std::vector<char>& flags) {
   SIGNORINI_ASSERT(flags.size() == static_cast<size_t>(numLocalCells()), "one flag per local cell");
-  const auto keys = flaggedCells(p4est_, flags);
-  refineIf([&](int tree, const p4est_quadrant_t& q) { return keys.count({tree, q.x, q.y, q.level}) > 0; });
+  storeFlags(p4est_, flags);
+  refineStoredFlags(p4est_);
+}
+
+namespace {
+/// "Refining cell `finer` forces refining cell `coarser`": the two touch (face or corner) and
+/// `coarser` is one level coarser. Local cells are numbered 0.., ghosts -1 - (ghost index).
+struct BalanceEdge {
+  long finer, coarser;
+};
+
+long cellNumber(p4est_t* p4est, p4est_topidx_t tree, int8_t isGhost, p4est_locidx_t quadid) {
+  if (isGhost) return -1 - static_cast<long>(quadid);
+  return static_cast<long>(p4est_tree_array_index(p4est->trees, tree)->quadrants_offset + quadid);
+}
+
+void addBalanceEdge(std::vector<BalanceEdge>& edges, long a, int levelA, long b, int levelB) {
+  if (levelA == levelB + 1 && b >= 0) edges.push_back({a, b});
+  if (levelB == levelA + 1 && a >= 0) edges.push_back({b, a});
+}
+
+void balanceFaceEdges(p4est_iter_face_info_t* info, void* user) {
+  auto& edges = *static_cast<std::vector<BalanceEdge>*>(user);
+  if (info->sides.elem_count != 2) return;
+  const auto* s0 = static_cast<const p4est_iter_face_side_t*>(sc_array_index(&info->sides, 0));
+  const auto* s1 = static_cast<const p4est_iter_face_side_t*>(sc_array_index(&info->sides, 1));
+  if (!s0->is_hanging && !s1->is_hanging) return;  // conforming: same level
+  const auto* fine = s0->is_hanging ? s0 : s1;
+  const auto* coarse = s0->is_hanging ? s1 : s0;
+  const long c = cellNumber(info->p4est, coarse->treeid, coarse->is.full.is_ghost, coarse->is.full.quadid);
+  for (int i = 0; i < 2; ++i) {
+    if (!fine->is.hanging.quad[i]) continue;  // neither local nor in the ghost layer
+    const long f = cellNumber(info->p4est, fine->treeid, fine->is.hanging.is_ghost[i], fine->is.hanging.quadid[i]);
+    addBalanceEdge(edges, f, fine->is.hanging.quad[i]->level, c, coarse->is.full.quad->level);
+  }
+}
+
+void balanceCornerEdges(p4est_iter_corner_info_t* info, void* user) {
+  auto& edges = *static_cast<std::vector<BalanceEdge>*>(user);
+  const size_t n = info->sides.elem_count;
+  for (size_t i = 0; i < n; ++i)
+    for (size_t j = i + 1; j < n; ++j) {
+      const auto* a = static_cast<const p4est_iter_corner_side_t*>(sc_array_index(&info->sides, i));
+      const auto* b = static_cast<const p4est_iter_corner_side_t*>(sc_array_index(&info->sides, j));
+      addBalanceEdge(edges, cellNumber(info->p4est, a->treeid, a->is_ghost, a->quadid), a->quad->level,
+                     cellNumber(info->p4est, b->treeid, b->is_ghost, b->quadid), b->quad->level);
+    }
+}
+}  // namespace
+
+void Forest::refineMarkedBalanced(const std::vector<char>& flags) {
+  // In a balanced forest, touching cells differ by at most one level. Refining cell B once leaves
+  // it unbalanced exactly against the touching cells A one level coarser; those must be refined
+  // too, which may force their coarser neighbours, and so on. Every balanced refinement of the
+  // refined forest refines this closure, and refining the closure once is balanced: it is the
+  // coarsest balanced refinement, i.e. p4est_balance's result.
+  SIGNORINI_ASSERT(flags.size() == static_cast<size_t>(numLocalCells()), "one flag per local cell");
+  p4est_ghost_t* ghost = p4est_ghost_new(p4est_, P4EST_CONNECT_FULL);
+  std::vector<BalanceEdge> edges;
+  p4est_iterate(p4est_, ghost, &edges, nullptr, balanceFaceEdges, balanceCornerEdges);
+  // Edges grouped by their finer cell: the local ones by cell, those from ghosts by ghost.
+  const long nLocal = numLocalCells(), nGhost = static_cast<long>(ghost->ghosts.elem_count);
+  std::sort(edges.begin(), edges.end(), [](const BalanceEdge& a, const BalanceEdge& b) { return a.finer < b.finer; });
+  auto forcedBy = [&](long finer) {  // [begin, end) of the edges leaving `finer`
+    auto lo = std::lower_bound(edges.begin(), edges.end(), finer,
+                               [](const BalanceEdge& e, long v) { return e.finer < v; });
+    auto hi = lo;
+    while (hi != edges.end() && hi->finer == finer) ++hi;
+    return std::make_pair(lo, hi);
+  };
+  std::vector<char> closure(flags.begin(), flags.end());
+  std::vector<long> work;
+  for (long e = 0; e < nLocal; ++e)
+    if (closure[e]) work.push_back(e);
+  std::vector<char> ghostFlags(static_cast<size_t>(nGhost), 0), ghostSeen(static_cast<size_t>(nGhost), 0);
+  std::vector<void*> mirrors(ghost->mirrors.elem_count);
+  for (int round = 0;; ++round) {
+    if (round > 0) {  // flags of the ghosts from their owners; newly flagged ghosts force local cells
+      for (size_t m = 0; m < mirrors.size(); ++m)
+        mirrors[m] = &closure[p4est_quadrant_array_index(&ghost->mirrors, m)->p.piggy3.local_num];
+      p4est_ghost_exchange_custom(p4est_, ghost, sizeof(char), mirrors.data(), ghostFlags.data());
+      for (long g = 0; g < nGhost; ++g)
+        if (ghostFlags[g] && !ghostSeen[g]) ghostSeen[g] = 1, work.push_back(-1 - g);
+    }
+    long added = 0;
+    while (!work.empty()) {
+      const long finer = work.back();
+      work.pop_back();
+      const auto [lo, hi] = forcedBy(finer);
+      for (auto it = lo; it != hi; ++it)
+        if (!closure[it->coarser]) closure[it->coarser] = 1, work.push_back(it->coarser), ++added;
+    }
+    long addedGlobal = 0;
+    MPI_Allreduce(&added, &addedGlobal, 1, MPI_LONG, MPI_SUM, p4est_->mpicomm);
+    if (round > 0 && addedGlobal == 0) break;
+  }
+  p4est_ghost_destroy(ghost);
+  refineMarked(closure);
 }
 
 namespace {
@@ -100,17 +218,22 @@ void Forest::refineAndCoarsen(const std::vector<char>& refine, const std::vector
   SIGNORINI_ASSERT(refine.size() == static_cast<size_t>(numLocalCells()) &&
                        coarsen.size() == static_cast<size_t>(numLocalCells()),
                    "one flag per local cell");
+  int coarsenLocal = 0, coarsenAny = 0;
+  for (char c : coarsen) coarsenLocal |= c ? 1 : 0;
+  MPI_Allreduce(&coarsenLocal, &coarsenAny, 1, MPI_INT, MPI_MAX, p4est_->mpicomm);
+  if (!coarsenAny) {  // refinement only: the flags stay with the cells, no exchange needed
+    refineMarked(refine);
+    return;
+  }
   // Families may be split between ranks: share the flagged cells, partition so that families
   // are local, coarsen, then refine by position.
   const auto refineKeys = allFlaggedCells(p4est_, refine);
   CoarsenContext ctx{allFlaggedCells(p4est_, coarsen), minLevel};
-  if (!ctx.keys.empty()) {
-    p4est_partition(p4est_, 1, nullptr);
-    void* saved = p4est_->user_pointer;
-    p4est_->user_pointer = &ctx;
-    p4est_coarsen(p4est_, 0, coarsenCallback, nullptr);
-    p4est_->user_pointer = saved;
-  }
+  p4est_partition(p4est_, 1, nullptr);
+  void* saved = p4est_->user_pointer;
+  p4est_->user_pointer = &ctx;
+  p4est_coarsen(p4est_, 0, coarsenCallback, nullptr);
+  p4est_->user_pointer = saved;
   refineIf([&](int tree, const p4est_quadrant_t& q) { return refineKeys.count({tree, q.x, q.y, q.level}) > 0; });
 }
 

@@ -35,6 +35,10 @@ class Forest {
   void refineIf(const std::function<bool(int tree, const p4est_quadrant_t& q)>& refine);
   /// Refines the local cells whose flag (local cell order) is set, once.
   void refineMarked(const std::vector<char>& flags);
+  /// Refines the flagged cells (local cell order) once and, with them, the cells the 2:1 balance
+  /// over faces and corners then requires: the same forest as refineMarked() followed by
+  /// balance(), for a forest that is balanced on entry, without p4est's general balance.
+  void refineMarkedBalanced(const std::vector<char>& flags);
   /// Replaces each family of four sibling cells that are all flagged by their parent, never
   /// going below \p minLevel.
   void coarsenMarked(const std::vector<char>& flags, int minLevel);

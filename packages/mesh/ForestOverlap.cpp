@@ -11,10 +11,23 @@ namespace {
 
 constexpr int kMaxLevel = P4EST_QMAXLEVEL;
 
+/// Spreads the low 32 bits of v to the even bit positions of the result.
+uint64_t spreadBits(uint64_t v) {
+  v &= 0xffffffffULL;
+  v = (v | (v << 16)) & 0x0000ffff0000ffffULL;
+  v = (v | (v << 8)) & 0x00ff00ff00ff00ffULL;
+  v = (v | (v << 4)) & 0x0f0f0f0f0f0f0f0fULL;
+  v = (v | (v << 2)) & 0x3333333333333333ULL;
+  v = (v | (v << 1)) & 0x5555555555555555ULL;
+  return v;
+}
+
+/// Morton id of the first finest (level kMaxLevel) descendant of q: the same number as
+/// p4est_quadrant_linear_id(first descendant, kMaxLevel) (x bits even, y bits odd), without the
+/// bit-by-bit loop.
 uint64_t firstId(const p4est_quadrant_t& q) {
-  p4est_quadrant_t fd;
-  p4est_quadrant_first_descendant(&q, &fd, kMaxLevel);
-  return p4est_quadrant_linear_id(&fd, kMaxLevel);
+  constexpr int shift = P4EST_MAXLEVEL - kMaxLevel;
+  return spreadBits(static_cast<uint64_t>(q.x) >> shift) | (spreadBits(static_cast<uint64_t>(q.y) >> shift) << 1);
 }
 
 uint64_t span(int level) { return uint64_t(1) << (2 * (kMaxLevel - level)); }
@@ -95,9 +108,9 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
     keys[i] = {static_cast<int>(rec[0]), f, f + span(q.level) - 1};
     order[i] = i;
   }
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return less(keys[a].tree, keys[a].first, keys[b].tree, keys[b].first);
-  });
+  auto byPosition = [&](size_t a, size_t b) { return less(keys[a].tree, keys[a].first, keys[b].tree, keys[b].first); };
+  // Usually sorted already: each rank sends its cells in curve order, and the ranks' parts follow the curve.
+  if (!std::is_sorted(order.begin(), order.end(), byPosition)) std::sort(order.begin(), order.end(), byPosition);
   receivedPayload_.resize(n * static_cast<size_t>(payloadSize));
   received_.resize(n);
   receivedCells_.resize(n);
@@ -111,14 +124,16 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
                          payloadSize ? &receivedPayload_[k * payloadSize] : nullptr};
   }
 
-  // For each local target cell, the received cells whose range intersects its range.
+  // For each local target cell, the received cells whose range intersects its range. The target
+  // cells come in curve order, so each search starts where the previous one ended.
+  auto searchFrom = received_.begin();
   for (p4est_topidx_t t = dst->first_local_tree; t <= dst->last_local_tree; ++t) {
     p4est_tree_t* tree = p4est_tree_array_index(dst->trees, t);
     for (size_t qi = 0; qi < tree->quadrants.elem_count; ++qi) {
       const auto* q = p4est_quadrant_array_index(&tree->quadrants, qi);
       const uint64_t f = firstId(*q), l = f + span(q->level) - 1;
       // First received cell with last >= f in this tree: cells are disjoint and sorted, so search by first.
-      auto it = std::upper_bound(received_.begin(), received_.end(), std::make_pair(static_cast<int>(t), f),
+      auto it = std::upper_bound(searchFrom, received_.end(), std::make_pair(static_cast<int>(t), f),
                                  [](const auto& v, const Key& k) { return less(v.first, v.second, k.tree, k.first); });
       if (it != received_.begin()) {
         auto prev = std::prev(it);
@@ -127,15 +142,16 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
       auto end = it;
       while (end != received_.end() && end->tree == static_cast<int>(t) && end->first <= l) ++end;
       SIGNORINI_ASSERT(end != it, "target cell without an overlapping source cell");
+      searchFrom = it;
       targetRange_.push_back({static_cast<size_t>(it - received_.begin()), static_cast<size_t>(end - received_.begin())});
       targetCells_.push_back({static_cast<int>(t), q->level, q->x / root, q->y / root, 1.0 / (1 << q->level), nullptr});
     }
   }
 }
 
-std::vector<OverlapCell> ForestOverlap::overlapping(int e) const {
+OverlapRange ForestOverlap::overlapping(int e) const {
   const auto [b, en] = targetRange_[e];
-  return std::vector<OverlapCell>(receivedCells_.begin() + b, receivedCells_.begin() + en);
+  return {receivedCells_.data() + b, receivedCells_.data() + en};
 }
 
 }  // namespace signorini::mesh

@@ -22,15 +22,24 @@ struct OverlapCell {
   const double* payload;
 };
 
+/// A contiguous run of OverlapCells (a view: valid as long as its ForestOverlap lives).
+struct OverlapRange {
+  const OverlapCell* first;
+  const OverlapCell* last;
+  const OverlapCell* begin() const { return first; }
+  const OverlapCell* end() const { return last; }
+  size_t size() const { return static_cast<size_t>(last - first); }
+};
+
 class ForestOverlap {
  public:
   /// \param payload  payloadSize doubles per local source cell (local cell order); may be empty
   ///                 when payloadSize is 0.
   ForestOverlap(const Forest& source, const Forest& target, const std::vector<double>& payload, int payloadSize);
 
-  /// The source cells overlapping local target cell e (their payload pointers stay valid as long
-  /// as this object lives).
-  std::vector<OverlapCell> overlapping(int e) const;
+  /// The source cells overlapping local target cell e, in curve order (the range and the payload
+  /// pointers stay valid as long as this object lives).
+  OverlapRange overlapping(int e) const;
   int numTargetCells() const { return static_cast<int>(targetRange_.size()); }
   /// Reference square of local target cell e in its tree and its tree and level.
   const OverlapCell& target(int e) const { return targetCells_[e]; }

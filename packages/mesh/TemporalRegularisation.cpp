@@ -36,8 +36,7 @@ int regulariseInTime(const Forest& neighbour, Forest& target) {
     for (size_t e = 0; e < excess.size(); ++e) any |= (flags[e] = excess[e] > 1 ? 1 : 0);
     MPI_Allreduce(&any, &anyGlobal, 1, MPI_INT, MPI_MAX, target.comm());
     if (!anyGlobal) return pass;
-    target.refineMarked(flags);
-    target.balance();
+    target.refineMarkedBalanced(flags);
     target.partition();
   }
 }

@@ -9,7 +9,8 @@
 namespace signorini::mesh {
 
 /// Refines \p target until none of its cells is more than one level coarser than an overlapping
-/// cell of \p neighbour, keeping 2:1 balance. Returns the number of refinement passes made.
+/// cell of \p neighbour, keeping 2:1 balance (\p target must be balanced on entry). Returns the
+/// number of refinement passes made.
 int regulariseInTime(const Forest& neighbour, Forest& target);
 
 /// Algorithm 5.3 over a sequence of step meshes: forward sweeps (each mesh against its

@@ -82,4 +82,43 @@ TEST(Forest, MarkedRefinementAndCoarseningAndSameCells) {
   EXPECT_GT(f.bytes(), 0u);
 }
 
+TEST(Forest, BalancedRefinementEqualsRefinementThenP4estBalance) {
+  // A graded, balanced forest over several trees (deep refinement near two points), then flags
+  // that depend only on the cell (the same on any partition): the forced closure must give
+  // exactly p4est_balance's forest.
+  test::TestMesh a(0.0, 1.0, 0.0, 1.0, 3, 2, 1);
+  refineAt(*a.forest, 0.999, 0.999, 4);
+  refineAt(*a.forest, 0.3, 0.6, 3);
+  a.forest->balance();
+  a.forest->partition();
+  long long forced = 0;  // cells the balance added beyond the flagged refinement, over all seeds
+  for (int seed = 0; seed < 6; ++seed) {
+    mesh::Forest viaP4est(*a.forest), viaClosure(*a.forest);
+    std::vector<char> flags;
+    p4est_t* p = a.forest->p4est();
+    for (p4est_topidx_t t = p->first_local_tree; t <= p->last_local_tree; ++t) {
+      p4est_tree_t* tree = p4est_tree_array_index(p->trees, t);
+      for (size_t qi = 0; qi < tree->quadrants.elem_count; ++qi) {
+        const auto* q = p4est_quadrant_array_index(&tree->quadrants, qi);
+        const unsigned h = (static_cast<unsigned>(q->x) * 73856093u) ^ (static_cast<unsigned>(q->y) * 19349663u) ^
+                           (static_cast<unsigned>(t) * 83492791u) ^ (static_cast<unsigned>(q->level + seed) * 2654435761u);
+        flags.push_back((h >> 7) % 7 == 0 ? 1 : 0);  // about one cell in seven, scattered over all levels
+      }
+    }
+    viaP4est.refineMarked(flags);
+    const long long refinedOnly = viaP4est.numGlobalCells();
+    viaP4est.balance();
+    forced += viaP4est.numGlobalCells() - refinedOnly;
+    viaClosure.refineMarkedBalanced(flags);
+    EXPECT_EQ(viaClosure.numGlobalCells(), viaP4est.numGlobalCells()) << "seed " << seed;
+    viaP4est.partition();
+    viaClosure.partition();
+    EXPECT_TRUE(viaClosure.sameCells(viaP4est)) << "seed " << seed;
+    mesh::Forest rebalanced(viaClosure);
+    rebalanced.balance();
+    EXPECT_TRUE(rebalanced.sameCells(viaClosure)) << "seed " << seed;
+  }
+  EXPECT_GT(forced, 0);  // the flags did force balancing refinements
+}
+
 }  // namespace

@@ -1,0 +1,95 @@
+#include "JacobiCG.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "Error.hpp"
+
+namespace signorini::estimate {
+
+namespace {
+/// Sum over all ranks of n local partial sums.
+template <int n>
+void sumAll(const Comm& comm, double (&values)[n]) {
+  double global[n];
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, n, values, global);
+  for (int k = 0; k < n; ++k) values[k] = global[k];
+}
+}  // namespace
+
+int solveJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativeTolerance, int maxIterations) {
+  const auto map = A.getRangeMap();
+  const Comm& comm = *map->getComm();
+  const LO n = static_cast<LO>(map->getNodeNumElements());
+  Vector diagonal(A.getRowMap()), r(map), p(map), q(map);
+  A.getLocalDiagCopy(diagonal);
+  A.apply(x, q);
+  double start[2] = {0, 0};  // ||b||^2, r.z
+  {
+    auto bv = b.getLocalViewDevice(Tpetra::Access::ReadOnly);
+    auto dv = diagonal.getLocalViewDevice(Tpetra::Access::ReadOnly);
+    auto qv = q.getLocalViewDevice(Tpetra::Access::ReadOnly);
+    auto rv = r.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+    auto pv = p.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+    Kokkos::parallel_reduce(
+        "signorini::jacobiCG::start", Kokkos::RangePolicy<ExecSpace>(0, n),
+        KOKKOS_LAMBDA(const LO i, double& bb, double& rz) {
+          const double ri = bv(i, 0) - qv(i, 0);
+          rv(i, 0) = ri;
+          pv(i, 0) = ri / dv(i, 0);
+          bb += bv(i, 0) * bv(i, 0);
+          rz += ri * pv(i, 0);
+        },
+        start[0], start[1]);
+  }
+  sumAll(comm, start);
+  const double target = relativeTolerance * std::sqrt(start[0]);
+  double rz = start[1];
+  {  // the initial residual may already be small enough
+    double rr[1] = {r.norm2()};
+    if (rr[0] <= target) return 0;
+  }
+  for (int it = 1; it <= maxIterations; ++it) {
+    A.apply(p, q);
+    double pq[1] = {p.dot(q)};
+    const double alpha = rz / pq[0];
+    double sums[2] = {0, 0};  // r.r, r.z after the update
+    {
+      auto dv = diagonal.getLocalViewDevice(Tpetra::Access::ReadOnly);
+      auto pv = p.getLocalViewDevice(Tpetra::Access::ReadOnly);
+      auto qv = q.getLocalViewDevice(Tpetra::Access::ReadOnly);
+      auto xv = x.getLocalViewDevice(Tpetra::Access::ReadWrite);
+      auto rv = r.getLocalViewDevice(Tpetra::Access::ReadWrite);
+      Kokkos::parallel_reduce(
+          "signorini::jacobiCG::update", Kokkos::RangePolicy<ExecSpace>(0, n),
+          KOKKOS_LAMBDA(const LO i, double& rr, double& rzNew) {
+            xv(i, 0) += alpha * pv(i, 0);
+            const double ri = rv(i, 0) - alpha * qv(i, 0);
+            rv(i, 0) = ri;
+            rr += ri * ri;
+            rzNew += ri * ri / dv(i, 0);
+          },
+          sums[0], sums[1]);
+    }
+    sumAll(comm, sums);
+    if (std::sqrt(sums[0]) <= target) return it;
+    const double beta = sums[1] / rz;
+    rz = sums[1];
+    {
+      auto dv = diagonal.getLocalViewDevice(Tpetra::Access::ReadOnly);
+      auto rv = r.getLocalViewDevice(Tpetra::Access::ReadOnly);
+      auto pv = p.getLocalViewDevice(Tpetra::Access::ReadWrite);
+      Kokkos::parallel_for(
+          "signorini::jacobiCG::direction", Kokkos::RangePolicy<ExecSpace>(0, n),
+          KOKKOS_LAMBDA(const LO i) { pv(i, 0) = rv(i, 0) / dv(i, 0) + beta * pv(i, 0); });
+    }
+  }
+  throw core::SolverError("Jacobi CG: no convergence to " + std::to_string(relativeTolerance) + " in " +
+                          std::to_string(maxIterations) + " iterations");
+}
+
+}  // namespace signorini::estimate

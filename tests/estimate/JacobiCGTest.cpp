@@ -1,0 +1,67 @@
+// The estimator's lean Jacobi CG solves K + M (hanging nodes, Dirichlet rows) to its tolerance
+// on any number of ranks and reports non-convergence.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "../TestMesh.hpp"
+#include "Error.hpp"
+#include "JacobiCG.hpp"
+#include "Q1Assembler.hpp"
+
+using namespace signorini;
+
+namespace {
+
+struct System {
+  test::TestMesh tm{0.0, 1.0, 0.0, 1.0, 3, 2, 2};
+  std::unique_ptr<fem::Q1Assembler> assembler;
+  RCP<CrsMatrix> A;
+  System() {
+    tm.refineCorner();
+    const auto& mesh = tm.build();
+    assembler = std::make_unique<fem::Q1Assembler>(mesh, mesh.nodesOnSegments(1u << tm.segments->index("left", "test")));
+    A = assembler->assembleOperator(1.0, 1.0, 1.0, 1.0);
+  }
+};
+
+}  // namespace
+
+TEST(JacobiCG, ReachesTheRelativeTolerance) {
+  System s;
+  const auto map = s.A->getRangeMap();
+  Vector exact(map), b(map), x(map), r(map);
+  exact.randomize();
+  s.assembler->zeroDirichlet(exact);
+  s.A->apply(exact, b);
+  x.putScalar(0.0);
+  const int its = estimate::solveJacobiCG(*s.A, b, x, 1e-10, 1000);
+  EXPECT_GT(its, 0);
+  s.A->apply(x, r);
+  r.update(1.0, b, -1.0);
+  EXPECT_LE(r.norm2(), 1e-9 * b.norm2());  // the true residual, not only the recursive one
+  x.update(-1.0, exact, 1.0);
+  EXPECT_LE(x.norm2(), 1e-6 * exact.norm2());
+}
+
+TEST(JacobiCG, ZeroRightHandSideNeedsNoIteration) {
+  System s;
+  Vector b(s.A->getRangeMap()), x(s.A->getRangeMap());
+  b.putScalar(0.0);
+  x.putScalar(0.0);
+  EXPECT_EQ(estimate::solveJacobiCG(*s.A, b, x, 1e-4, 10), 0);
+  EXPECT_EQ(x.norm2(), 0.0);
+}
+
+TEST(JacobiCG, ThrowsWithoutConvergence) {
+  System s;
+  Vector b(s.A->getRangeMap()), x(s.A->getRangeMap());
+  b.randomize();
+  s.assembler->zeroDirichlet(b);
+  x.putScalar(0.0);
+  EXPECT_THROW(estimate::solveJacobiCG(*s.A, b, x, 1e-12, 1), core::SolverError);
+}
