@@ -279,12 +279,12 @@ struct Simulation::Impl {
     return kin + 0.5 * tmp.dot(u);
   }
   /// The energy the Newmark scheme with alpha = 1/2 conserves without contact and loads:
-  /// kinetic + strain + (beta - 1/4) k^2 / 2 a^T M a.
-  double newmarkEnergy(const Discretisation& d, const Vector& u, const Vector& v, const Vector& a) const {
+  /// kinetic + strain (\p energy, from energy()) + (beta - 1/4) k^2 / 2 a^T M a.
+  double newmarkEnergy(const Discretisation& d, double energy, const Vector& a) const {
     Vector tmp(d.assembler->ownedMap());
     d.M->apply(a, tmp);
     const double k = newmark->timeStep;
-    return energy(d, u, v) + (newmark->beta - 0.25) * 0.5 * k * k * tmp.dot(a);
+    return energy + (newmark->beta - 0.25) * 0.5 * k * k * tmp.dot(a);
   }
 
   /// Moves (u, v, a) from the old discretisation to the new one; the multipliers follow the
@@ -496,9 +496,10 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       for (int j = 0; j < d->coupling->numSegments(); ++j) force -= toPhysical * lambda[j] * d->coupling->segmentLength()[j];
     Vector uOverlap(d->assembler->overlapMap());
     d->assembler->toOverlap(*u, uOverlap);
+    const double energy = I.energy(*d, *u, *v);
     std::vector<double> row = {double(step), t, dofs, double(qr.active), double(qr.activeSetIterations),
                                double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),
-                               I.energy(*d, *u, *v), I.newmarkEnergy(*d, *u, *v, *a), force,
+                               energy, I.newmarkEnergy(*d, energy, *a), force,
                                toPhysical * qr.maxLambda, qr.minGap, toPhysical * qr.maxComplementarity, tAssembly,
                                tContact, 0.0, tFree, tRemesh, tEstimate};
     for (const auto& p : I.probes)

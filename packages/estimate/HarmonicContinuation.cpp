@@ -4,9 +4,75 @@
 #include <cmath>
 
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "Error.hpp"
+
 namespace signorini::estimate {
+
+namespace {
+
+/// The matrix \p full with the rows and columns of the \p prescribed nodes (flags on the overlap
+/// map, consistent across ranks) replaced by identity rows and zero columns, on the same graph.
+/// For a matrix from Q1Assembler::assembleOperator this equals, bit for bit, assembling with those
+/// nodes as the Dirichlet override: the override only skips the contributions to prescribed rows and columns,
+/// so every other entry receives the same contributions in the same order (and the prescribed
+/// set contains the assembler's own Dirichlet nodes, whose rows and columns \p full already
+/// eliminates). Saves the second assembly.
+RCP<const CrsMatrix> withPrescribedRows(const CrsMatrix& full, const std::vector<char>& prescribed) {
+  const auto colMap = full.getColMap();
+  const auto rowMap = full.getRowMap();
+  const auto graph = full.getCrsGraph();
+  const LO nCols = static_cast<LO>(colMap->getNodeNumElements());
+  const LO nRows = static_cast<LO>(rowMap->getNodeNumElements());
+  // The flags of the columns: after the export to the owned rows, a row may have columns that are
+  // not in this rank's overlap map, so the owned flags are imported like a vector.
+  Vector rowFlags(full.getDomainMap()), colFlags(colMap);
+  {
+    SIGNORINI_ASSERT(full.getDomainMap()->isSameAs(*rowMap), "the rows are not the owned nodes");
+    auto h = rowFlags.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (LO i = 0; i < nRows; ++i) h(i, 0) = prescribed[i] ? 1.0 : 0.0;  // owned nodes come first in the overlap map
+  }
+  if (graph->getImporter().is_null())
+    colFlags.assign(rowFlags);
+  else
+    colFlags.doImport(rowFlags, *graph->getImporter(), Tpetra::INSERT);
+  Kokkos::View<char*, DeviceType> colFixed("s1PrescribedColumns", nCols), rowFixed("s1PrescribedRows", nRows);
+  Kokkos::View<LO*, DeviceType> diagonal("s1DiagonalColumn", nRows);
+  {
+    auto ch = Kokkos::create_mirror_view(colFixed);
+    auto cf = colFlags.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (LO c = 0; c < nCols; ++c) ch(c) = cf(c, 0) != 0.0;
+    Kokkos::deep_copy(colFixed, ch);
+    auto rh = Kokkos::create_mirror_view(rowFixed);
+    auto dh = Kokkos::create_mirror_view(diagonal);
+    for (LO i = 0; i < nRows; ++i) {
+      rh(i) = prescribed[i];
+      dh(i) = colMap->getLocalElement(rowMap->getGlobalElement(i));
+    }
+    Kokkos::deep_copy(rowFixed, rh);
+    Kokkos::deep_copy(diagonal, dh);
+  }
+  const auto local = full.getLocalMatrixDevice();
+  using LocalMatrix = CrsMatrix::local_matrix_device_type;
+  LocalMatrix::values_type values(Kokkos::view_alloc("s1Values", Kokkos::WithoutInitializing), local.values.extent(0));
+  const auto rowPtr = local.graph.row_map;
+  const auto cols = local.graph.entries;
+  const auto fullValues = local.values;
+  Kokkos::parallel_for(
+      "signorini::estimator::prescribedRows", Kokkos::RangePolicy<ExecSpace>(0, nRows), KOKKOS_LAMBDA(const LO i) {
+        for (auto k = rowPtr(i); k < rowPtr(i + 1); ++k) {
+          const LO c = cols(k);
+          values(k) = rowFixed(i) ? (c == diagonal(i) ? 1.0 : 0.0) : (colFixed(c) ? 0.0 : fullValues(k));
+        }
+      });
+  LocalMatrix constrained("s1Operator", local.numRows(), local.numCols(), local.nnz(), values, rowPtr, cols);
+  return Teuchos::rcp(new CrsMatrix(constrained, rowMap, colMap, full.getDomainMap(), full.getRangeMap(),
+                                    graph->getImporter(), graph->getExporter()));
+}
+
+}  // namespace
 
 double harmonicContinuationNorm(const fem::Q1Assembler& scalar, const std::vector<char>& contact, const Vector& boundary,
                                 const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD) {
@@ -17,7 +83,7 @@ double harmonicContinuationNorm(const fem::Q1Assembler& scalar, const std::vecto
   for (size_t i = 0; i < prescribed.size(); ++i) prescribed[i] = (dirichlet[i] || contact[i]) ? 1 : 0;
   // K + M with the Dirichlet rows and columns eliminated: v^T A v is the full H1 norm for v = 0 there.
   const RCP<const CrsMatrix> full = scalar.assembleOperator(1.0, 1.0, 1.0, 1.0);
-  const RCP<const CrsMatrix> A = scalar.assembleOperator(1.0, 1.0, 1.0, 1.0, {}, &prescribed);
+  const RCP<const CrsMatrix> A = withPrescribedRows(*full, prescribed);
   // Lifting: b = -A_full w on the free nodes, b = w on the prescribed ones (identity rows).
   Vector b(owned), d(owned), Ad(owned);
   full->apply(boundary, b);
