@@ -11,6 +11,7 @@
 #include <p4est_iterate.h>
 
 #include "Error.hpp"
+#include "Q1Kernels.hpp"
 #include "Forest.hpp"
 #include "Types.hpp"
 
@@ -25,6 +26,38 @@ KOKKOS_INLINE_FUNCTION double cellDiameter(const double X[4][2]) {
   const double d0 = (X[3][0] - X[0][0]) * (X[3][0] - X[0][0]) + (X[3][1] - X[0][1]) * (X[3][1] - X[0][1]);
   const double d1 = (X[2][0] - X[1][0]) * (X[2][0] - X[1][0]) + (X[2][1] - X[1][1]) * (X[2][1] - X[1][1]);
   return Kokkos::Experimental::sqrt(d0 > d1 ? d0 : d1);
+}
+
+/// Second derivatives (u_xx, u_yy, u_xy) of the bilinear (isoparametric Q1) field with corner
+/// values u on the cell with corners X (z-order) at the reference point (s, r).
+///
+/// With the map x(s, r) = sum_c X_c N_c and J = dx/d(s,r), the chain rule gives for the reference
+/// Hessian H_ref(u) = J^T H(u) J + sum_i u_{x_i} H_ref(x_i). For bilinear u and x only the mixed
+/// derivatives are non-zero: u_sr = u0 - u1 - u2 + u3 and x_sr = X0 - X1 - X2 + X3, so
+/// J^T H(u) J = [[0, m], [m, 0]] with m = u_sr - grad(u) . x_sr, and H(u) = m (grad s (x) grad r +
+/// grad r (x) grad s). On axis-parallel rectangles only u_xy = m / (h_x h_y) remains; for the linear
+/// fields the space contains m = 0 on every cell.
+KOKKOS_INLINE_FUNCTION void q1Hessian(const double X[4][2], const double u[4], double s, double r, double H[3]) {
+  double N[4], dNds[4], dNdr[4];
+  fem::q1Shape(s, r, N, dNds, dNdr);
+  double a0 = 0, a1 = 0, b0 = 0, b1 = 0;  // a = x_s, b = x_r
+  for (int c = 0; c < 4; ++c) {
+    a0 += X[c][0] * dNds[c];
+    a1 += X[c][1] * dNds[c];
+    b0 += X[c][0] * dNdr[c];
+    b1 += X[c][1] * dNdr[c];
+  }
+  const double det = a0 * b1 - b0 * a1;
+  double us = 0, ur = 0;
+  for (int c = 0; c < 4; ++c) us += u[c] * dNds[c], ur += u[c] * dNdr[c];
+  const double ux = (b1 * us - a1 * ur) / det, uy = (-b0 * us + a0 * ur) / det;
+  const double usr = u[0] - u[1] - u[2] + u[3];
+  const double xsr0 = X[0][0] - X[1][0] - X[2][0] + X[3][0], xsr1 = X[0][1] - X[1][1] - X[2][1] + X[3][1];
+  const double m = usr - ux * xsr0 - uy * xsr1;
+  const double sx = b1 / det, sy = -b0 / det, rx = -a1 / det, ry = a0 / det;  // grad s, grad r
+  H[0] = 2 * m * sx * rx;
+  H[1] = 2 * m * sy * ry;
+  H[2] = m * (sx * ry + rx * sy);
 }
 
 /// Reference point of face f (0:-x 1:+x 2:-y 3:+y) at parameter tau, which runs from corner

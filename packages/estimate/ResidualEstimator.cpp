@@ -27,6 +27,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "Error.hpp"
+#include "EstimatorTools.hpp"
 #include "HarmonicContinuation.hpp"
 #include "Q1Kernels.hpp"
 
@@ -34,47 +35,15 @@ namespace signorini::estimate {
 
 namespace {
 
-/// 3-point Gauss rule on [0,1] (exact for quintics): cell residuals (3x3), edge terms, s0.
-constexpr double kG3[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
-constexpr double kW3[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
 
 /// Laplacian of the bilinear (isoparametric Q1) field with corner values u on the cell with
-/// corners X (z-order), at the reference point (s, r).
-///
-/// With the map x(s, r) = sum_c X_c N_c and J = dx/d(s,r) (columns a = x_s, b = x_r), the chain
-/// rule gives for the reference Hessian H_ref(u) = J^T H(u) J + sum_i u_{x_i} H_ref(x_i).
-/// For bilinear u and x only the mixed derivatives are non-zero: u_sr = u0 - u1 - u2 + u3 and
-/// x_sr = X0 - X1 - X2 + X3. Hence J^T H(u) J = [[0, m], [m, 0]] with m = u_sr - grad(u) . x_sr,
-/// and Laplace(u) = tr H(u) = tr([[0, m], [m, 0]] (J^T J)^{-1}) = -2 m (a . b) / det(J)^2.
-/// It vanishes on parallelograms only if u_sr does (never for the bilinear shape functions unless
-/// a . b = 0, i.e. rectangles), and on every cell for the linear fields the space contains
-/// (then m = 0).
+/// corners X at the reference point (s, r): the trace of q1Hessian, 2 m grad s . grad r =
+/// -2 m (x_s . x_r) / det(J)^2. It vanishes on rectangles (x_s . x_r = 0) and for the linear fields
+/// the space contains (m = 0); on other parallelograms it does not, unless u_sr does.
 KOKKOS_INLINE_FUNCTION double q1Laplacian(const double X[4][2], const double u[4], double s, double r) {
-  double N[4], dNds[4], dNdr[4];
-  fem::q1Shape(s, r, N, dNds, dNdr);
-  double a0 = 0, a1 = 0, b0 = 0, b1 = 0;  // a = x_s, b = x_r
-  for (int c = 0; c < 4; ++c) {
-    a0 += X[c][0] * dNds[c];
-    a1 += X[c][1] * dNds[c];
-    b0 += X[c][0] * dNdr[c];
-    b1 += X[c][1] * dNdr[c];
-  }
-  const double det = a0 * b1 - b0 * a1;
-  double us = 0, ur = 0;
-  for (int c = 0; c < 4; ++c) us += u[c] * dNds[c], ur += u[c] * dNdr[c];
-  // grad u = J^{-T} (u_s, u_r)
-  const double ux = (b1 * us - a1 * ur) / det, uy = (-b0 * us + a0 * ur) / det;
-  const double usr = u[0] - u[1] - u[2] + u[3];
-  const double xsr0 = X[0][0] - X[1][0] - X[2][0] + X[3][0], xsr1 = X[0][1] - X[1][1] - X[2][1] + X[3][1];
-  const double m = usr - ux * xsr0 - uy * xsr1;
-  return -2.0 * m * (a0 * b0 + a1 * b1) / (det * det);
-}
-
-/// Longest diagonal of a cell (h_K).
-KOKKOS_INLINE_FUNCTION double cellDiameter(const double X[4][2]) {
-  const double d0 = (X[3][0] - X[0][0]) * (X[3][0] - X[0][0]) + (X[3][1] - X[0][1]) * (X[3][1] - X[0][1]);
-  const double d1 = (X[2][0] - X[1][0]) * (X[2][0] - X[1][0]) + (X[2][1] - X[1][1]) * (X[2][1] - X[1][1]);
-  return Kokkos::Experimental::sqrt(d0 > d1 ? d0 : d1);
+  double H[3];
+  q1Hessian(X, u, s, r, H);
+  return H[0] + H[1];
 }
 
 /// What the face terms need of one cell: its corners and the corner values of u_h (hanging
@@ -83,38 +52,6 @@ struct CellPayload {
   double X[4][2];
   double u[4];
 };
-
-/// Reference point of face f (0:-x 1:+x 2:-y 3:+y) at parameter tau, which runs from corner
-/// p4est_face_corners[f][0] (tau = 0) to p4est_face_corners[f][1] (tau = 1).
-void faceReference(int f, double tau, double& s, double& r) {
-  if (f < 2) {
-    s = f == 0 ? 0.0 : 1.0;
-    r = tau;
-  } else {
-    s = tau;
-    r = f == 2 ? 0.0 : 1.0;
-  }
-}
-
-/// Unit outward normal of face f of a cell (the face is straight).
-void outwardNormal(const CellPayload& c, int f, double n[2]) {
-  const double* p0 = c.X[p4est_face_corners[f][0]];
-  const double* p1 = c.X[p4est_face_corners[f][1]];
-  const double tx = p1[0] - p0[0], ty = p1[1] - p0[1], len = std::hypot(tx, ty);
-  n[0] = ty / len;
-  n[1] = -tx / len;
-  double cx = 0, cy = 0;
-  for (int k = 0; k < 4; ++k) cx += 0.25 * c.X[k][0], cy += 0.25 * c.X[k][1];
-  if (n[0] * (0.5 * (p0[0] + p1[0]) - cx) + n[1] * (0.5 * (p0[1] + p1[1]) - cy) < 0) n[0] = -n[0], n[1] = -n[1];
-}
-
-/// Parameter tau of the physical point P on face f of a cell (orthogonal projection on the face).
-double faceParameter(const CellPayload& c, int f, const double P[2]) {
-  const double* p0 = c.X[p4est_face_corners[f][0]];
-  const double* p1 = c.X[p4est_face_corners[f][1]];
-  const double tx = p1[0] - p0[0], ty = p1[1] - p0[1];
-  return ((P[0] - p0[0]) * tx + (P[1] - p0[1]) * ty) / (tx * tx + ty * ty);
-}
 
 /// grad u_h . n at parameter tau of face f of the cell.
 double normalDerivative(const CellPayload& c, int f, double tau, const double n[2]) {
@@ -134,32 +71,13 @@ struct FaceContext {
   double kappa, halfBk2;          ///< kappa and beta k^2 / 2
 };
 
-/// One cell on one side of a face: its payload and its local index (-1 for a ghost).
-struct FaceCell {
-  const CellPayload* data;
-  LO local;
-  int face;
-};
-
-FaceCell faceCell(const FaceContext& ctx, p4est_t* p4est, p4est_topidx_t tree, int face, int8_t isGhost,
-                  p4est_locidx_t quadid) {
-  if (isGhost) {
-    SIGNORINI_ASSERT(quadid >= 0 && static_cast<size_t>(quadid) < ctx.ghosts->size(),
-                     "face neighbour missing from the ghost layer");
-    return {&(*ctx.ghosts)[quadid], -1, face};
-  }
-  const p4est_tree_t* t = p4est_tree_array_index(p4est->trees, tree);
-  const LO e = static_cast<LO>(t->quadrants_offset + quadid);
-  return {&(*ctx.local)[e], e, face};
-}
-
 /// The jump term of the fine edge that is the whole face of cell A (the finer or equal side)
 /// and part (or all) of the face of cell B. With J = [kappa du_h/dn] = kappa (grad u_A - grad u_B) . n_A
 /// and R = -(beta k^2 / 2) J, each side's cell K in {A, B} that is local receives h_K ||R||^2_E:
 /// the edge contributes (h_A + h_B) (beta k^2 / 2)^2 ||J||^2_E to eta_*^2 in total. On a hanging
 /// face the coarse cell B receives this for each of its two halves, with its own flux evaluated
 /// on that half.
-void addEdgeJump(const FaceContext& ctx, const FaceCell& A, const FaceCell& B) {
+void addEdgeJump(const FaceContext& ctx, const FaceSide<CellPayload>& A, const FaceSide<CellPayload>& B) {
   if (A.local < 0 && B.local < 0) return;
   const CellPayload& a = *A.data;
   const CellPayload& b = *B.data;
@@ -167,8 +85,8 @@ void addEdgeJump(const FaceContext& ctx, const FaceCell& A, const FaceCell& B) {
   const double* P1 = a.X[p4est_face_corners[A.face][1]];
   const double len = std::hypot(P1[0] - P0[0], P1[1] - P0[1]);
   double n[2];
-  outwardNormal(a, A.face, n);
-  const double b0 = faceParameter(b, B.face, P0), b1 = faceParameter(b, B.face, P1);
+  outwardNormal(a.X, A.face, n);
+  const double b0 = faceParameter(b.X, B.face, P0), b1 = faceParameter(b.X, B.face, P1);
   double integral = 0;
   for (int g = 0; g < 3; ++g) {
     const double jump =
@@ -178,77 +96,6 @@ void addEdgeJump(const FaceContext& ctx, const FaceCell& A, const FaceCell& B) {
   const double rSquared = ctx.halfBk2 * ctx.halfBk2 * integral * len;  // ||R||^2_E
   if (A.local >= 0) (*ctx.edgeTerm)[A.local] += cellDiameter(a.X) * rSquared;
   if (B.local >= 0) (*ctx.edgeTerm)[B.local] += cellDiameter(b.X) * rSquared;
-}
-
-void faceCallback(p4est_iter_face_info_t* info, void* user) {
-  const FaceContext& ctx = *static_cast<const FaceContext*>(user);
-  if (info->sides.elem_count != 2) return;  // domain boundary: from Q1Mesh::boundaryEdges()
-  const auto* s0 = static_cast<const p4est_iter_face_side_t*>(sc_array_index(&info->sides, 0));
-  const auto* s1 = static_cast<const p4est_iter_face_side_t*>(sc_array_index(&info->sides, 1));
-  p4est_t* p4est = info->p4est;
-  if (!s0->is_hanging && !s1->is_hanging) {
-    addEdgeJump(ctx, faceCell(ctx, p4est, s0->treeid, s0->face, s0->is.full.is_ghost, s0->is.full.quadid),
-                faceCell(ctx, p4est, s1->treeid, s1->face, s1->is.full.is_ghost, s1->is.full.quadid));
-    return;
-  }
-  // 2:1 face: one side has two half-size cells, the other one full cell (in 2D never both hanging).
-  const auto* fine = s0->is_hanging ? s0 : s1;
-  const auto* coarse = s0->is_hanging ? s1 : s0;
-  SIGNORINI_ASSERT(!coarse->is_hanging, "both sides of a face are hanging");
-  const FaceCell big =
-      faceCell(ctx, p4est, coarse->treeid, coarse->face, coarse->is.full.is_ghost, coarse->is.full.quadid);
-  for (int i = 0; i < 2; ++i) {
-    if (fine->is.hanging.quadid[i] < 0) continue;  // not in the ghost layer: touches no local cell here
-    const FaceCell small =
-        faceCell(ctx, p4est, fine->treeid, fine->face, fine->is.hanging.is_ghost[i], fine->is.hanging.quadid[i]);
-    addEdgeJump(ctx, small, big);
-  }
-}
-
-/// int_0^1 max(d(tau), 0) dtau for a function d on [0, 1] (the edge parameter): four pieces, each
-/// split at a sign change of d (regula falsi, then Illinois steps: exact in one step for linear d),
-/// 3-point Gauss on every part. Exact when d is linear (g linear along the edge).
-template <class F>
-double positivePartIntegral(const F& d) {
-  constexpr int pieces = 4;
-  auto gauss = [&](double a, double b) {
-    double s = 0;
-    for (int g = 0; g < 3; ++g) s += kW3[g] * std::max(d(a + kG3[g] * (b - a)), 0.0);
-    return (b - a) * s;
-  };
-  double total = 0;
-  for (int p = 0; p < pieces; ++p) {
-    double a = static_cast<double>(p) / pieces, b = static_cast<double>(p + 1) / pieces;
-    double da = d(a), db = d(b);
-    if ((da > 0 && db < 0) || (da < 0 && db > 0)) {
-      const double a0 = a, b0 = b;
-      const bool positiveLeft = da > 0;
-      double root = a - da * (b - a) / (db - da);
-      for (int it = 0, side = 0; it < 100; ++it) {
-        const double dr = d(root);
-        if (dr == 0.0 || b - a < 1e-15) break;
-        if ((dr > 0) == (da > 0)) {
-          a = root, da = dr;
-          if (side == -1) db *= 0.5;
-          side = -1;
-        } else {
-          b = root, db = dr;
-          if (side == 1) da *= 0.5;
-          side = 1;
-        }
-        const double next = a - da * (b - a) / (db - da);
-        if (std::abs(next - root) <= 1e-15) {
-          root = next;
-          break;
-        }
-        root = next;
-      }
-      total += positiveLeft ? gauss(a0, root) : gauss(root, b0);
-    } else {
-      total += gauss(a, b);  // one sign at the ends; interior bumps are caught by the Gauss points
-    }
-  }
-  return total;
 }
 
 
@@ -367,18 +214,10 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
   //     the neighbours on other ranks taken from p4est's face ghost layer.
   std::vector<double> edgeTerm(static_cast<size_t>(nc), 0.0);
   {
-    p4est_t* p4est = in.forest.p4est();
-    p4est_ghost_t* ghost = p4est_ghost_new(p4est, P4EST_CONNECT_FACE);
-    std::vector<CellPayload> ghosts(ghost->ghosts.elem_count);
-    std::vector<void*> mirrors(ghost->mirrors.elem_count);
-    for (size_t m = 0; m < mirrors.size(); ++m) {
-      const auto* q = p4est_quadrant_array_index(&ghost->mirrors, m);
-      mirrors[m] = &local[q->p.piggy3.local_num];
-    }
-    p4est_ghost_exchange_custom(p4est, ghost, sizeof(CellPayload), mirrors.data(), ghosts.data());
-    FaceContext ctx{&local, &ghosts, &edgeTerm, kappa, 0.5 * bk2};
-    p4est_iterate(p4est, ghost, &ctx, nullptr, faceCallback, nullptr);
-    p4est_ghost_destroy(ghost);
+    FaceContext ctx{&local, nullptr, &edgeTerm, kappa, 0.5 * bk2};
+    forEachInteriorFace<CellPayload>(
+        in.forest, local, [&](const std::vector<CellPayload>& ghosts) { ctx.ghosts = &ghosts; },
+        [&](const FaceSide<CellPayload>& a, const FaceSide<CellPayload>& b) { addEdgeJump(ctx, a, b); });
   }
 
   // --- Boundary edges: R = beta k^2 kappa du_h/dn - beta k^2 q [Neumann] + lambda_j [contact],
@@ -401,7 +240,7 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
     const double lambda = seg >= 0 ? in.lambda[seg] : 0.0;
     const CellPayload& c = local[be.cell];
     double n[2];
-    outwardNormal(c, be.face, n);
+    outwardNormal(c.X, be.face, n);
     const double len = be.length();
     double integral = 0;
     for (int g = 0; g < 3; ++g) {
