@@ -234,18 +234,7 @@ EstimatorResult ElasticityEstimator::estimate(const ElasticityEstimatorInput& in
     }
   }
 
-  EstimatorResult res;
-  res.cellIndicator.resize(static_cast<size_t>(nc));
-  double etaLocal = 0;
-  for (LO e = 0; e < nc; ++e) {
-    const double etaK2 = volHost(e) + edgeTerm[e];
-    etaLocal += etaK2;
-    res.cellIndicator[e] = etaK2 + s0Share[e];
-  }
-  double local2[2] = {etaLocal, s0Local}, global2[2] = {0, 0};
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 2, local2, global2);
-  res.etaStar = std::sqrt(std::max(global2[0], 0.0));
-  res.s0 = std::sqrt(std::abs(global2[1]));
+  EstimatorResult res = combineCellTerms(volHost, edgeTerm, s0Share, s0Local, *comm);
 
   // --- s1: the harmonic continuation of (g - sign u_c)_+ from the contact nodes, zero where u_c is fixed.
   if (in.coupling && params_.get<bool>("Compute S1")) {
@@ -275,13 +264,7 @@ EstimatorResult ElasticityEstimator::estimate(const ElasticityEstimatorInput& in
       res.s1 = harmonicContinuationNorm(scalar, contact, boundary, in.solveSPD);
     }
   }
-  if (params_.get<std::string>("Scaling") == "physical") {
-    const double c = bk2;
-    res.etaStar /= c;
-    res.s0 /= std::sqrt(c);
-    for (size_t e = 0; e < res.cellIndicator.size(); ++e)
-      res.cellIndicator[e] = (res.cellIndicator[e] - s0Share[e]) / (c * c) + s0Share[e] / c;
-  }
+  if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2);
   res.eta = res.etaStar + res.s0 + res.s1;
   return res;
 }

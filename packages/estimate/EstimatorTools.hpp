@@ -9,9 +9,11 @@
 
 #include <p4est_ghost.h>
 #include <p4est_iterate.h>
+#include <Teuchos_CommHelpers.hpp>
 
 #include "Error.hpp"
 #include "Q1Kernels.hpp"
+#include "ResidualEstimator.hpp"
 #include "Forest.hpp"
 #include "Types.hpp"
 
@@ -209,6 +211,35 @@ void forEachInteriorFace(const mesh::Forest& forest, const std::vector<Payload>&
   detail::FaceIteration<Payload, OnPair> it{&local, &ghosts, &onPair};
   p4est_iterate(p4est, ghost, &it, nullptr, &detail::FaceIteration<Payload, OnPair>::callback, nullptr);
   p4est_ghost_destroy(ghost);
+}
+
+/// eta_*, s0 and the cell indicators eta_K^2 + (s0 share) from the per-cell parts (DESIGN 1.3),
+/// eta_* and s0 summed over all ranks. \p volume(e) = h_K^2 ||r||^2_K, \p edgeTerm[e] = h_K ||R||^2_{dK}.
+template <class Volume>
+EstimatorResult combineCellTerms(const Volume& volume, const std::vector<double>& edgeTerm,
+                                 const std::vector<double>& s0Share, double s0Local, const Comm& comm) {
+  EstimatorResult res;
+  res.cellIndicator.resize(edgeTerm.size());
+  double etaLocal = 0;
+  for (size_t e = 0; e < edgeTerm.size(); ++e) {
+    const double etaK2 = volume(e) + edgeTerm[e];
+    etaLocal += etaK2;
+    res.cellIndicator[e] = etaK2 + s0Share[e];
+  }
+  double local2[2] = {etaLocal, s0Local}, global2[2] = {0, 0};
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 2, local2, global2);
+  res.etaStar = std::sqrt(std::max(global2[0], 0.0));
+  res.s0 = std::sqrt(std::abs(global2[1]));
+  return res;
+}
+
+/// The "physical" scaling of the estimate of the step equation: eta_* / (beta k^2), s0 / sqrt(beta k^2),
+/// the cell indicators term by term.
+inline void scaleToPhysical(EstimatorResult& res, const std::vector<double>& s0Share, double bk2) {
+  res.etaStar /= bk2;
+  res.s0 /= std::sqrt(bk2);
+  for (size_t e = 0; e < res.cellIndicator.size(); ++e)
+    res.cellIndicator[e] = (res.cellIndicator[e] - s0Share[e]) / (bk2 * bk2) + s0Share[e] / bk2;
 }
 
 }  // namespace signorini::estimate

@@ -267,18 +267,7 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
     }
   }
 
-  EstimatorResult res;
-  res.cellIndicator.resize(static_cast<size_t>(nc));
-  double etaLocal = 0;
-  for (LO e = 0; e < nc; ++e) {
-    const double etaK2 = volHost(e) + edgeTerm[e];
-    etaLocal += etaK2;
-    res.cellIndicator[e] = etaK2 + s0Share[e];
-  }
-  double local2[2] = {etaLocal, s0Local}, global2[2] = {0, 0};
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 2, local2, global2);
-  res.etaStar = std::sqrt(std::max(global2[0], 0.0));
-  res.s0 = std::sqrt(std::abs(global2[1]));
+  EstimatorResult res = combineCellTerms(volHost, edgeTerm, s0Share, s0Local, *comm);
 
   // --- s1: the harmonic continuation d of the nodal values of (g - u_h)_+ on Gamma_C, i.e. the
   //     minimiser of ||v||_1^2 = int |grad v|^2 + v^2 with v = 0 on Gamma_D (first) and v = (g - u_h)_+
@@ -307,13 +296,7 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
       res.s1 = harmonicContinuationNorm(in.assembler, contact, boundary, in.solveSPD);
     }
   }
-  if (params_.get<std::string>("Scaling") == "physical") {
-    const double c = in.beta * in.timeStep * in.timeStep;
-    res.etaStar /= c;
-    res.s0 /= std::sqrt(c);
-    for (size_t e = 0; e < res.cellIndicator.size(); ++e)
-      res.cellIndicator[e] = (res.cellIndicator[e] - s0Share[e]) / (c * c) + s0Share[e] / c;
-  }
+  if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2);
   res.eta = res.etaStar + res.s0 + res.s1;
   return res;
 }

@@ -21,33 +21,12 @@
 #include "ContactCoupling.hpp"
 #include "ElasticityEstimator.hpp"
 #include "MpiComm.hpp"
+#include "SolveCG.hpp"
 
 using namespace signorini;
+using test::solveCG;
 
 namespace {
-
-void solveCG(const RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
-  const auto map = A->getRowMap();
-  Vector d(map), r(map), z(map), p(map), Ap(map);
-  A->getLocalDiagCopy(d);
-  d.reciprocal(d);
-  A->apply(x, r);
-  r.update(1.0, b, -1.0);
-  z.elementWiseMultiply(1.0, d, r, 0.0);
-  p.assign(z);
-  double rz = r.dot(z);
-  const double bnorm = std::max(b.norm2(), 1e-300);
-  for (int it = 0; it < 20000 && r.norm2() > 1e-14 * bnorm; ++it) {
-    A->apply(p, Ap);
-    const double alpha = rz / p.dot(Ap);
-    x.update(alpha, p, 1.0);
-    r.update(-alpha, Ap, 1.0);
-    z.elementWiseMultiply(1.0, d, r, 0.0);
-    const double rzNew = r.dot(z);
-    p.update(1.0, z, rzNew / rz);
-    rz = rzNew;
-  }
-}
 
 std::string num(double v) {
   std::ostringstream os;
