@@ -167,8 +167,9 @@ bool ContactQP::solveWithColumns(LinearSolver& solver, const fem::ContactCouplin
       }
     return g;
   };
-  for (int j = 0; j < m; ++j)
-    if (lambda[j] != 0.0 && columns_.size() >= cap && !columns_.count(j)) return false;
+  size_t warmMissing = 0;  // the warm start's columns must fit into the cache too
+  for (int j = 0; j < m; ++j) warmMissing += lambda[j] != 0.0 && !columns_.count(j) ? 1 : 0;
+  if (columns_.size() + warmMissing > cap) return false;
   G = gapOf(lambda);
   std::vector<double> c(m);
   for (int j = 0; j < m; ++j) c[j] = 1.0 / approxQ_[static_cast<size_t>(j) * m + j];
