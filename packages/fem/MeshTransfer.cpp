@@ -24,7 +24,7 @@ MeshTransfer::MeshTransfer(const mesh::Forest& oldForest, const mesh::Q1Mesh& ol
   const auto& W = oldMesh.cornerWeightsHost;
   for (int f = 0; f < numFields_; ++f) {
     Vector overlap(oldMesh.overlapMap());
-    overlap.doImport(*fields[f], Tpetra::Import<LO, GO, Node>(oldMesh.ownedMap(), oldMesh.overlapMap()), Tpetra::INSERT);
+    overlap.doImport(*fields[f], oldMesh.ownedToOverlap(), Tpetra::INSERT);
     auto h = overlap.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (LO e = 0; e < nc; ++e)
       for (int c = 0; c < 4; ++c) {
@@ -81,10 +81,9 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
         }
   }
   views.clear();
-  Tpetra::Export<LO, GO, Node> exporter(newMesh_.overlapMap(), newMesh_.ownedMap());
   for (int f = 0; f < numFields_; ++f) {
     auto b = Teuchos::rcp(new Vector(newMesh_.ownedMap()));
-    b->doExport(overlap[f], exporter, Tpetra::ADD);
+    b->doExport(overlap[f], newMesh_.overlapToOwned(), Tpetra::ADD);
     loads.push_back(b);
   }
   return loads;

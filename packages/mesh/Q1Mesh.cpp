@@ -33,6 +33,8 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
   ownedMap_ = Teuchos::rcp(new Map(invalid, static_cast<size_t>(owned), 0, comm));
   SIGNORINI_ASSERT(owned == 0 || ownedMap_->getMinGlobalIndex() == gids[0], "lnodes owned nodes are not contiguous");
   overlapMap_ = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids.data(), numLocalNodes), 0, comm));
+  importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(ownedMap_, overlapMap_));
+  exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(overlapMap_, ownedMap_));
 
   numCells_ = static_cast<LO>(p4est->local_num_quadrants);
   numGlobalCells_ = static_cast<long long>(p4est->global_num_quadrants);
@@ -140,10 +142,9 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
       }
     }
     Vector sx(ownedMap_), sy(ownedMap_), sc(ownedMap_);
-    Tpetra::Export<LO, GO, Node> exporter(overlapMap_, ownedMap_);
-    sx.doExport(ox, exporter, Tpetra::ADD);
-    sy.doExport(oy, exporter, Tpetra::ADD);
-    sc.doExport(cnt, exporter, Tpetra::ADD);
+    sx.doExport(ox, *exporter_, Tpetra::ADD);
+    sy.doExport(oy, *exporter_, Tpetra::ADD);
+    sc.doExport(cnt, *exporter_, Tpetra::ADD);
     {
       auto hx = sx.getLocalViewHost(Tpetra::Access::ReadWrite);
       auto hy = sy.getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -154,9 +155,8 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
         hy(i, 0) /= hc(i, 0);
       }
     }
-    Tpetra::Import<LO, GO, Node> importer(ownedMap_, overlapMap_);
-    ox.doImport(sx, importer, Tpetra::INSERT);
-    oy.doImport(sy, importer, Tpetra::INSERT);
+    ox.doImport(sx, *importer_, Tpetra::INSERT);
+    oy.doImport(sy, *importer_, Tpetra::INSERT);
     auto hx = ox.getLocalViewHost(Tpetra::Access::ReadOnly);
     auto hy = oy.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (LO i = 0; i < numLocalNodes; ++i) nodeCoords_[i] = {hx(i, 0), hy(i, 0)};
@@ -213,8 +213,8 @@ std::vector<char> Q1Mesh::nodesOnSegments(unsigned mask) const {
         for (int k = 0; k < 2; ++k) h(be.node[k], 0) = 1.0;
   }
   Vector owned(ownedMap_);
-  owned.doExport(local, Tpetra::Export<LO, GO, Node>(overlapMap_, ownedMap_), Tpetra::ADD);
-  local.doImport(owned, Tpetra::Import<LO, GO, Node>(ownedMap_, overlapMap_), Tpetra::INSERT);
+  owned.doExport(local, *exporter_, Tpetra::ADD);
+  local.doImport(owned, *importer_, Tpetra::INSERT);
   auto h = local.getLocalViewHost(Tpetra::Access::ReadOnly);
   std::vector<char> flags(h.extent(0));
   for (size_t i = 0; i < flags.size(); ++i) flags[i] = h(i, 0) > 0 ? 1 : 0;

@@ -6,6 +6,9 @@
 #include <array>
 #include <vector>
 
+#include <Tpetra_Export.hpp>
+#include <Tpetra_Import.hpp>
+
 #include "BoundarySegments.hpp"
 #include "Forest.hpp"
 #include "Types.hpp"
@@ -38,6 +41,9 @@ class Q1Mesh {
   RCP<const Map> ownedMap() const { return ownedMap_; }
   /// Owned nodes followed by the shared nodes owned elsewhere (p4est lnodes local order).
   RCP<const Map> overlapMap() const { return overlapMap_; }
+  /// Owned to overlap (values of shared nodes from their owners) and overlap to owned (sums).
+  const Tpetra::Import<LO, GO, Node>& ownedToOverlap() const { return *importer_; }
+  const Tpetra::Export<LO, GO, Node>& overlapToOwned() const { return *exporter_; }
   LO numLocalCells() const { return numCells_; }
   GO numGlobalNodes() const { return ownedMap_->getGlobalNumElements(); }
   long long numGlobalCells() const { return numGlobalCells_; }
@@ -71,6 +77,8 @@ class Q1Mesh {
  private:
   RCP<const Comm> comm_;
   RCP<const Map> ownedMap_, overlapMap_;
+  RCP<const Tpetra::Import<LO, GO, Node>> importer_;
+  RCP<const Tpetra::Export<LO, GO, Node>> exporter_;
   LO numCells_ = 0;
   long long numGlobalCells_ = 0;
   std::vector<int> cellLevel_, cellTree_;
