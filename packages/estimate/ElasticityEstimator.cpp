@@ -223,12 +223,7 @@ EstimatorResult ElasticityEstimator::estimate(const ElasticityEstimatorInput& in
 
     if (seg >= 0 && lambdaJ != 0.0) {
       const double u0 = sign * uh(2 * be.node[0] + comp, 0), u1 = sign * uh(2 * be.node[1] + comp, 0);
-      auto gap = [&](double tau) {  // g - sign u_c along the edge
-        const double x = be.x[0][0] + tau * (be.x[1][0] - be.x[0][0]);
-        const double y = be.x[0][1] + tau * (be.x[1][1] - be.x[0][1]);
-        return problem.obstacle(x, y, t) - ((1 - tau) * u0 + tau * u1);
-      };
-      const double contribution = lambdaJ * len * positivePartIntegral(gap);
+      const double contribution = lambdaJ * len * positivePartAlongEdge(be, problem.obstacle, t, u0, u1);
       s0Local += contribution;
       s0Share[be.cell] += std::abs(contribution);
     }
@@ -238,31 +233,12 @@ EstimatorResult ElasticityEstimator::estimate(const ElasticityEstimatorInput& in
 
   // --- s1: the harmonic continuation of (g - sign u_c)_+ from the contact nodes, zero where u_c is fixed.
   if (in.coupling && params_.get<bool>("Compute S1")) {
-    const auto owned = mesh.ownedMap();
-    const LO nOwned = static_cast<LO>(owned->getNodeNumElements());
-    const std::vector<char> contact = mesh.nodesOnSegments(problem.contactMask);
     const std::vector<char>& dirichlet = in.assembler.dirichletFlags();
-    Vector boundary(owned);
-    double maxLocal = 0, maxGlobal = 0;
-    {
-      auto uo = in.u.getLocalViewHost(Tpetra::Access::ReadOnly);
-      auto bh = boundary.getLocalViewHost(Tpetra::Access::OverwriteAll);
-      for (LO i = 0; i < nOwned; ++i) {
-        bh(i, 0) = 0.0;
-        if (!contact[i] || dirichlet[2 * i + comp]) continue;
-        const auto& x = mesh.nodeCoords()[i];
-        bh(i, 0) = std::max(problem.obstacle(x[0], x[1], t) - sign * uo(2 * i + comp, 0), 0.0);
-        maxLocal = std::max(maxLocal, bh(i, 0));
-      }
-    }
-    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, maxLocal, Teuchos::outArg(maxGlobal));
-    if (maxGlobal > 0) {
-      SIGNORINI_ASSERT(static_cast<bool>(in.solveSPD), "s1 needs ElasticityEstimatorInput::solveSPD");
-      std::vector<char> fixedNodes(dirichlet.size() / 2);
-      for (size_t i = 0; i < fixedNodes.size(); ++i) fixedNodes[i] = dirichlet[2 * i + comp];
-      const fem::Q1Assembler scalar(mesh, fixedNodes);
-      res.s1 = harmonicContinuationNorm(scalar, contact, boundary, in.solveSPD);
-    }
+    std::vector<char> fixedNodes(dirichlet.size() / 2);
+    for (size_t i = 0; i < fixedNodes.size(); ++i) fixedNodes[i] = dirichlet[2 * i + comp];
+    auto uo = in.u.getLocalViewHost(Tpetra::Access::ReadOnly);
+    res.s1 = geometricContactTerm(mesh, problem.contactMask, problem.obstacle, t,
+                                  [&](LO i) { return sign * uo(2 * i + comp, 0); }, fixedNodes, nullptr, in.solveSPD);
   }
   if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2);
   res.eta = res.etaStar + res.s0 + res.s1;

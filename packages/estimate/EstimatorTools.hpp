@@ -14,7 +14,9 @@
 #include "Error.hpp"
 #include "Q1Kernels.hpp"
 #include "ResidualEstimator.hpp"
+#include "Expression.hpp"
 #include "Forest.hpp"
+#include "Q1Mesh.hpp"
 #include "Types.hpp"
 
 namespace signorini::estimate {
@@ -138,6 +140,17 @@ double positivePartIntegral(const F& d) {
     }
   }
   return total;
+}
+
+/// int_0^1 (g - w)_+ dtau along a boundary edge (tau from be.x[0] to be.x[1]) for w linear between
+/// its end values w0, w1: times lambda_j |E| the edge's share of s0^2.
+inline double positivePartAlongEdge(const mesh::BoundaryEdge& be, const core::Expression& g, double t, double w0,
+                                    double w1) {
+  return positivePartIntegral([&](double tau) {
+    const double x = be.x[0][0] + tau * (be.x[1][0] - be.x[0][0]);
+    const double y = be.x[0][1] + tau * (be.x[1][1] - be.x[0][1]);
+    return g(x, y, t) - ((1 - tau) * w0 + tau * w1);
+  });
 }
 
 /// One cell on one side of a face: its payload, its local index (-1 for a ghost) and its face.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
@@ -102,6 +103,33 @@ double harmonicContinuationNorm(const fem::Q1Assembler& scalar, const std::vecto
   }
   full->apply(d, Ad);
   return std::sqrt(std::max(d.dot(Ad), 0.0));
+}
+
+double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, const core::Expression& g, double t,
+                            const std::function<double(LO)>& w, const std::vector<char>& fixed,
+                            const fem::Q1Assembler* scalar,
+                            const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD) {
+  const auto owned = mesh.ownedMap();
+  const LO nOwned = static_cast<LO>(owned->getNodeNumElements());
+  const std::vector<char> contact = mesh.nodesOnSegments(contactMask);
+  Vector boundary(owned);
+  double maxLocal = 0, maxGlobal = 0;
+  {
+    auto bh = boundary.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (LO i = 0; i < nOwned; ++i) {  // owned nodes come first in the overlap numbering
+      bh(i, 0) = 0.0;
+      if (!contact[i] || fixed[i]) continue;
+      const auto& x = mesh.nodeCoords()[i];
+      bh(i, 0) = std::max(g(x[0], x[1], t) - w(i), 0.0);
+      maxLocal = std::max(maxLocal, bh(i, 0));
+    }
+  }
+  Teuchos::reduceAll(*mesh.comm(), Teuchos::REDUCE_MAX, maxLocal, Teuchos::outArg(maxGlobal));
+  if (!(maxGlobal > 0)) return 0.0;
+  SIGNORINI_ASSERT(static_cast<bool>(solveSPD), "s1 needs a solver for SPD systems");
+  if (scalar) return harmonicContinuationNorm(*scalar, contact, boundary, solveSPD);
+  const fem::Q1Assembler own(mesh, fixed);
+  return harmonicContinuationNorm(own, contact, boundary, solveSPD);
 }
 
 }  // namespace signorini::estimate

@@ -19,4 +19,14 @@ namespace signorini::estimate {
 double harmonicContinuationNorm(const fem::Q1Assembler& scalar, const std::vector<char>& contact, const Vector& boundary,
                                 const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD);
 
+/// s1 = ||(g - w)_+||_{1/2, Gamma_C} for the nodal values w(i) of the constrained quantity at the
+/// owned nodes (u_h, or sign u_c for elasticity): the data (g - w)_+ at the contact nodes of
+/// \p contactMask that are not \p fixed (overlap node flags), continued harmonically with v = 0 at the
+/// fixed nodes; 0 (and no solve) when the positive part vanishes on every rank. \p scalar: a scalar
+/// assembler whose Dirichlet nodes are \p fixed, or null to build one when it is needed.
+double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, const core::Expression& g, double t,
+                            const std::function<double(LO)>& w, const std::vector<char>& fixed,
+                            const fem::Q1Assembler* scalar,
+                            const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD);
+
 }  // namespace signorini::estimate

@@ -255,13 +255,8 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
     edgeTerm[be.cell] += cellDiameter(c.X) * integral * len;
 
     if (seg >= 0 && lambda != 0.0) {
-      const double u0 = uh(be.node[0], 0), u1 = uh(be.node[1], 0);
-      auto gap = [&](double tau) {  // g - u_h along the edge (u_h linear between its end nodes)
-        const double x = be.x[0][0] + tau * (be.x[1][0] - be.x[0][0]);
-        const double y = be.x[0][1] + tau * (be.x[1][1] - be.x[0][1]);
-        return problem.obstacle(x, y, t) - ((1 - tau) * u0 + tau * u1);
-      };
-      const double contribution = lambda * len * positivePartIntegral(gap);
+      const double contribution =
+          lambda * len * positivePartAlongEdge(be, problem.obstacle, t, uh(be.node[0], 0), uh(be.node[1], 0));
       s0Local += contribution;
       s0Share[be.cell] += std::abs(contribution);
     }
@@ -273,28 +268,9 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
   //     minimiser of ||v||_1^2 = int |grad v|^2 + v^2 with v = 0 on Gamma_D (first) and v = (g - u_h)_+
   //     at the other contact nodes; s1 = ||d||_1.
   if (in.coupling && params_.get<bool>("Compute S1")) {
-    const auto owned = mesh.ownedMap();
-    const LO nOwned = static_cast<LO>(owned->getNodeNumElements());
-    const std::vector<char> contact = mesh.nodesOnSegments(problem.contactMask);
-    const std::vector<char>& dirichlet = in.assembler.dirichletFlags();
-    Vector boundary(owned);
-    double maxLocal = 0, maxGlobal = 0;
-    {
-      auto uo = in.u.getLocalViewHost(Tpetra::Access::ReadOnly);
-      auto bh = boundary.getLocalViewHost(Tpetra::Access::OverwriteAll);
-      for (LO i = 0; i < nOwned; ++i) {  // owned nodes come first in the overlap numbering
-        bh(i, 0) = 0.0;
-        if (!contact[i] || dirichlet[i]) continue;
-        const auto& x = mesh.nodeCoords()[i];
-        bh(i, 0) = std::max(problem.obstacle(x[0], x[1], t) - uo(i, 0), 0.0);
-        maxLocal = std::max(maxLocal, bh(i, 0));
-      }
-    }
-    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, maxLocal, Teuchos::outArg(maxGlobal));
-    if (maxGlobal > 0) {
-      SIGNORINI_ASSERT(static_cast<bool>(in.solveSPD), "s1 needs EstimatorInput::solveSPD");
-      res.s1 = harmonicContinuationNorm(in.assembler, contact, boundary, in.solveSPD);
-    }
+    auto uo = in.u.getLocalViewHost(Tpetra::Access::ReadOnly);
+    res.s1 = geometricContactTerm(mesh, problem.contactMask, problem.obstacle, t, [&](LO i) { return uo(i, 0); },
+                                  in.assembler.dirichletFlags(), &in.assembler, in.solveSPD);
   }
   if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2);
   res.eta = res.etaStar + res.s0 + res.s1;
