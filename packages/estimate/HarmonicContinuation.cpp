@@ -17,10 +17,10 @@ namespace {
 /// The matrix \p full with the rows and columns of the \p prescribed nodes (flags on the overlap
 /// map, consistent across ranks) replaced by identity rows and zero columns, on the same graph.
 /// For a matrix from Q1Assembler::assembleOperator this equals, bit for bit, assembling with those
-/// nodes as the Dirichlet override: the override only skips the contributions to prescribed rows and columns,
-/// so every other entry receives the same contributions in the same order (and the prescribed
-/// set contains the assembler's own Dirichlet nodes, whose rows and columns \p full already
-/// eliminates). Saves the second assembly.
+/// nodes as Dirichlet nodes: that only skips the contributions to prescribed rows and columns, so
+/// every other entry receives the same contributions in the same order (and the prescribed set
+/// contains the assembler's own Dirichlet nodes, whose rows and columns \p full already
+/// eliminates). Saves a second assembly.
 RCP<const CrsMatrix> withPrescribedRows(const CrsMatrix& full, const std::vector<char>& prescribed) {
   const auto colMap = full.getColMap();
   const auto rowMap = full.getRowMap();

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <limits>
-#include <set>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_FECrsMatrix.hpp>
@@ -10,6 +9,7 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "AssemblyTools.hpp"
 #include "Error.hpp"
 #include "Q1Kernels.hpp"
 
@@ -63,56 +63,19 @@ ElasticityAssembler::ElasticityAssembler(const mesh::Q1Mesh& mesh, std::vector<c
   ownedMap_ = unknownsOf(mesh.ownedMap());
   overlapMap_ = unknownsOf(mesh.overlapMap());
   SIGNORINI_ASSERT(dirichlet_.size() == overlapMap_->getNodeNumElements(), "Dirichlet flags do not match the mesh");
-  dirichletView_ = Kokkos::View<int*, DeviceType>("dirichlet", dirichlet_.size());
-  auto dh = Kokkos::create_mirror_view(dirichletView_);
-  for (size_t i = 0; i < dirichlet_.size(); ++i) dh(i) = dirichlet_[i];
-  Kokkos::deep_copy(dirichletView_, dh);
-
-  const auto& dofs = mesh.cornerDofsHost;
-  const LO nc = mesh.numLocalCells();
-  std::vector<size_t> rowCount(dirichlet_.size(), 0);
-  std::vector<std::vector<GO>> cellUnknowns(nc);
-  for (LO e = 0; e < nc; ++e) {
-    std::set<LO> nodes;
-    for (int c = 0; c < 4; ++c)
-      for (int k = 0; k < 2; ++k)
-        if (dofs(e, c, k) >= 0) nodes.insert(dofs(e, c, k));
-    for (LO n : nodes)
-      for (int c = 0; c < 2; ++c) {
-        cellUnknowns[e].push_back(overlapMap_->getGlobalElement(2 * n + c));
-        rowCount[2 * n + c] += 2 * nodes.size();
-      }
-  }
-  size_t maxRow = 1;
-  for (size_t c : rowCount) maxRow = std::max(maxRow, c);
-  graph_ = Teuchos::rcp(new Graph(ownedMap_, overlapMap_, maxRow));
-  graph_->beginAssembly();
-  for (LO e = 0; e < nc; ++e)
-    for (GO r : cellUnknowns[e]) graph_->insertGlobalIndices(r, Teuchos::ArrayView<const GO>(cellUnknowns[e]));
-  graph_->endAssembly();
+  dirichletView_ = deviceFlags(dirichlet_, dirichlet_.size(), "dirichlet");
+  graph_ = q1Graph(mesh, 2, ownedMap_, overlapMap_);
   exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(overlapMap_, ownedMap_));
   importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(ownedMap_, overlapMap_));
 }
 
 RCP<CrsMatrix> ElasticityAssembler::assembleOperator(double massCoeff, double stiffCoeff, double rho,
                                                      const std::vector<char>& lumpAt) const {
-  Kokkos::View<int*, DeviceType> lump("lump", dirichlet_.size());
-  {
-    auto h = Kokkos::create_mirror_view(lump);
-    for (size_t i = 0; i < h.extent(0); ++i) h(i) = lumpAt.empty() ? 0 : lumpAt[i];
-    Kokkos::deep_copy(lump, h);
-  }
+  const auto lump = deviceFlags(lumpAt, dirichlet_.size(), "lump");
   auto A = Teuchos::rcp(new Matrix(graph_));
   A->beginAssembly();
   {
-    if (toCol_.extent(0) != overlapMap_->getNodeNumElements()) {
-      const auto colMap = A->getColMap();
-      toCol_ = Kokkos::View<LO*, DeviceType>("toCol", overlapMap_->getNodeNumElements());
-      auto h = Kokkos::create_mirror_view(toCol_);
-      for (size_t i = 0; i < h.extent(0); ++i)
-        h(i) = colMap->getLocalElement(overlapMap_->getGlobalElement(static_cast<LO>(i)));
-      Kokkos::deep_copy(toCol_, h);
-    }
+    if (toCol_.extent(0) != overlapMap_->getNodeNumElements()) toCol_ = overlapToColumns(*overlapMap_, *A->getColMap());
     const auto toCol = toCol_;
     auto local = A->getLocalMatrixDevice();
     const auto X = mesh_.cornerCoords;

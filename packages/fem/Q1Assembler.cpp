@@ -2,12 +2,12 @@
 
 #include <cmath>
 #include <limits>
-#include <set>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_FECrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "AssemblyTools.hpp"
 #include "Error.hpp"
 #include "Q1Kernels.hpp"
 
@@ -19,78 +19,28 @@ Q1Assembler::Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet)
     : mesh_(mesh), dirichlet_(std::move(dirichlet)) {
   const auto overlap = mesh.overlapMap();
   SIGNORINI_ASSERT(dirichlet_.size() == overlap->getNodeNumElements(), "Dirichlet flags do not match the mesh");
-  dirichletView_ = Kokkos::View<int*, DeviceType>("dirichlet", dirichlet_.size());
-  auto dh = Kokkos::create_mirror_view(dirichletView_);
-  for (size_t i = 0; i < dirichlet_.size(); ++i) dh(i) = dirichlet_[i];
-  Kokkos::deep_copy(dirichletView_, dh);
-
-  const auto& dofs = mesh.cornerDofsHost;
-  const LO nc = mesh.numLocalCells();
-  std::vector<size_t> rowCount(dirichlet_.size(), 0);
-  std::vector<std::vector<LO>> cellDofs(nc);
-  for (LO e = 0; e < nc; ++e) {
-    std::set<LO> s;
-    for (int c = 0; c < 4; ++c)
-      for (int k = 0; k < 2; ++k)
-        if (dofs(e, c, k) >= 0) s.insert(dofs(e, c, k));
-    cellDofs[e].assign(s.begin(), s.end());
-    for (LO d : s) rowCount[d] += s.size();
-  }
-  size_t maxRow = 1;
-  for (size_t c : rowCount) maxRow = std::max(maxRow, c);
-  // Globally indexed: the owned rows also couple to nodes that only other ranks' cells touch,
-  // so the column maps must come from the graph, not from the overlap map.
-  graph_ = Teuchos::rcp(new Graph(mesh.ownedMap(), overlap, maxRow));
-  graph_->beginAssembly();
-  std::vector<GO> g;
-  for (LO e = 0; e < nc; ++e) {
-    g.clear();
-    for (LO d : cellDofs[e]) g.push_back(overlap->getGlobalElement(d));
-    for (GO r : g) graph_->insertGlobalIndices(r, Teuchos::ArrayView<const GO>(g));
-  }
-  graph_->endAssembly();
+  dirichletView_ = deviceFlags(dirichlet_, dirichlet_.size(), "dirichlet");
+  graph_ = q1Graph(mesh, 1, mesh.ownedMap(), overlap);
   exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(overlap, mesh.ownedMap()));
   importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(mesh.ownedMap(), overlap));
 }
 
 RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,
-                                             const std::vector<char>& lumpMassAt,
-                                             const std::vector<char>* dirichletOverride) const {
-  const std::vector<char>& dirFlags = dirichletOverride ? *dirichletOverride : dirichlet_;
-  SIGNORINI_ASSERT(dirFlags.size() == dirichlet_.size(), "Dirichlet flags do not match the mesh");
-  auto dirView = dirichletView_;
-  if (dirichletOverride) {
-    dirView = Kokkos::View<int*, DeviceType>("dirichletOverride", dirFlags.size());
-    auto h = Kokkos::create_mirror_view(dirView);
-    for (size_t i = 0; i < dirFlags.size(); ++i) h(i) = dirFlags[i];
-    Kokkos::deep_copy(dirView, h);
-  }
-  Kokkos::View<int*, DeviceType> lump("lump", dirichlet_.size());
-  {
-    auto h = Kokkos::create_mirror_view(lump);
-    for (size_t i = 0; i < h.extent(0); ++i) h(i) = lumpMassAt.empty() ? 0 : lumpMassAt[i];
-    Kokkos::deep_copy(lump, h);
-  }
+                                             const std::vector<char>& lumpMassAt) const {
+  const auto lump = deviceFlags(lumpMassAt, dirichlet_.size(), "lump");
   auto A = Teuchos::rcp(new Matrix(graph_));
   A->beginAssembly();
   {
     // The owned+shared matrix may order its columns differently from the overlap map; the
     // translation is the same for every matrix on graph_.
-    if (toCol_.extent(0) != mesh_.overlapMap()->getNodeNumElements()) {
-      const auto overlap = mesh_.overlapMap();
-      const auto colMap = A->getColMap();
-      toCol_ = Kokkos::View<LO*, DeviceType>("toCol", overlap->getNodeNumElements());
-      auto toColHost = Kokkos::create_mirror_view(toCol_);
-      for (size_t i = 0; i < toColHost.extent(0); ++i)
-        toColHost(i) = colMap->getLocalElement(overlap->getGlobalElement(static_cast<LO>(i)));
-      Kokkos::deep_copy(toCol_, toColHost);
-    }
+    if (toCol_.extent(0) != mesh_.overlapMap()->getNodeNumElements())
+      toCol_ = overlapToColumns(*mesh_.overlapMap(), *A->getColMap());
     const auto toCol = toCol_;
     auto local = A->getLocalMatrixDevice();
     const auto X = mesh_.cornerCoords;
     const auto dofs = mesh_.cornerDofs;
     const auto wts = mesh_.cornerWeights;
-    const auto dir = dirView;
+    const auto dir = dirichletView_;
     const double cm = massCoeff * rho, ck = stiffCoeff * kappa;
     Kokkos::parallel_for(
         "signorini::assembleOperator", Kokkos::RangePolicy<ExecSpace>(0, mesh_.numLocalCells()),
@@ -136,7 +86,7 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
     const auto owned = mesh_.ownedMap();
     const auto colMap = A->getColMap();
     for (LO i = 0; i < static_cast<LO>(owned->getNodeNumElements()); ++i)
-      if (dirFlags[i]) {  // overlap ids of owned nodes equal their owned ids
+      if (dirichlet_[i]) {  // overlap ids of owned nodes equal their owned ids
         const LO col = colMap->getLocalElement(owned->getGlobalElement(i));
         const double one = 1.0;
         A->replaceLocalValues(i, 1, &one, &col);

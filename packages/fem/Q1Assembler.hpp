@@ -49,11 +49,8 @@ class Q1Assembler : public Assembler {
   /// K_ij = int kappa grad phi_i . grad phi_j; Dirichlet rows/columns replaced by the identity.
   /// With \p lumpMassAt (overlap flags, optional), mass couplings of the flagged nodes are moved to
   /// the diagonal (row sums kept): lumped mass on the contact boundary against chattering (DESIGN 1.6).
-  /// With \p dirichlet (overlap flags, optional) those nodes get the identity rows instead of the
-  /// assembler's own Dirichlet nodes (same matrix graph: nothing is rebuilt).
   RCP<CrsMatrix> assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,
-                                  const std::vector<char>& lumpMassAt = {},
-                                  const std::vector<char>* dirichlet = nullptr) const;
+                                  const std::vector<char>& lumpMassAt = {}) const;
   /// out (owned) = scale * int f(., t) phi_i dx, or += if \p accumulate.
   void assembleLoad(const core::Expression& f, double t, double scale, Vector& out, bool accumulate = false) const;
   /// out (owned) += scale * int_{edges in mask} q(., t) phi_i ds.
