@@ -4,11 +4,12 @@
 /// element graph of Q1 cells with any number of unknowns per node, and the translation from
 /// overlap unknowns to the columns of the assembled matrices.
 #include <algorithm>
-#include <set>
 #include <string>
 #include <vector>
 
+#include <Kokkos_DualView.hpp>
 #include <Tpetra_FECrsGraph.hpp>
+#include <Tpetra_Import.hpp>
 
 #include "Q1Mesh.hpp"
 
@@ -26,30 +27,61 @@ inline Kokkos::View<int*, DeviceType> deviceFlags(const std::vector<char>& flags
 /// The graph of Q1 cells (hanging corners coupled through their constraints) with \p components
 /// unknowns per node: unknown c of overlap node i is overlap entry components * i + c of \p overlap.
 /// Globally indexed: the owned rows also couple to nodes that only other ranks' cells touch, so the
-/// column maps come from the graph, not from the overlap map.
+/// column maps come from the graph, not from the overlap map. \p ownedToOverlap (owned -> overlap)
+/// is reused by the graph for its export of the shared rows.
 inline RCP<Tpetra::FECrsGraph<LO, GO, Node>> q1Graph(const mesh::Q1Mesh& mesh, int components,
-                                                    const RCP<const Map>& owned, const RCP<const Map>& overlap) {
+                                                    const RCP<const Map>& owned, const RCP<const Map>& overlap,
+                                                    const RCP<const Tpetra::Import<LO, GO, Node>>& ownedToOverlap) {
   const auto& dofs = mesh.cornerDofsHost;
   const LO nc = mesh.numLocalCells();
-  std::vector<size_t> rowCount(overlap->getNodeNumElements(), 0);
-  std::vector<std::vector<GO>> cellUnknowns(nc);
+  const size_t nNodes = overlap->getNodeNumElements() / components;
+  // The distinct nodes of every cell (at most 8: 4 corners, each with up to 2 constraint nodes).
+  std::vector<LO> cellNodes(8 * static_cast<size_t>(nc));
+  std::vector<unsigned char> cellCount(nc, 0);
+  std::vector<size_t> offset(nNodes + 1, 0);
   for (LO e = 0; e < nc; ++e) {
-    std::set<LO> nodes;
+    LO* nodes = &cellNodes[8 * static_cast<size_t>(e)];
+    int count = 0;
     for (int c = 0; c < 4; ++c)
-      for (int k = 0; k < 2; ++k)
-        if (dofs(e, c, k) >= 0) nodes.insert(dofs(e, c, k));
-    for (LO n : nodes)
-      for (int c = 0; c < components; ++c) {
-        cellUnknowns[e].push_back(overlap->getGlobalElement(components * n + c));
-        rowCount[components * n + c] += components * nodes.size();
+      for (int k = 0; k < 2; ++k) {
+        const LO n = dofs(e, c, k);
+        if (n >= 0 && std::find(nodes, nodes + count, n) == nodes + count) nodes[count++] = n;
       }
+    cellCount[e] = static_cast<unsigned char>(count);
+    for (int i = 0; i < count; ++i) offset[nodes[i] + 1] += count;
   }
-  size_t maxRow = 1;
-  for (size_t c : rowCount) maxRow = std::max(maxRow, c);
-  auto graph = Teuchos::rcp(new Tpetra::FECrsGraph<LO, GO, Node>(owned, overlap, maxRow));
+  for (size_t n = 0; n < nNodes; ++n) offset[n + 1] += offset[n];
+  // Node-to-node adjacency (with repeats), then each node's neighbours sorted and unique.
+  std::vector<LO> adjacent(offset[nNodes]);
+  std::vector<size_t> fill(offset.begin(), offset.end() - 1);
+  for (LO e = 0; e < nc; ++e) {
+    const LO* nodes = &cellNodes[8 * static_cast<size_t>(e)];
+    for (int i = 0; i < cellCount[e]; ++i)
+      for (int j = 0; j < cellCount[e]; ++j) adjacent[fill[nodes[i]]++] = nodes[j];
+  }
+  std::vector<size_t> unique(nNodes, 0);
+  for (size_t n = 0; n < nNodes; ++n) {
+    auto first = adjacent.begin() + offset[n], last = adjacent.begin() + offset[n + 1];
+    std::sort(first, last);
+    unique[n] = std::unique(first, last) - first;
+  }
+  Kokkos::DualView<size_t*, DeviceType> perRow("q1GraphRowLengths", overlap->getNodeNumElements());
+  for (size_t n = 0; n < nNodes; ++n)
+    for (int c = 0; c < components; ++c) perRow.h_view(components * n + c) = components * unique[n];
+  perRow.modify_host();
+  perRow.sync_device();
+  auto graph = Teuchos::rcp(new Tpetra::FECrsGraph<LO, GO, Node>(
+      owned, overlap, Kokkos::DualView<const size_t*, DeviceType>(perRow), ownedToOverlap));
   graph->beginAssembly();
-  for (LO e = 0; e < nc; ++e)
-    for (GO r : cellUnknowns[e]) graph->insertGlobalIndices(r, Teuchos::ArrayView<const GO>(cellUnknowns[e]));
+  std::vector<GO> columns;
+  for (size_t n = 0; n < nNodes; ++n) {
+    columns.clear();
+    for (size_t k = offset[n]; k < offset[n] + unique[n]; ++k)
+      for (int c = 0; c < components; ++c) columns.push_back(overlap->getGlobalElement(components * adjacent[k] + c));
+    for (int c = 0; c < components; ++c)
+      graph->insertGlobalIndices(overlap->getGlobalElement(static_cast<LO>(components * n + c)),
+                                 Teuchos::ArrayView<const GO>(columns));
+  }
   graph->endAssembly();
   return graph;
 }

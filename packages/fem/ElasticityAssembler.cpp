@@ -64,9 +64,9 @@ ElasticityAssembler::ElasticityAssembler(const mesh::Q1Mesh& mesh, std::vector<c
   overlapMap_ = unknownsOf(mesh.overlapMap());
   SIGNORINI_ASSERT(dirichlet_.size() == overlapMap_->getNodeNumElements(), "Dirichlet flags do not match the mesh");
   dirichletView_ = deviceFlags(dirichlet_, dirichlet_.size(), "dirichlet");
-  graph_ = q1Graph(mesh, 2, ownedMap_, overlapMap_);
-  exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(overlapMap_, ownedMap_));
   importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(ownedMap_, overlapMap_));
+  exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(*importer_));
+  graph_ = q1Graph(mesh, 2, ownedMap_, overlapMap_, importer_);
 }
 
 RCP<CrsMatrix> ElasticityAssembler::assembleOperator(double massCoeff, double stiffCoeff, double rho,

@@ -20,9 +20,10 @@ Q1Assembler::Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet)
   const auto overlap = mesh.overlapMap();
   SIGNORINI_ASSERT(dirichlet_.size() == overlap->getNodeNumElements(), "Dirichlet flags do not match the mesh");
   dirichletView_ = deviceFlags(dirichlet_, dirichlet_.size(), "dirichlet");
-  graph_ = q1Graph(mesh, 1, mesh.ownedMap(), overlap);
-  exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(overlap, mesh.ownedMap()));
-  importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(mesh.ownedMap(), overlap));
+  // Unknowns are nodes: the mesh's transfers serve the loads too.
+  importer_ = Teuchos::rcpFromRef(mesh.ownedToOverlap());
+  exporter_ = Teuchos::rcpFromRef(mesh.overlapToOwned());
+  graph_ = q1Graph(mesh, 1, mesh.ownedMap(), overlap, importer_);
 }
 
 RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,

@@ -34,7 +34,7 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
   SIGNORINI_ASSERT(owned == 0 || ownedMap_->getMinGlobalIndex() == gids[0], "lnodes owned nodes are not contiguous");
   overlapMap_ = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids.data(), numLocalNodes), 0, comm));
   importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(ownedMap_, overlapMap_));
-  exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(overlapMap_, ownedMap_));
+  exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(*importer_));  // the reverse of importer_
 
   numCells_ = static_cast<LO>(p4est->local_num_quadrants);
   numGlobalCells_ = static_cast<long long>(p4est->global_num_quadrants);

@@ -1,44 +1,67 @@
 #include "StripSchurApproximation.hpp"
 
 #include <Amesos2.hpp>
+#include <algorithm>
+
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
-#include <Tpetra_Export.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "Error.hpp"
+#include "MpiComm.hpp"
 
 namespace signorini::solvers {
 
 struct StripSchurApproximation::Impl {
-  RCP<const Map> stripMap;
-  std::vector<LO> stripToOwned;      // owned local id of each local strip node
-  RCP<MultiVector> W;                // A_s^{-1} B on the strip, m columns
+  std::vector<LO> stripToOwned;  // owned local id of each local strip node
+  std::vector<double> W;         // A_s^{-1} B on the local strip rows, row-major nStrip x m
+  int m = 0;
 };
+
+namespace {
+/// Concatenation on rank 0, in rank order, of every rank's \p mine (empty elsewhere).
+template <class T>
+std::vector<T> gatherToRoot(MPI_Comm comm, const std::vector<T>& mine) {
+  int n = static_cast<int>(mine.size()), size, rank;
+  MPI_Comm_size(comm, &size);
+  MPI_Comm_rank(comm, &rank);
+  std::vector<int> counts(size), offsets(size, 0);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
+  for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+  std::vector<T> all(rank == 0 ? offsets.back() + counts.back() : 0);
+  MPI_Gatherv(mine.data(), n, core::mpiType<T>(), all.data(), counts.data(), offsets.data(), core::mpiType<T>(), 0,
+              comm);
+  return all;
+}
+}  // namespace
 
 StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::ContactCoupling& B, int layers)
     : impl_(std::make_unique<Impl>()) {
   SIGNORINI_ASSERT(layers >= 1, "strip needs at least one layer");
   const auto rowMap = A.getRowMap();
   const auto colMap = A.getColMap();
+  const auto comm = rowMap->getComm();
+  const MPI_Comm raw = core::rawMpiComm(*comm);
   const LO nOwned = static_cast<LO>(rowMap->getNodeNumElements());
   const int m = B.numSegments();
+  impl_->m = m;
+  const auto Al = A.getLocalMatrixHost();
+  const auto Bm = B.matrix();
+  const auto Bl = Bm->getLocalMatrixHost();
 
   // Strip nodes: graph distance <= layers from a node with a non-zero row of B.
   std::vector<char> inStrip(nOwned, 0);
-  const auto Bm = B.matrix();
-  for (LO i = 0; i < nOwned; ++i) inStrip[i] = Bm->getNumEntriesInLocalRow(i) > 0;
+  for (LO i = 0; i < nOwned; ++i) inStrip[i] = Bl.graph.row_map(i + 1) > Bl.graph.row_map(i);
   const auto importer = A.getGraph()->getImporter();
   Vector owned(rowMap), cols(colMap);
-  typename CrsMatrix::local_inds_host_view_type idx;
-  typename CrsMatrix::values_host_view_type vals;
-  auto toColumns = [&]() {  // strip flags of the owned nodes -> flags on A's column map
+  auto toColumns = [&](const auto& value) {  // a value per owned node -> the same on A's column map
     {
       auto h = owned.getLocalViewHost(Tpetra::Access::OverwriteAll);
-      for (LO i = 0; i < nOwned; ++i) h(i, 0) = inStrip[i];
+      for (LO i = 0; i < nOwned; ++i) h(i, 0) = value(i);
     }
     if (importer.is_null())
       cols.assign(owned);
@@ -46,14 +69,13 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
       cols.doImport(owned, *importer, Tpetra::INSERT);
   };
   for (int layer = 0; layer < layers; ++layer) {
-    toColumns();
+    toColumns([&](LO i) { return static_cast<double>(inStrip[i]); });
     auto c = cols.getLocalViewHost(Tpetra::Access::ReadOnly);
     std::vector<char> next = inStrip;
-    for (LO i = 0; i < nOwned && !next.empty(); ++i) {
+    for (LO i = 0; i < nOwned; ++i) {
       if (inStrip[i]) continue;
-      A.getLocalRowView(i, idx, vals);
-      for (size_t k = 0; k < idx.extent(0); ++k)
-        if (c(idx(k), 0) > 0) {
+      for (auto k = Al.graph.row_map(i); k < Al.graph.row_map(i + 1); ++k)
+        if (c(Al.graph.entries(k), 0) > 0) {
           next[i] = 1;
           break;
         }
@@ -61,109 +83,105 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
     inStrip.swap(next);
   }
 
-  // The strip matrix: rows and columns of A on strip nodes only, renumbered contiguously
-  // (Amesos2 needs contiguous maps).
+  // The strip matrix: rows and columns of A on strip nodes only, numbered contiguously in rank
+  // order; gathered with B_s on rank 0, which factors it alone: Amesos2 13.2's KLU2 solves
+  // distributed matrices wrongly here (a residual of order one on 2 ranks).
   for (LO i = 0; i < nOwned; ++i)
     if (inStrip[i]) impl_->stripToOwned.push_back(i);
   const LO nStrip = static_cast<LO>(impl_->stripToOwned.size());
-  const auto comm = rowMap->getComm();
-  impl_->stripMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), nStrip, 0, comm));
-  stripSize_ = static_cast<long long>(impl_->stripMap->getGlobalNumElements());
+  long long first = 0, mine = nStrip;
+  MPI_Exscan(&mine, &first, 1, MPI_LONG_LONG, MPI_SUM, raw);
+  if (comm->getRank() == 0) first = 0;
+  MPI_Allreduce(&mine, &stripSize_, 1, MPI_LONG_LONG, MPI_SUM, raw);
+  toColumns([&](LO) { return -1.0; });  // resets owned; the strip ids follow
   {
     auto h = owned.getLocalViewHost(Tpetra::Access::OverwriteAll);
-    Kokkos::deep_copy(h, -1.0);
-    for (LO s = 0; s < nStrip; ++s) h(impl_->stripToOwned[s], 0) = static_cast<double>(impl_->stripMap->getGlobalElement(s));
+    for (LO s = 0; s < nStrip; ++s) h(impl_->stripToOwned[s], 0) = static_cast<double>(first + s);
   }
   if (importer.is_null())
     cols.assign(owned);
   else
     cols.doImport(owned, *importer, Tpetra::INSERT);
-  auto As = Teuchos::rcp(new CrsMatrix(impl_->stripMap, A.getNodeMaxNumRowEntries()));
+  std::vector<int> rowLength(nStrip);
+  std::vector<long long> stripCols;
+  std::vector<double> stripVals, Bs(static_cast<size_t>(nStrip) * m, 0.0);
   {
     auto c = cols.getLocalViewHost(Tpetra::Access::ReadOnly);
-    std::vector<GO> rowCols;
-    std::vector<double> rowVals;
-    for (LO s = 0; s < nStrip; ++s) {
-      A.getLocalRowView(impl_->stripToOwned[s], idx, vals);
-      rowCols.clear();
-      rowVals.clear();
-      for (size_t k = 0; k < idx.extent(0); ++k)
-        if (c(idx(k), 0) >= 0) {
-          rowCols.push_back(static_cast<GO>(c(idx(k), 0)));
-          rowVals.push_back(vals(k));
-        }
-      As->insertGlobalValues(impl_->stripMap->getGlobalElement(s), Teuchos::ArrayView<const GO>(rowCols),
-                             Teuchos::ArrayView<const double>(rowVals));
-    }
-  }
-  As->fillComplete();
-
-  // W = A_s^{-1} B_s for all segments at once.
-  MultiVector Bs(impl_->stripMap, std::max(m, 1));
-  {
-    auto h = Bs.getLocalViewHost(Tpetra::Access::OverwriteAll);
-    Kokkos::deep_copy(h, 0.0);
     const auto bcol = Bm->getColMap();
     for (LO s = 0; s < nStrip; ++s) {
-      Bm->getLocalRowView(impl_->stripToOwned[s], idx, vals);
-      for (size_t k = 0; k < idx.extent(0); ++k) h(s, bcol->getGlobalElement(idx(k))) = vals(k);
+      const LO i = impl_->stripToOwned[s];
+      for (auto k = Al.graph.row_map(i); k < Al.graph.row_map(i + 1); ++k) {
+        const double col = c(Al.graph.entries(k), 0);
+        if (col < 0) continue;
+        stripCols.push_back(static_cast<long long>(col));
+        stripVals.push_back(Al.values(k));
+        ++rowLength[s];
+      }
+      for (auto k = Bl.graph.row_map(i); k < Bl.graph.row_map(i + 1); ++k)
+        Bs[static_cast<size_t>(s) * m + bcol->getGlobalElement(Bl.graph.entries(k))] = Bl.values(k);
     }
   }
-  // Factor on rank 0 alone: Amesos2 13.2's KLU2 solves distributed matrices wrongly here (a
-  // residual of order one on 2 ranks), so the strip system is gathered, factored and solved on
-  // a one-rank communicator, and the solution scattered back.
-  const int mm = std::max(m, 1);
-  const GO nGlobal = static_cast<GO>(stripSize_);
-  auto rootMap = Teuchos::rcp(new Map(nGlobal, comm->getRank() == 0 ? static_cast<size_t>(nGlobal) : 0, 0, comm));
-  Tpetra::Export<LO, GO, Node> toRoot(impl_->stripMap, rootMap);
-  CrsMatrix Aroot(rootMap, 0);
-  Aroot.doExport(*As, toRoot, Tpetra::INSERT);
-  Aroot.fillComplete(rootMap, rootMap);
-  MultiVector Broot(rootMap, mm), Wroot(rootMap, mm);
-  Broot.doExport(Bs, toRoot, Tpetra::INSERT);
-  auto self = comm->split(comm->getRank() == 0 ? 0 : 1, 0);
+  const auto allLength = gatherToRoot(raw, rowLength);
+  const auto allCols = gatherToRoot(raw, stripCols);
+  const auto allVals = gatherToRoot(raw, stripVals);
+  const auto allB = gatherToRoot(raw, Bs);
+  std::vector<double> allW;
   if (comm->getRank() == 0 && m > 0) {
-    auto selfMap = Teuchos::rcp(new Map(nGlobal, 0, self));
-    auto Aself = Teuchos::rcp(new CrsMatrix(selfMap, Aroot.getNodeMaxNumRowEntries()));
-    const auto rootCols = Aroot.getColMap();
-    std::vector<GO> rowCols;
-    for (LO i = 0; i < static_cast<LO>(nGlobal); ++i) {
-      Aroot.getLocalRowView(i, idx, vals);
-      rowCols.resize(idx.extent(0));
-      for (size_t k = 0; k < idx.extent(0); ++k) rowCols[k] = rootCols->getGlobalElement(idx(k));
-      Aself->insertGlobalValues(static_cast<GO>(i), Teuchos::ArrayView<const GO>(rowCols),
-                                Teuchos::ArrayView<const double>(vals.data(), vals.extent(0)));
+    const LO n = static_cast<LO>(stripSize_);
+    using Local = CrsMatrix::local_matrix_device_type;
+    typename Local::row_map_type::non_const_type rowPtr("stripRows", n + 1);
+    typename Local::index_type::non_const_type entries("stripCols", allCols.size());
+    typename Local::values_type values("stripValues", allVals.size());
+    size_t offset = 0;
+    std::vector<std::pair<long long, double>> row;
+    for (LO r = 0; r < n; ++r) {  // rows sorted by column
+      row.clear();
+      for (int k = 0; k < allLength[r]; ++k) row.push_back({allCols[offset + k], allVals[offset + k]});
+      std::sort(row.begin(), row.end());
+      for (int k = 0; k < allLength[r]; ++k) entries(offset + k) = static_cast<LO>(row[k].first), values(offset + k) = row[k].second;
+      offset += allLength[r];
+      rowPtr(r + 1) = offset;
     }
-    Aself->fillComplete();
-    auto Bself = Teuchos::rcp(new MultiVector(selfMap, mm));
-    auto Wself = Teuchos::rcp(new MultiVector(selfMap, mm));
+    auto self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+    auto selfMap = Teuchos::rcp(new Map(static_cast<GO>(n), 0, self));
+    auto As = Teuchos::rcp(new CrsMatrix(selfMap, selfMap, rowPtr, entries, values));
+    As->fillComplete(selfMap, selfMap);
+    auto Bself = Teuchos::rcp(new MultiVector(selfMap, m)), Wself = Teuchos::rcp(new MultiVector(selfMap, m));
     {
-      auto from = Broot.getLocalViewHost(Tpetra::Access::ReadOnly);
-      auto to = Bself->getLocalViewHost(Tpetra::Access::OverwriteAll);
-      Kokkos::deep_copy(to, from);
+      auto h = Bself->getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (LO r = 0; r < n; ++r)
+        for (int j = 0; j < m; ++j) h(r, j) = allB[static_cast<size_t>(r) * m + j];
     }
-    auto solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", Aself, Wself, Bself);
+    auto solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", As, Wself, Bself);
     solver->symbolicFactorization().numericFactorization().solve();
-    auto from = Wself->getLocalViewHost(Tpetra::Access::ReadOnly);
-    auto to = Wroot.getLocalViewHost(Tpetra::Access::OverwriteAll);
-    Kokkos::deep_copy(to, from);
+    auto h = Wself->getLocalViewHost(Tpetra::Access::ReadOnly);
+    allW.resize(static_cast<size_t>(n) * m);
+    for (LO r = 0; r < n; ++r)
+      for (int j = 0; j < m; ++j) allW[static_cast<size_t>(r) * m + j] = h(r, j);
   }
-  impl_->W = Teuchos::rcp(new MultiVector(impl_->stripMap, mm));
-  impl_->W->doImport(Wroot, Tpetra::Import<LO, GO, Node>(rootMap, impl_->stripMap), Tpetra::INSERT);
+  // W back to the owners of the strip rows (row-major blocks in rank order).
+  {
+    int size;
+    MPI_Comm_size(raw, &size);
+    const int count = nStrip * m;
+    std::vector<int> counts(size), offsets(size, 0);
+    MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, raw);
+    for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+    impl_->W.assign(static_cast<size_t>(count), 0.0);
+    if (m > 0)
+      MPI_Scatterv(allW.data(), counts.data(), offsets.data(), MPI_DOUBLE, impl_->W.data(), count, MPI_DOUBLE, 0, raw);
+  }
   // Qs = B_s^T W (local sums over owned strip rows, then summed over ranks).
   std::vector<double> local(static_cast<size_t>(m) * m, 0.0);
-  {
-    auto b = Bs.getLocalViewHost(Tpetra::Access::ReadOnly);
-    auto w = impl_->W->getLocalViewHost(Tpetra::Access::ReadOnly);
-    for (LO s = 0; s < nStrip; ++s)
-      for (int i = 0; i < m; ++i) {
-        if (b(s, i) == 0.0) continue;
-        for (int j = 0; j < m; ++j) local[static_cast<size_t>(i) * m + j] += b(s, i) * w(s, j);
-      }
-  }
+  for (LO s = 0; s < nStrip; ++s)
+    for (int i = 0; i < m; ++i) {
+      const double b = Bs[static_cast<size_t>(s) * m + i];
+      if (b == 0.0) continue;
+      for (int j = 0; j < m; ++j) local[static_cast<size_t>(i) * m + j] += b * impl_->W[static_cast<size_t>(s) * m + j];
+    }
   Qs_.assign(local.size(), 0.0);
   if (!local.empty())
-    Teuchos::reduceAll(*rowMap->getComm(), Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), Qs_.data());
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), Qs_.data());
   for (int i = 0; i < m; ++i)  // symmetrise the rounding
     for (int j = 0; j < i; ++j) {
       const double avg = 0.5 * (Qs_[static_cast<size_t>(i) * m + j] + Qs_[static_cast<size_t>(j) * m + i]);
@@ -176,12 +194,12 @@ StripSchurApproximation::~StripSchurApproximation() = default;
 void StripSchurApproximation::applyStripInverse(const std::vector<double>& p, Vector& out) const {
   auto o = out.getLocalViewHost(Tpetra::Access::OverwriteAll);
   Kokkos::deep_copy(o, 0.0);
-  auto w = impl_->W->getLocalViewHost(Tpetra::Access::ReadOnly);
-  const int m = static_cast<int>(p.size());
+  const int m = impl_->m;
+  SIGNORINI_ASSERT(static_cast<int>(p.size()) == m, "one value per segment");
   for (size_t s = 0; s < impl_->stripToOwned.size(); ++s) {
     double sum = 0;
     for (int j = 0; j < m; ++j)
-      if (p[j] != 0.0) sum += w(s, j) * p[j];
+      if (p[j] != 0.0) sum += impl_->W[s * m + j] * p[j];
     o(impl_->stripToOwned[s], 0) = sum;
   }
 }
