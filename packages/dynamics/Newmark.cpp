@@ -46,12 +46,15 @@ void Newmark::predictor(const Vector& u, const Vector& v, const Vector& a, Vecto
   out.update((0.5 - beta) * k * k, a, 1.0);
 }
 
-void Newmark::updateFromPredictor(const Vector& predictor, const Vector& uNew, Vector& v, Vector& a) const {
+void Newmark::velocityPredictor(const Vector& v, const Vector& a, Vector& out) const {
+  out.update(1.0, v, (1 - alpha) * timeStep, a, 0.0);
+}
+
+void Newmark::update(const Vector& predictor, const Vector& velocityPredictor, const Vector& uNew, Vector& v,
+                     Vector& a) const {
   const double k = timeStep;
-  Vector aNew(a.getMap());
-  aNew.update(1.0 / (beta * k * k), uNew, -1.0 / (beta * k * k), predictor, 0.0);
-  v.update(k * (1 - alpha), a, k * alpha, aNew, 1.0);
-  a.assign(aNew);
+  a.update(1.0 / (beta * k * k), uNew, -1.0 / (beta * k * k), predictor, 0.0);
+  v.update(1.0, velocityPredictor, alpha * k, a, 0.0);
 }
 
 

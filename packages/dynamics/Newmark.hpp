@@ -22,11 +22,13 @@ struct Newmark {
 
   /// Predictor u^{n-1} + k v^{n-1} + (1/2 - beta) k^2 a^{n-1}; F^n = M * predictor + beta k^2 (loads).
   void predictor(const Vector& u, const Vector& v, const Vector& a, Vector& out) const;
-  /// Given u^n and the step's predictor, overwrites (v, a) from step n-1 with step n:
-  /// a^n = (u^n - predictor) / (beta k^2) is (3.1) for the standard predictor, then (3.2); with a predictor projected onto the admissible set (contact
-  /// stabilisation) the projection's correction is not counted as acceleration.
-  void updateFromPredictor(const Vector& predictor, const Vector& uNew, Vector& v, Vector& a) const;
-
+  /// Velocity predictor v^{n-1} + (1 - alpha) k a^{n-1}: (3.2) without its a^n term.
+  void velocityPredictor(const Vector& v, const Vector& a, Vector& out) const;
+  /// Given u^n and the step's two predictors (on the mesh of step n), overwrites (v, a) with
+  /// a^n = (u^n - predictor) / (beta k^2) (3.1) and v^n = velocityPredictor + alpha k a^n (3.2).
+  /// With a predictor projected onto the admissible set (contact stabilisation) the projection's
+  /// correction is not counted as acceleration.
+  void update(const Vector& predictor, const Vector& velocityPredictor, const Vector& uNew, Vector& v, Vector& a) const;
 };
 
 }  // namespace signorini::dynamics

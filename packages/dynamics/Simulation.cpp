@@ -287,46 +287,51 @@ struct Simulation::Impl {
     return energy + (newmark->beta - 0.25) * 0.5 * k * k * tmp.dot(a);
   }
 
-  /// Moves (u, v, a) from the old discretisation to the new one; the multipliers follow the
-  /// segment midpoints (they only warm-start the next QP).
-  void transfer(const Discretisation& from, Discretisation& to, bool interpolate, RCP<Vector>& u, RCP<Vector>& v,
-                RCP<Vector>& a, std::vector<double>& lambda) {
+  /// Moves \p fields (owned vectors on the old mesh; here the step's two Newmark predictors,
+  /// which by linearity of I_h equal the predictors of I_h u, I_h v, I_h a) to the new
+  /// discretisation: the L2 projection M x = int u_old phi, all fields in one Krylov run started
+  /// from their interpolants, or the interpolants alone. The multipliers follow the segment
+  /// midpoints (they only warm-start the next QP).
+  void transfer(const Discretisation& from, Discretisation& to, bool interpolate, std::vector<RCP<Vector>>& fields,
+                std::vector<double>& lambda) {
     auto scope = timers.scope("transfer");
     const int nc = problem->components();
+    const int nf = static_cast<int>(fields.size());
     // Vector fields move component by component (the transfer is the scalar one per component).
     std::vector<RCP<Vector>> parts;
-    for (const auto& f : {u, v, a})
+    for (const auto& f : fields)
       for (int c = 0; c < nc; ++c) parts.push_back(nc == 1 ? f : component(*f, c, nc, from.mesh->ownedMap()));
     std::vector<const Vector*> raw;
     for (const auto& p : parts) raw.push_back(p.get());
     fem::MeshTransfer t(*from.forest, *from.mesh, raw, *to.forest, *to.mesh);
-    std::vector<RCP<Vector>> moved;
-    if (interpolate) {
-      moved = t.interpolate();
-    } else {
+    auto byField = [&](const std::vector<RCP<Vector>>& moved, int f) {
+      return nc == 1 ? moved[f] : interleave({moved.begin() + nc * f, moved.begin() + nc * (f + 1)}, to.assembler->ownedMap());
+    };
+    const auto interpolants = t.interpolate();
+    MultiVector X(to.assembler->ownedMap(), nf);
+    for (int f = 0; f < nf; ++f) {
+      X.getVectorNonConst(f)->assign(*byField(interpolants, f));
+      to.assembler->zeroDirichlet(*X.getVectorNonConst(f));
+    }
+    if (!interpolate) {
       const auto* scalar = dynamic_cast<const fem::Q1Assembler*>(to.assembler.get());
       std::unique_ptr<fem::Q1Assembler> nodal;  // vector problems: loads per component, no Dirichlet rows
       if (!scalar) {
         nodal = std::make_unique<fem::Q1Assembler>(*to.mesh, std::vector<char>(to.mesh->overlapMap()->getNodeNumElements(), 0));
         scalar = nodal.get();
       }
-      moved = t.projectionLoads(*scalar);
-    }
-    std::vector<RCP<Vector>> fields;
-    for (int f = 0; f < 3; ++f) {
-      auto x = nc == 1 ? moved[f] : interleave({moved.begin() + nc * f, moved.begin() + nc * (f + 1)}, to.assembler->ownedMap());
-      to.assembler->zeroDirichlet(*x);
-      if (!interpolate) {  // M_rho x = rho int u_old phi
-        x->scale(problem->density);
-        auto y = Teuchos::rcp(new Vector(to.assembler->ownedMap()));
-        to.massSolver->solve(*x, *y);
-        x = y;
+      const auto loads = t.projectionLoads(*scalar);
+      MultiVector B(to.assembler->ownedMap(), nf);
+      for (int f = 0; f < nf; ++f) {  // M_rho x = rho int u_old phi
+        B.getVectorNonConst(f)->update(problem->density, *byField(loads, f), 0.0);
+        to.assembler->zeroDirichlet(*B.getVectorNonConst(f));
       }
-      fields.push_back(x);
+      to.massSolver->solve(B, X);
     }
-    u = fields[0];
-    v = fields[1];
-    a = fields[2];
+    for (int f = 0; f < nf; ++f) {
+      fields[f] = Teuchos::rcp(new Vector(to.assembler->ownedMap()));
+      fields[f]->assign(*X.getVector(f));
+    }
     if (from.coupling && to.coupling) {
       const auto& oldMid = from.coupling->segmentMidpoint();
       std::vector<double> next(to.coupling->numSegments(), 0.0);
@@ -545,21 +550,28 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     for (int n = 1; n <= nSteps; ++n) {
       const double t = n * k;
       const auto tR0 = std::chrono::steady_clock::now();
+      // The step's Newmark predictors, formed on the mesh of step n-1 and moved with it.
+      std::vector<RCP<Vector>> predictors = {Teuchos::rcp(new Vector(u->getMap())), Teuchos::rcp(new Vector(u->getMap()))};
+      I.newmark->predictor(*u, *v, *a, *predictors[0]);
+      I.newmark->velocityPredictor(*v, *a, *predictors[1]);
       if (n > 1 && meshes[n - 1] != d->forest && !meshes[n - 1]->sameCells(*d->forest)) {
         auto next = I.build(meshes[n - 1], n);
-        I.transfer(*d, *next, options.interpolateTransfer, u, v, a, lambda);
+        I.transfer(*d, *next, options.interpolateTransfer, predictors, lambda);
         d = std::move(next);
+        u = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
+        v = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
+        a = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
         ++summary.meshChanges;
       }
       tRemesh = std::chrono::duration<double>(std::chrono::steady_clock::now() - tR0).count();
       const auto owned = d->assembler->ownedMap();
       summary.totalDofs += static_cast<long long>(owned->getGlobalNumElements());
-      Vector F(owned), pred(owned), load(owned), uOld(owned);
+      Vector& pred = *predictors[0];
+      Vector F(owned), load(owned);
       const auto tA0 = std::chrono::steady_clock::now();
       {
         auto scope = I.timers.scope("assembly");
         // F^n = beta k^2 (f(t_n) + Neumann) + M (u + k v + (1/2 - beta) k^2 a)
-        I.newmark->predictor(*u, *v, *a, pred);
         if (d->projection) {  // the predictor projected onto the admissible set in the mass norm
           Vector Mpred(owned);
           d->M->apply(pred, Mpred);
@@ -575,7 +587,6 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         d->assembler->zeroDirichlet(F);
       }
       const auto tA1 = std::chrono::steady_clock::now();
-      uOld.assign(*u);
       solvers::ContactQPResult qr;
       {
         auto scope = I.timers.scope("contact");
@@ -609,7 +620,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                pred, lambda, *d->massSolver});
       }
       tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();
-      I.newmark->updateFromPredictor(pred, *u, *v, *a);
+      I.newmark->update(pred, *predictors[1], *u, *v, *a);
       writeOutputs(n, t, qr, std::chrono::duration<double>(tA1 - tA0).count(),
                    std::chrono::duration<double>(tA2 - tA1).count(), tFree, extras);
       if (n % progress == 0 || n == nSteps) {
