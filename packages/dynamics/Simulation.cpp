@@ -196,9 +196,10 @@ struct Simulation::Impl {
       d->assembler = makeAssembler(*d->mesh);
       const double k = newmark->timeStep;
       const std::vector<char> lump = lumpedUnknowns(*d->assembler);
-      d->M = d->assembler->assembleSystem(1.0, 0.0, *problem, lump);
-      d->K = d->assembler->assembleSystem(0.0, 1.0, *problem);
-      d->A = d->assembler->assembleSystem(1.0, newmark->beta * k * k, *problem, lump);
+      auto matrices = d->assembler->assembleStepMatrices(newmark->beta * k * k, *problem, lump);
+      d->M = matrices.M;
+      d->K = matrices.K;
+      d->A = matrices.A;
     }
     d->courant = problem->waveSpeed() * newmark->timeStep / d->mesh->hMin();
     auto scope = timers.scope("preconditioner");

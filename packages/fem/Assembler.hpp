@@ -64,6 +64,15 @@ class Assembler {
   /// Component \p c of u_h at a point (every rank gets the value); NaN outside the mesh.
   virtual double evaluateComponent(const Vector& uOverlap, double x, double y, int c) const = 0;
 
+  /// The step's matrices on one graph: M (mass, lumped at \p lumpAt), K (stiffness) and
+  /// A = M + stiffCoeff K (paper (3.7)), Dirichlet rows and columns the identity in each. A is
+  /// formed from the values of M and K (two assemblies instead of three).
+  struct StepMatrices {
+    RCP<CrsMatrix> M, K, A;
+  };
+  StepMatrices assembleStepMatrices(double stiffCoeff, const ProblemData& problem,
+                                    const std::vector<char>& lumpAt = {}) const;
+
   /// Flags on the overlap unknowns of the nodes on the segments in \p mask (component \p c only, or
   /// every component for c < 0).
   std::vector<char> unknownsOnSegments(unsigned mask, int c = -1) const {

@@ -3,12 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "../TestMesh.hpp"
 #include "Expression.hpp"
+#include "ElasticityAssembler.hpp"
+#include "ProblemData.hpp"
 #include "Q1Assembler.hpp"
 
 using namespace signorini;
@@ -148,4 +151,49 @@ TEST(Q1AssemblerLoads, LoadsAccumulate) {
   asmb.addBoundaryLoad(q, 0.0, 1u << 3, 1.0, b);         // + 2 |top| = 2
   asmb.assembleLoad(f, 0.0, 0.5, b, /*accumulate=*/true);  // + 1.5
   EXPECT_NEAR(b.dot(one), 8.5, 1e-12);
+}
+
+// A = M + c K formed from the values of M and K equals assembling A directly (up to rounding), with
+// Dirichlet rows, lumped boundary mass and hanging nodes, for both assemblers and on 1-3 ranks.
+TEST(StepMatrices, EqualSeparateAssembly) {
+  for (const char* type : {"scalar wave", "plane strain elasticity"})
+    for (bool hanging : {false, true}) {
+      test::TestMesh tm(0.0, 2.0, -1.0, 0.5, 2, 1, 2);
+      if (hanging) tm.refineCorner();
+      const auto& m = tm.build();
+      auto p = fem::ProblemData::getValidParameters();
+      p.set("Type", std::string(type));
+      p.set("Density", 2.0);
+      p.set("Stiffness", 3.0);
+      p.set("Young's Modulus", 5.0);
+      p.set("Dirichlet Segments", std::string("left"));
+      const fem::ProblemData problem(p, *tm.segments);
+      std::unique_ptr<fem::Assembler> asmb;
+      if (problem.components() == 1)
+        asmb = std::make_unique<fem::Q1Assembler>(m, m.nodesOnSegments(problem.dirichletMask));
+      else
+        asmb = std::make_unique<fem::ElasticityAssembler>(m, fem::ElasticityAssembler::dirichletUnknowns(m, problem),
+                                                          problem.lameLambda, problem.lameMu);
+      const auto lump = asmb->unknownsOnSegments(1u << 1);  // the right side
+      const double c = 0.37;
+      const auto s = asmb->assembleStepMatrices(c, problem, lump);
+      // A was formed from M's and K's values (not assembled a third time): it shares their graph.
+      EXPECT_EQ(s.A->getLocalMatrixDevice().graph.entries.data(), s.K->getLocalMatrixDevice().graph.entries.data());
+      const auto A = asmb->assembleSystem(1.0, c, problem, lump);
+      const auto M = asmb->assembleSystem(1.0, 0.0, problem, lump);
+      Vector x(asmb->ownedMap()), y(asmb->ownedMap()), z(asmb->ownedMap());
+      x.randomize();
+      for (const auto& [mine, reference] : {std::pair{s.A, A}, std::pair{s.M, M}}) {
+        mine->apply(x, y);
+        reference->apply(x, z);
+        z.update(-1.0, y, 1.0);
+        EXPECT_LT(z.normInf(), 1e-14 * y.normInf()) << type << (hanging ? ", hanging" : "");
+      }
+      // Dirichlet rows are identity rows: (A x)_i = x_i there.
+      s.A->apply(x, y);
+      auto xh = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+      auto yh = y.getLocalViewHost(Tpetra::Access::ReadOnly);
+      for (size_t i = 0; i < xh.extent(0); ++i)
+        if (asmb->dirichletFlags()[i]) EXPECT_EQ(yh(i, 0), xh(i, 0));
+    }
 }
