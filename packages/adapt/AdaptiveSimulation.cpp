@@ -96,11 +96,11 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         const auto* scalar = dynamic_cast<const fem::Q1Assembler*>(&s.assembler);
         const auto r = scalar ? estimator.estimate(estimate::EstimatorInput{s.forest, s.mesh, *scalar, s.problem,
                                                                             s.coupling, s.time, s.timeStep, s.beta,
-                                                                            s.u, s.predictor, s.lambda, solveSPD})
+                                                                            s.u, s.predictor, s.lambda, solveSPD, s.meshId})
                               : elasticityEstimator.estimate(estimate::ElasticityEstimatorInput{
                                     s.forest, s.mesh, dynamic_cast<const fem::ElasticityAssembler&>(s.assembler),
                                     s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor, s.lambda,
-                                    solveSPD});
+                                    solveSPD, s.meshId});
         etaMax = std::max(etaMax, r.eta);
         // T^n_{l+1}: T^n_l refined by the strategy, 2:1 balanced (Algorithm 5.2).
         std::vector<char> flags;

@@ -132,6 +132,7 @@ struct Discretisation {
   std::unique_ptr<solvers::ContactQP> projection;  ///< predictor projection (contact stabilisation)
   double courant = 0;
   long builtAtStep = 0;  ///< identifies the mesh in the Exodus series
+  long id = 0;           ///< unique among all discretisations of the run (StepView::meshId)
 };
 
 /// The deck's initial mesh held whole on every rank, for the far-field part of the Schur
@@ -156,6 +157,7 @@ struct Simulation::Impl {
   std::vector<std::pair<std::string, std::array<double, 2>>> probes;
   core::PhaseTimers timers;
   std::unique_ptr<CoarseProblem> coarseProblem;
+  long discretisations = 0;  ///< built so far (their ids)
 
   std::unique_ptr<fem::Assembler> makeAssembler(const mesh::Q1Mesh& m) const {
     if (problem->components() == 1) return std::make_unique<fem::Q1Assembler>(m, m.nodesOnSegments(problem->dirichletMask));
@@ -187,6 +189,7 @@ struct Simulation::Impl {
     auto d = std::make_unique<Discretisation>();
     d->forest = forest;
     d->builtAtStep = step;
+    d->id = ++discretisations;
     {
       auto scope = timers.scope("mesh");
       d->mesh = std::make_unique<mesh::Q1Mesh>(*forest, *segments, comm);
@@ -618,7 +621,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       if (hook) {
         auto scope = I.timers.scope("estimator");
         extras = hook(StepView{n, t, k, beta, *d->forest, *d->mesh, *d->assembler, d->coupling.get(), *I.problem, *u,
-                               pred, lambda, *d->massSolver});
+                               pred, lambda, *d->massSolver, d->id});
       }
       tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();
       I.newmark->update(pred, *predictors[1], *u, *v, *a);

@@ -44,6 +44,7 @@ struct StepView {
   const Vector& predictor;               ///< I_h u^{n-1} + k I_h v^{n-1} + (1/2 - beta) k^2 I_h a^{n-1}
   const std::vector<double>& lambda;     ///< scaled QP multipliers
   solvers::LinearSolver& spdSolver;      ///< a CG solver for SPD systems on this mesh (Jacobi)
+  long meshId;                           ///< differs between any two meshes of the run
 };
 /// Extra per-step results from a hook: CSV columns (in the order of PassOptions::extraColumns)
 /// and one cell field for Exodus.

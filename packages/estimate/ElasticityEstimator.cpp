@@ -238,7 +238,8 @@ EstimatorResult ElasticityEstimator::estimate(const ElasticityEstimatorInput& in
     for (size_t i = 0; i < fixedNodes.size(); ++i) fixedNodes[i] = dirichlet[2 * i + comp];
     auto uo = in.u.getLocalViewHost(Tpetra::Access::ReadOnly);
     res.s1 = geometricContactTerm(mesh, problem.contactMask, problem.obstacle, t,
-                                  [&](LO i) { return sign * uo(2 * i + comp, 0); }, fixedNodes, nullptr, in.solveSPD);
+                                  [&](LO i) { return sign * uo(2 * i + comp, 0); }, fixedNodes, nullptr, in.solveSPD,
+                                  &continuation_, in.meshId);
   }
   if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2);
   res.eta = res.etaStar + res.s0 + res.s1;

@@ -14,6 +14,7 @@
 ///   s0 = sqrt(|<lambda_H, (g - sign u_c)_+>|), s1 = ||(g - sign u_c)_+||_{1/2,Gamma_C} through the
 ///   harmonic continuation. Cell indicators: eta_K^2 plus the s0 share of the cell's contact edges.
 #include "ElasticityAssembler.hpp"
+#include "HarmonicContinuation.hpp"
 #include "ResidualEstimator.hpp"
 
 namespace signorini::estimate {
@@ -31,6 +32,9 @@ struct ElasticityEstimatorInput {
   const std::vector<double>& lambda;  ///< scaled QP multipliers (per segment, replicated)
   /// Solves A x = b for an SPD matrix A on the mesh's nodes (x holds the initial guess); for s1.
   std::function<void(const RCP<const CrsMatrix>& A, const Vector& b, Vector& x)> solveSPD;
+  /// Identifies the mesh among all meshes of the run (>= 0; -1: unknown): s1 then keeps its
+  /// operators while the mesh stays the same and starts from the previous continuation.
+  long meshId = -1;
 };
 
 class ElasticityEstimator {
@@ -41,6 +45,7 @@ class ElasticityEstimator {
 
  private:
   core::ParameterList params_;
+  mutable ContinuationCache continuation_;
 };
 
 }  // namespace signorini::estimate

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -73,27 +74,26 @@ RCP<const CrsMatrix> withPrescribedRows(const CrsMatrix& full, const std::vector
                                     graph->getImporter(), graph->getExporter()));
 }
 
-}  // namespace
-
-double harmonicContinuationNorm(const fem::Q1Assembler& scalar, const std::vector<char>& contact, const Vector& boundary,
-                                const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD) {
-  const auto owned = scalar.mesh().ownedMap();
+/// ||d||_1 for the continuation d of \p boundary (zero away from the prescribed nodes): A is
+/// \p full with the \p prescribed rows made identity rows and their columns zero. \p d holds the
+/// initial guess at the free nodes and returns the continuation.
+double continuationNorm(const CrsMatrix& full, const RCP<const CrsMatrix>& A, const std::vector<char>& prescribed,
+                        const Vector& boundary, Vector& d,
+                        const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD) {
+  const auto owned = boundary.getMap();
   const LO nOwned = static_cast<LO>(owned->getNodeNumElements());
-  const std::vector<char>& dirichlet = scalar.dirichletFlags();
-  std::vector<char> prescribed(dirichlet.size());
-  for (size_t i = 0; i < prescribed.size(); ++i) prescribed[i] = (dirichlet[i] || contact[i]) ? 1 : 0;
-  // K + M with the Dirichlet rows and columns eliminated: v^T A v is the full H1 norm for v = 0 there.
-  const RCP<const CrsMatrix> full = scalar.assembleOperator(1.0, 1.0, 1.0, 1.0);
-  const RCP<const CrsMatrix> A = withPrescribedRows(*full, prescribed);
   // Lifting: b = -A_full w on the free nodes, b = w on the prescribed ones (identity rows).
-  Vector b(owned), d(owned), Ad(owned);
-  full->apply(boundary, b);
+  Vector b(owned), Ad(owned);
+  full.apply(boundary, b);
   {
     auto bh = b.getLocalViewHost(Tpetra::Access::ReadWrite);
+    auto dh = d.getLocalViewHost(Tpetra::Access::ReadWrite);
     auto wh = boundary.getLocalViewHost(Tpetra::Access::ReadOnly);
-    for (LO i = 0; i < nOwned; ++i) bh(i, 0) = prescribed[i] ? wh(i, 0) : -bh(i, 0);
+    for (LO i = 0; i < nOwned; ++i) {
+      bh(i, 0) = prescribed[i] ? wh(i, 0) : -bh(i, 0);
+      if (prescribed[i]) dh(i, 0) = wh(i, 0);
+    }
   }
-  d.assign(boundary);
   solveSPD(A, b, d);
   {
     auto dh = d.getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -101,14 +101,28 @@ double harmonicContinuationNorm(const fem::Q1Assembler& scalar, const std::vecto
     for (LO i = 0; i < nOwned; ++i)
       if (prescribed[i]) dh(i, 0) = wh(i, 0);
   }
-  full->apply(d, Ad);
+  full.apply(d, Ad);
   return std::sqrt(std::max(d.dot(Ad), 0.0));
+}
+
+}  // namespace
+
+double harmonicContinuationNorm(const fem::Q1Assembler& scalar, const std::vector<char>& contact, const Vector& boundary,
+                                const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD) {
+  const std::vector<char>& dirichlet = scalar.dirichletFlags();
+  std::vector<char> prescribed(dirichlet.size());
+  for (size_t i = 0; i < prescribed.size(); ++i) prescribed[i] = (dirichlet[i] || contact[i]) ? 1 : 0;
+  // K + M with the Dirichlet rows and columns eliminated: v^T A v is the full H1 norm for v = 0 there.
+  const RCP<const CrsMatrix> full = scalar.assembleOperator(1.0, 1.0, 1.0, 1.0);
+  Vector d(boundary.getMap());
+  return continuationNorm(*full, withPrescribedRows(*full, prescribed), prescribed, boundary, d, solveSPD);
 }
 
 double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, const core::Expression& g, double t,
                             const std::function<double(LO)>& w, const std::vector<char>& fixed,
                             const fem::Q1Assembler* scalar,
-                            const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD) {
+                            const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD,
+                            ContinuationCache* cache, long meshId) {
   const auto owned = mesh.ownedMap();
   const LO nOwned = static_cast<LO>(owned->getNodeNumElements());
   const std::vector<char> contact = mesh.nodesOnSegments(contactMask);
@@ -127,9 +141,22 @@ double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, cons
   Teuchos::reduceAll(*mesh.comm(), Teuchos::REDUCE_MAX, maxLocal, Teuchos::outArg(maxGlobal));
   if (!(maxGlobal > 0)) return 0.0;
   SIGNORINI_ASSERT(static_cast<bool>(solveSPD), "s1 needs a solver for SPD systems");
-  if (scalar) return harmonicContinuationNorm(*scalar, contact, boundary, solveSPD);
-  const fem::Q1Assembler own(mesh, fixed);
-  return harmonicContinuationNorm(own, contact, boundary, solveSPD);
+  if (!cache || meshId < 0) {
+    if (scalar) return harmonicContinuationNorm(*scalar, contact, boundary, solveSPD);
+    const fem::Q1Assembler own(mesh, fixed);
+    return harmonicContinuationNorm(own, contact, boundary, solveSPD);
+  }
+  if (cache->meshId != meshId) {
+    std::unique_ptr<fem::Q1Assembler> own;
+    if (!scalar) scalar = (own = std::make_unique<fem::Q1Assembler>(mesh, fixed)).get();
+    cache->prescribed.resize(fixed.size());
+    for (size_t i = 0; i < fixed.size(); ++i) cache->prescribed[i] = (fixed[i] || contact[i]) ? 1 : 0;
+    cache->full = scalar->assembleOperator(1.0, 1.0, 1.0, 1.0);
+    cache->constrained = withPrescribedRows(*cache->full, cache->prescribed);
+    cache->last = Teuchos::rcp(new Vector(owned));  // zero: the first guess is the data itself
+    cache->meshId = meshId;
+  }
+  return continuationNorm(*cache->full, cache->constrained, cache->prescribed, boundary, *cache->last, solveSPD);
 }
 
 }  // namespace signorini::estimate

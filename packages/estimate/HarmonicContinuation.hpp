@@ -12,6 +12,16 @@
 
 namespace signorini::estimate {
 
+/// What s1 keeps between calls on one mesh (the caller names the mesh by an id that no other mesh
+/// of the run shares): the H^1 operator, its form with the prescribed rows, and the last
+/// continuation, which starts the next solve (the data change little from step to step).
+struct ContinuationCache {
+  long meshId = -1;
+  std::vector<char> prescribed;           ///< overlap flags: contact or fixed nodes
+  RCP<const CrsMatrix> full, constrained;
+  RCP<Vector> last;
+};
+
 /// \param scalar    a scalar Q1 assembler on the mesh; its Dirichlet nodes hold v = 0
 /// \param contact   flags on the overlap nodes of Gamma_C (where v = w)
 /// \param boundary  w at the owned nodes (zero away from Gamma_C)
@@ -23,10 +33,13 @@ double harmonicContinuationNorm(const fem::Q1Assembler& scalar, const std::vecto
 /// owned nodes (u_h, or sign u_c for elasticity): the data (g - w)_+ at the contact nodes of
 /// \p contactMask that are not \p fixed (overlap node flags), continued harmonically with v = 0 at the
 /// fixed nodes; 0 (and no solve) when the positive part vanishes on every rank. \p scalar: a scalar
-/// assembler whose Dirichlet nodes are \p fixed, or null to build one when it is needed.
+/// assembler whose Dirichlet nodes are \p fixed, or null to build one when it is needed. With a
+/// \p cache and \p meshId >= 0, the operators are built once per mesh and each solve starts from
+/// the previous continuation on the same mesh.
 double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, const core::Expression& g, double t,
                             const std::function<double(LO)>& w, const std::vector<char>& fixed,
                             const fem::Q1Assembler* scalar,
-                            const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD);
+                            const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD,
+                            ContinuationCache* cache = nullptr, long meshId = -1);
 
 }  // namespace signorini::estimate

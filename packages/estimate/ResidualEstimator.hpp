@@ -16,6 +16,7 @@
 
 #include "ContactCoupling.hpp"
 #include "Forest.hpp"
+#include "HarmonicContinuation.hpp"
 #include "ParameterTools.hpp"
 #include "ProblemData.hpp"
 #include "Q1Assembler.hpp"
@@ -35,6 +36,9 @@ struct EstimatorInput {
   const std::vector<double>& lambda;     ///< scaled QP multipliers lambda_H (per segment, replicated)
   /// Solves A x = b for an SPD matrix A (x holds the initial guess); used for s1.
   std::function<void(const RCP<const CrsMatrix>& A, const Vector& b, Vector& x)> solveSPD;
+  /// Identifies the mesh among all meshes of the run (>= 0; -1: unknown): s1 then keeps its
+  /// operators while the mesh stays the same and starts from the previous continuation.
+  long meshId = -1;
 };
 
 struct EstimatorResult {
@@ -50,6 +54,7 @@ class ResidualEstimator {
 
  private:
   core::ParameterList params_;
+  mutable ContinuationCache continuation_;
 };
 
 }  // namespace signorini::estimate
