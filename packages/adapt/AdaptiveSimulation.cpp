@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
-#include <memory>
 #include <set>
 
 #include <Tpetra_Vector.hpp>
@@ -12,7 +11,6 @@
 #include "CsvWriter.hpp"
 #include "Error.hpp"
 #include "JacobiCG.hpp"
-#include "LinearSolver.hpp"
 #include "Marking.hpp"
 #include "PhaseTimers.hpp"
 #include "ElasticityEstimator.hpp"
@@ -86,32 +84,15 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       const auto start = std::chrono::steady_clock::now();
       std::vector<std::shared_ptr<mesh::Forest>> next(nSteps);
       double etaMax = 0;
-      struct S1Solver {
-        RCP<const CrsMatrix> A;
-        int uses = 0;
-        std::unique_ptr<solvers::LinearSolver> multigrid;
-      } s1Solver;
       const double s1Tolerance = deck_.sublist("Estimator").get<double>("S1 Relative Tolerance");
       dynamics::StepHook hook = [&](const dynamics::StepView& s) {
         // Every CG iterate is an extension of the boundary data, so its norm bounds s1 from above and
         // decreases to s1 (Estimator/S1 Relative Tolerance; s1 is not used for marking, so the meshes
-        // do not depend on it). On a new mesh a lean Jacobi CG (the iteration of Belos CG with Ifpack2
-        // Jacobi, without their set-up per call); from the second step on the same mesh (the s1
-        // operator is then the same object) CG with MueLu, set up once for that mesh.
+        // do not depend on it). The lean Jacobi CG runs the iteration of Belos CG with Ifpack2 Jacobi,
+        // without their set-up per call. (MueLu here, set up once per mesh, broke down on the
+        // membrane deck's second cycle: non-positive p^T A p in Belos CG.)
         auto solveSPD = [&](const RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
-          if (A != s1Solver.A) s1Solver = S1Solver{A, 0, nullptr};
-          if (++s1Solver.uses < 2) {
-            estimate::solveJacobiCG(*A, b, x, s1Tolerance, deck_.sublist("Linear Solver").get<int>("Maximum Iterations"));
-            return;
-          }
-          if (!s1Solver.multigrid) {
-            auto params = deck_.sublist("Linear Solver");
-            params.set("Preconditioner", "MueLu");
-            params.set("Relative Tolerance", s1Tolerance);
-            s1Solver.multigrid = std::make_unique<solvers::LinearSolver>(params, comm);
-            s1Solver.multigrid->setOperator(A, 0.0);
-          }
-          s1Solver.multigrid->solve(b, x);
+          estimate::solveJacobiCG(*A, b, x, s1Tolerance, deck_.sublist("Linear Solver").get<int>("Maximum Iterations"));
         };
         const auto* scalar = dynamic_cast<const fem::Q1Assembler*>(&s.assembler);
         const auto r = scalar ? estimator.estimate(estimate::EstimatorInput{s.forest, s.mesh, *scalar, s.problem,
