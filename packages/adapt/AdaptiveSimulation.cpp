@@ -120,7 +120,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
           refined->refineAndCoarsen(flags, small, baseLevel);
           refined->balance();
         } else {
-          refined->refineMarkedBalanced(flags);  // T^n_l is balanced: adds only the cells the balance forces
+          refined->refineMarked(s.mesh.balanceClosure(flags));  // T^n_l is balanced: adds the cells the balance forces
         }
         refined->partition();
         const int n = s.step;

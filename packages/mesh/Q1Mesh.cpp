@@ -1,5 +1,6 @@
 #include "Q1Mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <p4est_ghost.h>
@@ -219,6 +220,45 @@ std::vector<char> Q1Mesh::nodesOnSegments(unsigned mask) const {
   std::vector<char> flags(h.extent(0));
   for (size_t i = 0; i < flags.size(); ++i) flags[i] = h(i, 0) > 0 ? 1 : 0;
   return flags;
+}
+
+std::vector<char> Q1Mesh::balanceClosure(const std::vector<char>& flagged) const {
+  SIGNORINI_ASSERT(flagged.size() == static_cast<size_t>(numCells_), "one flag per local cell");
+  std::vector<char> closure(flagged);
+  // At each regular corner node: 1 + the finest level of the flagged cells touching it (0: none).
+  // A cell touching a flagged cell one level finer must be refined too; in a balanced forest the
+  // cells at a node differ by at most one level, so "coarser than a flagged cell there" is that.
+  Vector atNode(overlapMap_), owned(ownedMap_);
+  const auto& D = cornerDofsHost;
+  for (int round = 0;; ++round) {
+    {
+      auto h = atNode.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      Kokkos::deep_copy(h, 0.0);
+      for (LO e = 0; e < numCells_; ++e)
+        if (closure[e])
+          for (int c = 0; c < 4; ++c)
+            if (D(e, c, 1) < 0) h(D(e, c, 0), 0) = std::max(h(D(e, c, 0), 0), cellLevel_[e] + 1.0);
+    }
+    owned.putScalar(0.0);
+    owned.doExport(atNode, *exporter_, Tpetra::ABSMAX);
+    atNode.doImport(owned, *importer_, Tpetra::INSERT);
+    long added = 0, addedGlobal = 0;
+    {
+      auto h = atNode.getLocalViewHost(Tpetra::Access::ReadOnly);
+      for (LO e = 0; e < numCells_; ++e) {
+        if (closure[e]) continue;
+        for (int c = 0; c < 4; ++c)
+          if (D(e, c, 1) < 0 && cellLevel_[e] + 1.0 < h(D(e, c, 0), 0)) {
+            closure[e] = 1;
+            ++added;
+            break;
+          }
+      }
+    }
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, added, Teuchos::outArg(addedGlobal));
+    if (addedGlobal == 0) break;
+  }
+  return closure;
 }
 
 }  // namespace signorini::mesh

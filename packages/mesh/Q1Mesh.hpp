@@ -59,6 +59,12 @@ class Q1Mesh {
   CellWeights::HostMirror cornerWeightsHost;
 
   const std::vector<int>& cellLevel() const { return cellLevel_; }
+  /// The cells that refining the \p flagged ones (local cell order) forces under 2:1 balance over
+  /// faces and corners, flags included, for a balanced forest: refining them once gives the
+  /// forest of Forest::refineMarkedBalanced() (refineMarked() then balance()). Two touching cells
+  /// of a balanced forest share a regular corner node, so the closure spreads through the nodes
+  /// (finest flagged level per node, exchanged between ranks): no p4est face/corner iteration.
+  std::vector<char> balanceClosure(const std::vector<char>& flagged) const;
   const std::vector<int>& cellTree() const { return cellTree_; }
   const std::vector<BoundaryEdge>& boundaryEdges() const { return boundaryEdges_; }
   /// Coordinates of every overlap node.

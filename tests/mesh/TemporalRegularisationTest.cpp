@@ -84,8 +84,10 @@ TEST(Forest, MarkedRefinementAndCoarseningAndSameCells) {
 
 TEST(Forest, BalancedRefinementEqualsRefinementThenP4estBalance) {
   // A graded, balanced forest over several trees (deep refinement near two points), then flags
-  // that depend only on the cell (the same on any partition): the forced closure must give
-  // exactly p4est_balance's forest (also when every cell is flagged).
+  // that depend only on the cell (the same on any partition): refining the forced closure, found
+  // through p4est's faces and corners (Forest::refineMarkedBalanced) or through the Q1 nodes
+  // (Q1Mesh::balanceClosure), must give exactly p4est_balance's forest (also when every cell is
+  // flagged).
   test::TestMesh a(0.0, 1.0, 0.0, 1.0, 3, 2, 1);
   refineAt(*a.forest, 0.999, 0.999, 4);
   refineAt(*a.forest, 0.3, 0.6, 3);
@@ -109,14 +111,19 @@ TEST(Forest, BalancedRefinementEqualsRefinementThenP4estBalance) {
     const long long refinedOnly = viaP4est.numGlobalCells();
     viaP4est.balance();
     forced += viaP4est.numGlobalCells() - refinedOnly;
-    viaClosure.refineMarkedBalanced(flags);
-    EXPECT_EQ(viaClosure.numGlobalCells(), viaP4est.numGlobalCells()) << "seed " << seed;
+    viaClosure.refineMarkedBalanced(flags);  // the closure through p4est's faces and corners
+    mesh::Forest viaNodes(*a.forest);          // the closure through the Q1 nodes
+    const mesh::Q1Mesh q1(*a.forest, *a.segments, Tpetra::getDefaultComm());
+    viaNodes.refineMarked(q1.balanceClosure(flags));
+    EXPECT_EQ(viaNodes.numGlobalCells(), viaP4est.numGlobalCells()) << "seed " << seed;
     viaP4est.partition();
+    viaNodes.partition();
     viaClosure.partition();
+    EXPECT_TRUE(viaNodes.sameCells(viaP4est)) << "seed " << seed;
     EXPECT_TRUE(viaClosure.sameCells(viaP4est)) << "seed " << seed;
-    mesh::Forest rebalanced(viaClosure);
+    mesh::Forest rebalanced(viaNodes);
     rebalanced.balance();
-    EXPECT_TRUE(rebalanced.sameCells(viaClosure)) << "seed " << seed;
+    EXPECT_TRUE(rebalanced.sameCells(viaNodes)) << "seed " << seed;
   }
   EXPECT_GT(forced, 0);  // the flags did force balancing refinements
 }
