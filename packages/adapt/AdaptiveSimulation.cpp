@@ -94,14 +94,17 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         auto solveSPD = [&](const RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
           estimate::solveJacobiCG(*A, b, x, s1Tolerance, deck_.sublist("Linear Solver").get<int>("Maximum Iterations"));
         };
+        // The previous step's continuation (interpolated by the time stepper) starts s1 on a new mesh.
+        const Vector* guess = s.carried.empty() ? nullptr : s.carried[0].get();
         const auto* scalar = dynamic_cast<const fem::Q1Assembler*>(&s.assembler);
         const auto r = scalar ? estimator.estimate(estimate::EstimatorInput{s.forest, s.mesh, *scalar, s.problem,
                                                                             s.coupling, s.time, s.timeStep, s.beta,
-                                                                            s.u, s.predictor, s.lambda, solveSPD, s.meshId})
+                                                                            s.u, s.predictor, s.lambda, solveSPD, s.meshId,
+                                                                            guess})
                               : elasticityEstimator.estimate(estimate::ElasticityEstimatorInput{
                                     s.forest, s.mesh, dynamic_cast<const fem::ElasticityAssembler&>(s.assembler),
                                     s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor, s.lambda,
-                                    solveSPD, s.meshId});
+                                    solveSPD, s.meshId, guess});
         etaMax = std::max(etaMax, r.eta);
         // T^n_{l+1}: T^n_l refined by the strategy, 2:1 balanced (Algorithm 5.2).
         std::vector<char> flags;
@@ -127,7 +130,12 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         next[n - 1] = (n > 1 && next[n - 2]->sameCells(*refined)) ? next[n - 2] : refined;
         std::vector<double> indicator(r.cellIndicator.size());
         for (size_t e = 0; e < indicator.size(); ++e) indicator[e] = std::sqrt(r.cellIndicator[e]);
-        return dynamics::StepExtras{{r.etaStar, r.s0, r.s1, r.eta}, indicator};
+        RCP<Vector> continuation =
+            scalar ? estimator.continuationOn(s.meshId) : elasticityEstimator.continuationOn(s.meshId);
+        if (continuation.is_null() && guess) continuation = s.carried[0];  // no s1 this step: keep the guess
+        dynamics::StepExtras extras{{r.etaStar, r.s0, r.s1, r.eta}, indicator, {}};
+        if (!continuation.is_null()) extras.carry.push_back(continuation);
+        return extras;
       };
       dynamics::PassOptions options;
       const bool lastPlanned = l == cycles - 1;

@@ -296,8 +296,9 @@ struct Simulation::Impl {
   /// discretisation: the L2 projection M x = int u_old phi, all fields in one Krylov run started
   /// from their interpolants, or the interpolants alone. The multipliers follow the segment
   /// midpoints (they only warm-start the next QP).
+  /// \p carried (scalar fields on the old mesh's owned nodes) are interpolated along.
   void transfer(const Discretisation& from, Discretisation& to, bool interpolate, std::vector<RCP<Vector>>& fields,
-                std::vector<double>& lambda) {
+                std::vector<double>& lambda, std::vector<RCP<Vector>>& carried) {
     auto scope = timers.scope("transfer");
     const int nc = problem->components();
     const int nf = static_cast<int>(fields.size());
@@ -305,6 +306,8 @@ struct Simulation::Impl {
     std::vector<RCP<Vector>> parts;
     for (const auto& f : fields)
       for (int c = 0; c < nc; ++c) parts.push_back(nc == 1 ? f : component(*f, c, nc, from.mesh->ownedMap()));
+    const int nParts = static_cast<int>(parts.size());
+    for (const auto& c : carried) parts.push_back(c);
     std::vector<const Vector*> raw;
     for (const auto& p : parts) raw.push_back(p.get());
     fem::MeshTransfer t(*from.forest, *from.mesh, raw, *to.forest, *to.mesh);
@@ -312,6 +315,7 @@ struct Simulation::Impl {
       return nc == 1 ? moved[f] : interleave({moved.begin() + nc * f, moved.begin() + nc * (f + 1)}, to.assembler->ownedMap());
     };
     const auto interpolants = t.interpolate();
+    for (size_t c = 0; c < carried.size(); ++c) carried[c] = interpolants[nParts + c];
     MultiVector X(to.assembler->ownedMap(), nf);
     for (int f = 0; f < nf; ++f) {
       X.getVectorNonConst(f)->assign(*byField(interpolants, f));
@@ -324,7 +328,7 @@ struct Simulation::Impl {
         nodal = std::make_unique<fem::Q1Assembler>(*to.mesh, std::vector<char>(to.mesh->overlapMap()->getNodeNumElements(), 0));
         scalar = nodal.get();
       }
-      const auto loads = t.projectionLoads(*scalar);
+      const auto loads = t.projectionLoads(*scalar, nParts);
       MultiVector B(to.assembler->ownedMap(), nf);
       for (int f = 0; f < nf; ++f) {  // M_rho x = rho int u_old phi
         B.getVectorNonConst(f)->update(problem->density, *byField(loads, f), 0.0);
@@ -495,6 +499,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   }
 
   double tRemesh = 0, tEstimate = 0;  // of the current step
+  std::vector<RCP<Vector>> carried;   // StepExtras::carry of the previous step
   auto writeOutputs = [&](int step, double t, const solvers::ContactQPResult& qr, double tAssembly, double tContact,
                           double tFree, const StepExtras& extras) {
     auto scope = I.timers.scope("output");
@@ -560,7 +565,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       I.newmark->velocityPredictor(*v, *a, *predictors[1]);
       if (n > 1 && meshes[n - 1] != d->forest && !meshes[n - 1]->sameCells(*d->forest)) {
         auto next = I.build(meshes[n - 1], n);
-        I.transfer(*d, *next, options.interpolateTransfer, predictors, lambda);
+        I.transfer(*d, *next, options.interpolateTransfer, predictors, lambda, carried);
         d = std::move(next);
         u = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
         v = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
@@ -621,7 +626,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       if (hook) {
         auto scope = I.timers.scope("estimator");
         extras = hook(StepView{n, t, k, beta, *d->forest, *d->mesh, *d->assembler, d->coupling.get(), *I.problem, *u,
-                               pred, lambda, *d->massSolver, d->id});
+                               pred, lambda, *d->massSolver, d->id, carried});
+        carried = extras.carry;
       }
       tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();
       I.newmark->update(pred, *predictors[1], *u, *v, *a);

@@ -45,12 +45,18 @@ struct StepView {
   const std::vector<double>& lambda;     ///< scaled QP multipliers
   solvers::LinearSolver& spdSolver;      ///< a CG solver for SPD systems on this mesh (Jacobi)
   long meshId;                           ///< differs between any two meshes of the run
+  /// StepExtras::carry of the previous step, on this step's mesh (nodal interpolation when the mesh
+  /// changed); empty in the first step.
+  const std::vector<RCP<Vector>>& carried;
 };
 /// Extra per-step results from a hook: CSV columns (in the order of PassOptions::extraColumns)
 /// and one cell field for Exodus.
 struct StepExtras {
   std::vector<double> columns;
   std::vector<double> cellField;
+  /// Scalar fields on this step's mesh (owned node map) handed to the next step's hook
+  /// (StepView::carried), e.g. a warm start.
+  std::vector<RCP<Vector>> carry;
 };
 using StepHook = std::function<StepExtras(const StepView&)>;
 

@@ -239,7 +239,7 @@ EstimatorResult ElasticityEstimator::estimate(const ElasticityEstimatorInput& in
     auto uo = in.u.getLocalViewHost(Tpetra::Access::ReadOnly);
     res.s1 = geometricContactTerm(mesh, problem.contactMask, problem.obstacle, t,
                                   [&](LO i) { return sign * uo(2 * i + comp, 0); }, fixedNodes, nullptr, in.solveSPD,
-                                  &continuation_, in.meshId);
+                                  &continuation_, in.meshId, in.continuationGuess);
   }
   if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2);
   res.eta = res.etaStar + res.s0 + res.s1;

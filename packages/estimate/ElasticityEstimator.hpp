@@ -35,6 +35,9 @@ struct ElasticityEstimatorInput {
   /// Identifies the mesh among all meshes of the run (>= 0; -1: unknown): s1 then keeps its
   /// operators while the mesh stays the same and starts from the previous continuation.
   long meshId = -1;
+  /// A guess of the s1 continuation on this mesh (owned nodes; e.g. the previous step's,
+  /// interpolated), used when the mesh is new to the estimator; may be null.
+  const Vector* continuationGuess = nullptr;
 };
 
 class ElasticityEstimator {
@@ -42,6 +45,11 @@ class ElasticityEstimator {
   /// \param params the validated "Estimator" sublist (ResidualEstimator::getValidParameters()).
   explicit ElasticityEstimator(const core::ParameterList& params);
   EstimatorResult estimate(const ElasticityEstimatorInput& in) const;
+
+  /// The last s1 continuation if it lives on mesh \p meshId (else null): a guess for the next step.
+  RCP<Vector> continuationOn(long meshId) const {
+    return meshId >= 0 && continuation_.meshId == meshId ? continuation_.last : Teuchos::null;
+  }
 
  private:
   core::ParameterList params_;

@@ -122,7 +122,7 @@ double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, cons
                             const std::function<double(LO)>& w, const std::vector<char>& fixed,
                             const fem::Q1Assembler* scalar,
                             const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD,
-                            ContinuationCache* cache, long meshId) {
+                            ContinuationCache* cache, long meshId, const Vector* guess) {
   const auto owned = mesh.ownedMap();
   const LO nOwned = static_cast<LO>(owned->getNodeNumElements());
   const std::vector<char> contact = mesh.nodesOnSegments(contactMask);
@@ -154,6 +154,7 @@ double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, cons
     cache->full = scalar->assembleOperator(1.0, 1.0, 1.0, 1.0);
     cache->constrained = withPrescribedRows(*cache->full, cache->prescribed);
     cache->last = Teuchos::rcp(new Vector(owned));  // zero: the first guess is the data itself
+    if (guess) cache->last->assign(*guess);
     cache->meshId = meshId;
   }
   return continuationNorm(*cache->full, cache->constrained, cache->prescribed, boundary, *cache->last, solveSPD);

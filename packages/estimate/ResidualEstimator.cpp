@@ -275,7 +275,8 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
   if (in.coupling && params_.get<bool>("Compute S1")) {
     auto uo = in.u.getLocalViewHost(Tpetra::Access::ReadOnly);
     res.s1 = geometricContactTerm(mesh, problem.contactMask, problem.obstacle, t, [&](LO i) { return uo(i, 0); },
-                                  in.assembler.dirichletFlags(), &in.assembler, in.solveSPD, &continuation_, in.meshId);
+                                  in.assembler.dirichletFlags(), &in.assembler, in.solveSPD, &continuation_, in.meshId,
+                                  in.continuationGuess);
   }
   if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2);
   res.eta = res.etaStar + res.s0 + res.s1;

@@ -39,6 +39,9 @@ struct EstimatorInput {
   /// Identifies the mesh among all meshes of the run (>= 0; -1: unknown): s1 then keeps its
   /// operators while the mesh stays the same and starts from the previous continuation.
   long meshId = -1;
+  /// A guess of the s1 continuation on this mesh (owned nodes; e.g. the previous step's,
+  /// interpolated), used when the mesh is new to the estimator; may be null.
+  const Vector* continuationGuess = nullptr;
 };
 
 struct EstimatorResult {
@@ -51,6 +54,11 @@ class ResidualEstimator {
   static core::ParameterList getValidParameters();  ///< the "Estimator" sublist
   explicit ResidualEstimator(const core::ParameterList& params);
   EstimatorResult estimate(const EstimatorInput& in) const;
+
+  /// The last s1 continuation if it lives on mesh \p meshId (else null): a guess for the next step.
+  RCP<Vector> continuationOn(long meshId) const {
+    return meshId >= 0 && continuation_.meshId == meshId ? continuation_.last : Teuchos::null;
+  }
 
  private:
   core::ParameterList params_;

@@ -1,5 +1,7 @@
 #include "MeshTransfer.hpp"
 
+#include <algorithm>
+
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
@@ -43,12 +45,13 @@ double MeshTransfer::valueAt(const mesh::OverlapCell& q, int field, double s, do
   return (1 - ls) * (1 - lr) * c[0] + ls * (1 - lr) * c[1] + (1 - ls) * lr * c[2] + ls * lr * c[3];
 }
 
-std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAssembler) const {
+std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAssembler, int numFields) const {
+  const int nf = numFields < 0 ? numFields_ : std::min(numFields, numFields_);
   const auto& D = newMesh_.cornerDofsHost;
   const auto& W = newMesh_.cornerWeightsHost;
   std::vector<RCP<Vector>> loads;
   std::vector<Vector> overlap;
-  for (int f = 0; f < numFields_; ++f) {
+  for (int f = 0; f < nf; ++f) {
     overlap.emplace_back(newMesh_.overlapMap());
     overlap.back().putScalar(0.0);
   }
@@ -58,7 +61,7 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
   for (int e = 0; e < overlap_->numTargetCells(); ++e) {
     const auto& K = overlap_->target(e);
     double be[8][4] = {};  // [field][corner]
-    SIGNORINI_ASSERT(numFields_ <= 8, "too many fields");
+    SIGNORINI_ASSERT(nf <= 8, "too many fields");
     for (const auto& Q : overlap_->overlapping(e)) {
       const auto& R = Q.size < K.size ? Q : K;  // the cell of the common refinement
       for (int i = 0; i < 3; ++i)
@@ -67,13 +70,13 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
           const double w = kGw[i] * kGw[j] * R.size * R.size * coarse_.jacobianDeterminant(K.tree, s, r);
           const double ks = (s - K.s0) / K.size, kr = (r - K.r0) / K.size;
           const double N[4] = {(1 - ks) * (1 - kr), ks * (1 - kr), (1 - ks) * kr, ks * kr};
-          for (int f = 0; f < numFields_; ++f) {
+          for (int f = 0; f < nf; ++f) {
             const double u = valueAt(Q, f, s, r);
             for (int c = 0; c < 4; ++c) be[f][c] += w * u * N[c];
           }
         }
     }
-    for (int f = 0; f < numFields_; ++f)
+    for (int f = 0; f < nf; ++f)
       for (int c = 0; c < 4; ++c)
         for (int k = 0; k < 2; ++k) {
           const LO d = D(e, c, k);
@@ -81,7 +84,7 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
         }
   }
   views.clear();
-  for (int f = 0; f < numFields_; ++f) {
+  for (int f = 0; f < nf; ++f) {
     auto b = Teuchos::rcp(new Vector(newMesh_.ownedMap()));
     b->doExport(overlap[f], newMesh_.overlapToOwned(), Tpetra::ADD);
     loads.push_back(b);
