@@ -100,7 +100,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         const auto r = scalar ? estimator.estimate(estimate::EstimatorInput{s.forest, s.mesh, *scalar, s.problem,
                                                                             s.coupling, s.time, s.timeStep, s.beta,
                                                                             s.u, s.predictor, s.lambda, solveSPD, s.meshId,
-                                                                            guess})
+                                                                            guess, s.consistentMass, s.stiffness})
                               : elasticityEstimator.estimate(estimate::ElasticityEstimatorInput{
                                     s.forest, s.mesh, dynamic_cast<const fem::ElasticityAssembler&>(s.assembler),
                                     s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor, s.lambda,

@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -131,6 +132,7 @@ struct Discretisation {
   std::unique_ptr<solvers::ContactQP> qp;
   std::unique_ptr<solvers::ContactQP> projection;  ///< predictor projection (contact stabilisation)
   double courant = 0;
+  bool lumpedMass = false;
   long builtAtStep = 0;  ///< identifies the mesh in the Exodus series
   long id = 0;           ///< unique among all discretisations of the run (StepView::meshId)
 };
@@ -199,6 +201,7 @@ struct Simulation::Impl {
       d->assembler = makeAssembler(*d->mesh);
       const double k = newmark->timeStep;
       const std::vector<char> lump = lumpedUnknowns(*d->assembler);
+      d->lumpedMass = std::find(lump.begin(), lump.end(), 1) != lump.end();
       auto matrices = d->assembler->assembleStepMatrices(newmark->beta * k * k, *problem, lump);
       d->M = matrices.M;
       d->K = matrices.K;
@@ -626,7 +629,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       if (hook) {
         auto scope = I.timers.scope("estimator");
         extras = hook(StepView{n, t, k, beta, *d->forest, *d->mesh, *d->assembler, d->coupling.get(), *I.problem, *u,
-                               pred, lambda, *d->massSolver, d->id, carried});
+                               pred, lambda, *d->massSolver, d->id, carried,
+                               d->lumpedMass ? Teuchos::null : RCP<const CrsMatrix>(d->M), d->K});
         carried = extras.carry;
       }
       tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();

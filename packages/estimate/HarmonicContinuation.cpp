@@ -122,7 +122,8 @@ double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, cons
                             const std::function<double(LO)>& w, const std::vector<char>& fixed,
                             const fem::Q1Assembler* scalar,
                             const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD,
-                            ContinuationCache* cache, long meshId, const Vector* guess) {
+                            ContinuationCache* cache, long meshId, const Vector* guess,
+                            const std::function<RCP<const CrsMatrix>()>& h1Operator) {
   const auto owned = mesh.ownedMap();
   const LO nOwned = static_cast<LO>(owned->getNodeNumElements());
   const std::vector<char> contact = mesh.nodesOnSegments(contactMask);
@@ -147,11 +148,14 @@ double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, cons
     return harmonicContinuationNorm(own, contact, boundary, solveSPD);
   }
   if (cache->meshId != meshId) {
-    std::unique_ptr<fem::Q1Assembler> own;
-    if (!scalar) scalar = (own = std::make_unique<fem::Q1Assembler>(mesh, fixed)).get();
     cache->prescribed.resize(fixed.size());
     for (size_t i = 0; i < fixed.size(); ++i) cache->prescribed[i] = (fixed[i] || contact[i]) ? 1 : 0;
-    cache->full = scalar->assembleOperator(1.0, 1.0, 1.0, 1.0);
+    cache->full = h1Operator ? h1Operator() : Teuchos::null;
+    if (cache->full.is_null()) {
+      std::unique_ptr<fem::Q1Assembler> own;
+      if (!scalar) scalar = (own = std::make_unique<fem::Q1Assembler>(mesh, fixed)).get();
+      cache->full = scalar->assembleOperator(1.0, 1.0, 1.0, 1.0);
+    }
     cache->constrained = withPrescribedRows(*cache->full, cache->prescribed);
     cache->last = Teuchos::rcp(new Vector(owned));  // zero: the first guess is the data itself
     if (guess) cache->last->assign(*guess);

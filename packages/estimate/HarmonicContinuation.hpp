@@ -36,10 +36,13 @@ double harmonicContinuationNorm(const fem::Q1Assembler& scalar, const std::vecto
 /// assembler whose Dirichlet nodes are \p fixed, or null to build one when it is needed. With a
 /// \p cache and \p meshId >= 0, the operators are built once per mesh and each solve starts from
 /// the previous continuation on the same mesh, or from \p guess (owned nodes) on a new mesh.
+/// \p h1Operator (optional, may return null) supplies K + M with unit coefficients and the fixed
+/// nodes eliminated instead of an assembly.
 double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, const core::Expression& g, double t,
                             const std::function<double(LO)>& w, const std::vector<char>& fixed,
                             const fem::Q1Assembler* scalar,
                             const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD,
-                            ContinuationCache* cache = nullptr, long meshId = -1, const Vector* guess = nullptr);
+                            ContinuationCache* cache = nullptr, long meshId = -1, const Vector* guess = nullptr,
+                            const std::function<RCP<const CrsMatrix>()>& h1Operator = {});
 
 }  // namespace signorini::estimate

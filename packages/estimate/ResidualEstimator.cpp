@@ -276,7 +276,11 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
     auto uo = in.u.getLocalViewHost(Tpetra::Access::ReadOnly);
     res.s1 = geometricContactTerm(mesh, problem.contactMask, problem.obstacle, t, [&](LO i) { return uo(i, 0); },
                                   in.assembler.dirichletFlags(), &in.assembler, in.solveSPD, &continuation_, in.meshId,
-                                  in.continuationGuess);
+                                  in.continuationGuess, [&]() -> RCP<const CrsMatrix> {
+                                    if (in.mass.is_null() || in.stiffness.is_null()) return Teuchos::null;
+                                    return fem::combineOnGraph(*in.mass, 1.0 / rho, *in.stiffness, 1.0 / kappa,
+                                                               in.assembler.dirichletFlags());
+                                  });
   }
   if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2);
   res.eta = res.etaStar + res.s0 + res.s1;

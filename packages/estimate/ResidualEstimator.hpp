@@ -42,6 +42,9 @@ struct EstimatorInput {
   /// A guess of the s1 continuation on this mesh (owned nodes; e.g. the previous step's,
   /// interpolated), used when the mesh is new to the estimator; may be null.
   const Vector* continuationGuess = nullptr;
+  /// The step's consistent M_rho and K_kappa on this mesh (optional): s1's H^1 operator is then
+  /// M / rho + K / kappa, formed from their values instead of assembled.
+  RCP<const CrsMatrix> mass, stiffness;
 };
 
 struct EstimatorResult {

@@ -30,6 +30,12 @@ inline void addExported(const Vector& overlap, const Tpetra::Export<LO, GO, Node
   out.update(1.0, sum, 1.0);
 }
 
+/// cm M + ck K for two fill-complete matrices on one local graph (null if they do not share one),
+/// with the rows flagged in \p identityRows (owned rows; M and K are the identity there) kept
+/// identity rows. The sum is formed from the values (no assembly).
+RCP<CrsMatrix> combineOnGraph(const CrsMatrix& M, double cm, const CrsMatrix& K, double ck,
+                              const std::vector<char>& identityRows);
+
 class Assembler {
  public:
   virtual ~Assembler() = default;

@@ -524,6 +524,38 @@ TEST(ResidualEstimatorS1, MatchesDiscreteHarmonicContinuation) {
   EXPECT_EQ(s0none, 0.0);
 }
 
+TEST(ResidualEstimatorS1, OperatorsFromTheStepMatricesAndWarmStartsGiveTheSameValue) {
+  // s1 with its H^1 operator formed from the step's M_rho and K_kappa (rho = 2, kappa = 3) and with
+  // the continuation cached per mesh (second call on the same mesh starts from the first
+  // continuation; a "new" mesh id starts from a guess) equals the plainly assembled, cold-started s1.
+  EstimatorCase s(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 2);
+  s.refineWhere([](double x, double y) { return x > 0.5 && y < 0.5; });
+  s.finish({{"Dirichlet Segments", "left"}, {"Contact Segments", "right"}, {"Obstacle", "0.1 * sin(3 * y) + 0.05"}},
+           2.0, 3.0);
+  s.interpolate([](double x, double y) { return 0.02 * x * (1 + y); }, *s.u);
+  auto params = estimate::ResidualEstimator::getValidParameters();
+  params.set("Scaling", "step");
+  const double plain = estimate::ResidualEstimator(params).estimate(
+      estimate::EstimatorInput{*s.forest, *s.mesh, *s.assembler, *s.problem, s.coupling.get(), s.time, s.k, s.beta,
+                               *s.u, *s.pred, s.lambda, solveCG}).s1;
+  ASSERT_GT(plain, 0.0);
+  const RCP<const CrsMatrix> M = s.assembler->assembleSystem(1.0, 0.0, *s.problem);
+  const RCP<const CrsMatrix> K = s.assembler->assembleSystem(0.0, 1.0, *s.problem);
+  estimate::ResidualEstimator cached(params);
+  auto withCache = [&](long meshId, const Vector* guess) {
+    return cached.estimate(estimate::EstimatorInput{*s.forest, *s.mesh, *s.assembler, *s.problem, s.coupling.get(),
+                                                    s.time, s.k, s.beta, *s.u, *s.pred, s.lambda, solveCG, meshId,
+                                                    guess, M, K}).s1;
+  };
+  EXPECT_NEAR(withCache(7, nullptr), plain, 1e-10 * plain);
+  ASSERT_FALSE(cached.continuationOn(7).is_null());
+  EXPECT_TRUE(cached.continuationOn(8).is_null());
+  EXPECT_NEAR(withCache(7, nullptr), plain, 1e-10 * plain);  // warm start from the first continuation
+  Vector guess(s.mesh->ownedMap());
+  guess.putScalar(0.3);  // any values: the prescribed ones are reset
+  EXPECT_NEAR(withCache(8, &guess), plain, 1e-10 * plain);
+}
+
 // ---------------------------------------------------------------------------------------------
 // 6. Parallel agreement: the world communicator against rank 0 alone (same mesh and data).
 
