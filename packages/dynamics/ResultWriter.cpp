@@ -1,6 +1,6 @@
 #include "ResultWriter.hpp"
 
-#include <map>
+#include <unordered_map>
 
 #include <Tpetra_Vector.hpp>
 
@@ -91,8 +91,9 @@ void ResultWriter::write(long meshId, const mesh::Q1Mesh& mesh, double time, con
   if (comm_->getRank() != 0) return;
 
   io::QuadMesh out;
-  std::map<long long, int> nodeId;
   const size_t totalCells = allKeys.size() / 4;
+  std::unordered_map<long long, int> nodeId;  // nodes numbered in the order of first appearance
+  nodeId.reserve(2 * totalCells + 64);
   std::vector<std::vector<double>> nodalOut(numNodal_);
   static const int zToCcw[4] = {0, 1, 3, 2};
   for (size_t e = 0; e < totalCells; ++e) {
