@@ -1,5 +1,6 @@
-// The adaptive membrane (paper Algorithm 5.1) on 2 ranks produces the same meshes (unknowns per
-// step, total unknowns per cycle) and the same estimates per step as on 1 rank.
+// The adaptive membrane and the adaptive bar (paper Algorithm 5.1, Examples 6.1 and 6.2) on 2 ranks
+// produce the same meshes (unknowns per step, total unknowns per cycle) and the same estimates per
+// step as on 1 rank.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,31 +19,33 @@ struct Result {
   io::CsvTable cycles, steps;
 };
 
-Result runAdaptive(RCP<const Comm> comm, const std::string& name) {
+/// Three cycles of inputs/<deckName> up to \p finalTime.
+Result runAdaptive(RCP<const Comm> comm, const std::string& name, const std::string& deckName = "membrane.xml",
+                   double finalTime = 0.1) {
   core::ParameterList deck;
-  Teuchos::updateParametersFromXmlFile(std::string(SIGNORINI_SOURCE_DIR) + "/inputs/membrane.xml",
+  Teuchos::updateParametersFromXmlFile(std::string(SIGNORINI_SOURCE_DIR) + "/inputs/" + deckName,
                                        Teuchos::outArg(deck));
-  // Past first contact (t ~ 0.05), three cycles.
-  deck.sublist("Time Integration").set("Final Time", 0.1);
+  deck.sublist("Time Integration").set("Final Time", finalTime);
   deck.sublist("Adaptivity").set("Cycles", 3);
   deck.sublist("Output").set("Write Exodus", false);
   deck.sublist("Output").set("Basename", name);
   deck.sublist("Output").set("Progress Interval", 1000000);
-  core::validateDeck(deck, adapt::AdaptiveSimulation::getValidParameters(), "membrane.xml");
+  core::validateDeck(deck, adapt::AdaptiveSimulation::getValidParameters(), deckName);
   const std::string dir = std::string(SIGNORINI_BINARY_DIR) + "/tests/output/adaptive-agreement";
-  adapt::AdaptiveSimulation sim(deck, "membrane.xml", dir, comm);
+  adapt::AdaptiveSimulation sim(deck, deckName, dir, comm);
   sim.run();
   comm->barrier();
   return {io::readCsv(dir + "/" + name + ".cycles.csv"), io::readCsv(dir + "/" + name + ".steps.csv")};
 }
 
-TEST(AdaptiveAgreement, TwoRanksGiveTheSameMeshesAndEstimatesAsOne) {
+/// Runs the deck on the world (2 ranks) and on rank 0 alone and compares cycles and steps.
+void expectAgreement(const std::string& deckName, double finalTime, const std::string& name) {
   auto world = Tpetra::getDefaultComm();
   ASSERT_EQ(world->getSize(), 2) << "run this test with mpirun -np 2";
-  const auto two = runAdaptive(world, "np2");
+  const auto two = runAdaptive(world, name + "-np2", deckName, finalTime);
   auto self = world->split(world->getRank() == 0 ? 0 : 1, 0);
   if (world->getRank() == 0) {
-    const auto one = runAdaptive(self, "np1");
+    const auto one = runAdaptive(self, name + "-np1", deckName, finalTime);
     ASSERT_EQ(one.cycles.rows.size(), 3u);
     ASSERT_EQ(two.cycles.rows.size(), 3u);
     for (size_t l = 0; l < 3; ++l) {
@@ -55,13 +58,25 @@ TEST(AdaptiveAgreement, TwoRanksGiveTheSameMeshesAndEstimatesAsOne) {
     EXPECT_GT(one.cycles.rows[2][one.cycles.column("total_dofs")], one.cycles.rows[0][one.cycles.column("total_dofs")]);
     EXPECT_LT(one.cycles.rows[2][one.cycles.column("eta")], one.cycles.rows[0][one.cycles.column("eta")]);
     ASSERT_EQ(one.steps.rows.size(), two.steps.rows.size());
+    long contactSteps = 0;
     for (size_t n = 0; n < one.steps.rows.size(); ++n) {
       EXPECT_EQ(one.steps.rows[n][one.steps.column("dofs")], two.steps.rows[n][two.steps.column("dofs")]) << n;
+      EXPECT_EQ(one.steps.rows[n][one.steps.column("active")], two.steps.rows[n][two.steps.column("active")]) << n;
+      contactSteps += one.steps.rows[n][one.steps.column("active")] > 0;
       const double e1 = one.steps.rows[n][one.steps.column("eta")], e2 = two.steps.rows[n][two.steps.column("eta")];
       EXPECT_NEAR(e1, e2, 1e-8 * std::max(e1, 1e-300)) << n;
     }
+    EXPECT_GT(contactSteps, 0);  // the compared interval includes contact
   }
   world->barrier();
+}
+
+TEST(AdaptiveAgreement, TwoRanksGiveTheSameMeshesAndEstimatesAsOne) {
+  expectAgreement("membrane.xml", 0.1, "membrane");  // past first contact (t ~ 0.05)
+}
+
+TEST(AdaptiveAgreement, TheBarOnTwoRanksGivesTheSameMeshesAndEstimatesAsOne) {
+  expectAgreement("bar.xml", 0.45e-3, "bar");  // through the first impact (0.19-0.35 ms)
 }
 
 }  // namespace
