@@ -47,9 +47,7 @@ class ElasticityEstimator {
   EstimatorResult estimate(const ElasticityEstimatorInput& in) const;
 
   /// The last s1 continuation if it lives on mesh \p meshId (else null): a guess for the next step.
-  RCP<Vector> continuationOn(long meshId) const {
-    return meshId >= 0 && continuation_.meshId == meshId ? continuation_.last : Teuchos::null;
-  }
+  RCP<Vector> continuationOn(long meshId) const { return continuation_.lastOn(meshId); }
 
  private:
   core::ParameterList params_;

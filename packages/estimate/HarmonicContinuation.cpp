@@ -107,17 +107,6 @@ double continuationNorm(const CrsMatrix& full, const RCP<const CrsMatrix>& A, co
 
 }  // namespace
 
-double harmonicContinuationNorm(const fem::Q1Assembler& scalar, const std::vector<char>& contact, const Vector& boundary,
-                                const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD) {
-  const std::vector<char>& dirichlet = scalar.dirichletFlags();
-  std::vector<char> prescribed(dirichlet.size());
-  for (size_t i = 0; i < prescribed.size(); ++i) prescribed[i] = (dirichlet[i] || contact[i]) ? 1 : 0;
-  // K + M with the Dirichlet rows and columns eliminated: v^T A v is the full H1 norm for v = 0 there.
-  const RCP<const CrsMatrix> full = scalar.assembleOperator(1.0, 1.0, 1.0, 1.0);
-  Vector d(boundary.getMap());
-  return continuationNorm(*full, withPrescribedRows(*full, prescribed), prescribed, boundary, d, solveSPD);
-}
-
 double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, const core::Expression& g, double t,
                             const std::function<double(LO)>& w, const std::vector<char>& fixed,
                             const fem::Q1Assembler* scalar,
@@ -142,12 +131,9 @@ double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, cons
   Teuchos::reduceAll(*mesh.comm(), Teuchos::REDUCE_MAX, maxLocal, Teuchos::outArg(maxGlobal));
   if (!(maxGlobal > 0)) return 0.0;
   SIGNORINI_ASSERT(static_cast<bool>(solveSPD), "s1 needs a solver for SPD systems");
-  if (!cache || meshId < 0) {
-    if (scalar) return harmonicContinuationNorm(*scalar, contact, boundary, solveSPD);
-    const fem::Q1Assembler own(mesh, fixed);
-    return harmonicContinuationNorm(own, contact, boundary, solveSPD);
-  }
-  if (cache->meshId != meshId) {
+  ContinuationCache once;  // without a cache (or mesh id) everything is built for this call only
+  if (!cache || meshId < 0) cache = &once;
+  if (cache == &once || cache->meshId != meshId) {
     cache->prescribed.resize(fixed.size());
     for (size_t i = 0; i < fixed.size(); ++i) cache->prescribed[i] = (fixed[i] || contact[i]) ? 1 : 0;
     cache->full = h1Operator ? h1Operator() : Teuchos::null;

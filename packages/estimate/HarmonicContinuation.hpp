@@ -3,7 +3,7 @@
 /// s1 = ||w||_{1/2, Gamma_C} of the paper's Remark 4.1 for nodal boundary data w on Gamma_C,
 /// evaluated as the H^1 norm of the discrete harmonic continuation: the minimiser d of
 /// ||v||_1^2 = int |grad v|^2 + v^2 over the Q1 functions with v = w at the contact nodes and
-/// v = 0 at the Dirichlet nodes of \p scalar. Every extension of w bounds s1 from above, so an
+/// v = 0 at the fixed (Dirichlet) nodes. Every extension of w bounds s1 from above, so an
 /// iterative solve approaches s1 from above.
 #include <functional>
 #include <vector>
@@ -20,14 +20,10 @@ struct ContinuationCache {
   std::vector<char> prescribed;           ///< overlap flags: contact or fixed nodes
   RCP<const CrsMatrix> full, constrained;
   RCP<Vector> last;
-};
 
-/// \param scalar    a scalar Q1 assembler on the mesh; its Dirichlet nodes hold v = 0
-/// \param contact   flags on the overlap nodes of Gamma_C (where v = w)
-/// \param boundary  w at the owned nodes (zero away from Gamma_C)
-/// \param solveSPD  solves A x = b for an SPD matrix (x holds the initial guess)
-double harmonicContinuationNorm(const fem::Q1Assembler& scalar, const std::vector<char>& contact, const Vector& boundary,
-                                const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD);
+  /// The last continuation if it lives on mesh \p id (else null).
+  RCP<Vector> lastOn(long id) const { return id >= 0 && meshId == id ? last : Teuchos::null; }
+};
 
 /// s1 = ||(g - w)_+||_{1/2, Gamma_C} for the nodal values w(i) of the constrained quantity at the
 /// owned nodes (u_h, or sign u_c for elasticity): the data (g - w)_+ at the contact nodes of

@@ -2,6 +2,8 @@
 
 #include <Tpetra_CrsMatrix.hpp>
 
+#include "Error.hpp"
+
 namespace signorini::fem {
 
 RCP<CrsMatrix> combineOnGraph(const CrsMatrix& M, double cm, const CrsMatrix& K, double ck,
@@ -41,7 +43,7 @@ Assembler::StepMatrices Assembler::assembleStepMatrices(double stiffCoeff, const
   s.K = assembleSystem(0.0, 1.0, problem);
   // Dirichlet rows keep their identity row (M and K have 1 on the diagonal there).
   s.A = combineOnGraph(*s.M, 1.0, *s.K, stiffCoeff, dirichletFlags());  // owned unknowns come first in the overlap order
-  if (s.A.is_null()) s.A = assembleSystem(1.0, stiffCoeff, problem, lumpAt);  // no common graph (not our assemblers)
+  SIGNORINI_ASSERT(!s.A.is_null(), "the assembler's matrices share one graph");
   return s;
 }
 

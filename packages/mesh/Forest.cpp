@@ -155,13 +155,6 @@ void Forest::refineMarkedBalanced(const std::vector<char>& flags) {
   // refined forest refines this closure, and refining the closure once is balanced: it is the
   // coarsest balanced refinement, i.e. p4est_balance's result.
   SIGNORINI_ASSERT(flags.size() == static_cast<size_t>(numLocalCells()), "one flag per local cell");
-  // Every cell flagged on every rank: refining all cells once keeps the forest balanced.
-  int allLocal = std::all_of(flags.begin(), flags.end(), [](char f) { return f != 0; }) ? 1 : 0, all = 0;
-  MPI_Allreduce(&allLocal, &all, 1, MPI_INT, MPI_MIN, p4est_->mpicomm);
-  if (all) {
-    refineMarked(flags);
-    return;
-  }
   p4est_ghost_t* ghost = p4est_ghost_new(p4est_, P4EST_CONNECT_FULL);
   std::vector<BalanceEdge> edges;
   p4est_iterate(p4est_, ghost, &edges, nullptr, balanceFaceEdges, balanceCornerEdges);

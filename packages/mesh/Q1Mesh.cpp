@@ -230,7 +230,7 @@ std::vector<char> Q1Mesh::balanceClosure(const std::vector<char>& flagged) const
   // cells at a node differ by at most one level, so "coarser than a flagged cell there" is that.
   Vector atNode(overlapMap_), owned(ownedMap_);
   const auto& D = cornerDofsHost;
-  for (int round = 0;; ++round) {
+  for (;;) {
     {
       auto h = atNode.getLocalViewHost(Tpetra::Access::OverwriteAll);
       Kokkos::deep_copy(h, 0.0);

@@ -94,7 +94,7 @@ TEST(Forest, BalancedRefinementEqualsRefinementThenP4estBalance) {
   a.forest->balance();
   a.forest->partition();
   long long forced = 0;  // cells the balance added beyond the flagged refinement, over all seeds
-  for (int seed = 0; seed < 7; ++seed) {  // seed 6: every cell (the uniform strategy's shortcut)
+  for (int seed = 0; seed < 7; ++seed) {  // seed 6: every cell
     mesh::Forest viaP4est(*a.forest), viaClosure(*a.forest);
     std::vector<char> flags;
     p4est_t* p = a.forest->p4est();
