@@ -83,6 +83,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
     for (int l = 0; l < cycles; ++l) {
       const auto start = std::chrono::steady_clock::now();
       std::vector<std::shared_ptr<mesh::Forest>> next(nSteps);
+      const bool lastPlanned = l == cycles - 1;  // no next cycle: nothing to mark or refine
       double etaMax = 0;
       const double s1Tolerance = deck_.sublist("Estimator").get<double>("S1 Relative Tolerance");
       dynamics::StepHook hook = [&](const dynamics::StepView& s) {
@@ -92,7 +93,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         // without their set-up per call. (MueLu here, set up once per mesh, broke down on the
         // membrane deck's second cycle: non-positive p^T A p in Belos CG.)
         auto solveSPD = [&](const RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
-          estimate::solveJacobiCG(*A, b, x, s1Tolerance, deck_.sublist("Linear Solver").get<int>("Maximum Iterations"));
+          solvers::solveJacobiCG(*A, b, x, s1Tolerance, deck_.sublist("Linear Solver").get<int>("Maximum Iterations"));
         };
         // The previous step's continuation (interpolated by the time stepper) starts s1 on a new mesh.
         const Vector* guess = s.carried.empty() ? nullptr : s.carried[0].get();
@@ -106,6 +107,14 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                                     s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor, s.lambda,
                                     solveSPD, s.meshId, guess});
         etaMax = std::max(etaMax, r.eta);
+        std::vector<double> indicator(r.cellIndicator.size());
+        for (size_t e = 0; e < indicator.size(); ++e) indicator[e] = std::sqrt(r.cellIndicator[e]);
+        RCP<Vector> continuation =
+            scalar ? estimator.continuationOn(s.meshId) : elasticityEstimator.continuationOn(s.meshId);
+        if (continuation.is_null() && guess) continuation = s.carried[0];  // no s1 this step: keep the guess
+        dynamics::StepExtras extras{{r.etaStar, r.s0, r.s1, r.eta}, indicator, {}};
+        if (!continuation.is_null()) extras.carry.push_back(continuation);
+        if (lastPlanned) return extras;
         // T^n_{l+1}: T^n_l refined by the strategy, 2:1 balanced (Algorithm 5.2).
         std::vector<char> flags;
         if (strategy == "uniform")
@@ -128,17 +137,9 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         refined->partition();
         const int n = s.step;
         next[n - 1] = (n > 1 && next[n - 2]->sameCells(*refined)) ? next[n - 2] : refined;
-        std::vector<double> indicator(r.cellIndicator.size());
-        for (size_t e = 0; e < indicator.size(); ++e) indicator[e] = std::sqrt(r.cellIndicator[e]);
-        RCP<Vector> continuation =
-            scalar ? estimator.continuationOn(s.meshId) : elasticityEstimator.continuationOn(s.meshId);
-        if (continuation.is_null() && guess) continuation = s.carried[0];  // no s1 this step: keep the guess
-        dynamics::StepExtras extras{{r.etaStar, r.s0, r.s1, r.eta}, indicator, {}};
-        if (!continuation.is_null()) extras.carry.push_back(continuation);
         return extras;
       };
       dynamics::PassOptions options;
-      const bool lastPlanned = l == cycles - 1;
       const std::string& outBase = sim_->outputBase();
       options.basename = lastPlanned ? "" : outBase.substr(outBase.find_last_of('/') + 1) + ".cycle" + std::to_string(l);
       options.writeExodus = lastPlanned || ap.get<bool>("Write All Cycles");

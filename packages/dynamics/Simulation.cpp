@@ -20,6 +20,7 @@
 #include "CsvWriter.hpp"
 #include "Error.hpp"
 #include "Forest.hpp"
+#include "JacobiCG.hpp"
 #include "LinearSolver.hpp"
 #include "MpiComm.hpp"
 #include "Newmark.hpp"
@@ -213,10 +214,6 @@ struct Simulation::Impl {
     if (auto* elasticity = dynamic_cast<const fem::ElasticityAssembler*>(d->assembler.get()))
       d->solver->setNearNullspace(elasticity->rigidBodyModes(), 2);
     d->solver->setOperator(d->A, d->courant);
-    auto massParams = deck.sublist("Linear Solver");
-    massParams.set("Preconditioner", "Jacobi");
-    d->massSolver = std::make_unique<solvers::LinearSolver>(massParams, comm);
-    d->massSolver->setOperator(d->M, 0.0);
     if (problem->hasObstacle) {
       const auto size = deck.sublist("Contact").get<std::string>("Multiplier Segments") == "H = h"
                             ? fem::ContactCoupling::SegmentSize::OneEdge
@@ -243,12 +240,25 @@ struct Simulation::Impl {
     return d;
   }
 
+  /// The mass solver of d (Belos CG + Jacobi with the deck's tolerance), set up on first use: an
+  /// adaptive step needs none (the transfer runs its own Jacobi CG).
+  solvers::LinearSolver& massSolver(Discretisation& d) {
+    if (!d.massSolver) {
+      auto scope = timers.scope("preconditioner");
+      auto massParams = deck.sublist("Linear Solver");
+      massParams.set("Preconditioner", "Jacobi");
+      d.massSolver = std::make_unique<solvers::LinearSolver>(massParams, comm);
+      d.massSolver->setOperator(d.M, 0.0);
+    }
+    return *d.massSolver;
+  }
+
   /// L2 projection of an expression at t = 0 (M_rho x = int rho f phi).
   void projectL2(Discretisation& d, const core::ExpressionList& f, Vector& out) {
     Vector b(d.assembler->ownedMap());
     d.assembler->assembleLoad(f, 0.0, problem->density, b);
     out.putScalar(0.0);
-    d.massSolver->solve(b, out);
+    massSolver(d).solve(b, out);
   }
 
   /// Initial state on d: u0, v0 projected, a0 from (rho a0, phi) + a(u0, phi) = (f(0), phi) + Neumann.
@@ -261,7 +271,7 @@ struct Simulation::Impl {
     d.K->apply(u, Ku);
     rhs.update(-1.0, Ku, 1.0);
     a.putScalar(0.0);
-    d.massSolver->solve(rhs, a);
+    massSolver(d).solve(rhs, a);
   }
 
   /// Throws a user error if u penetrates the obstacle at t = 0.
@@ -296,7 +306,7 @@ struct Simulation::Impl {
 
   /// Moves \p fields (owned vectors on the old mesh; here the step's two Newmark predictors,
   /// which by linearity of I_h equal the predictors of I_h u, I_h v, I_h a) to the new
-  /// discretisation: the L2 projection M x = int u_old phi, all fields in one Krylov run started
+  /// discretisation: the L2 projection M x = int u_old phi, each field by Jacobi CG started
   /// from their interpolants, or the interpolants alone. The multipliers follow the segment
   /// midpoints (they only warm-start the next QP).
   /// \p carried (scalar fields on the old mesh's owned nodes) are interpolated along.
@@ -337,7 +347,11 @@ struct Simulation::Impl {
         B.getVectorNonConst(f)->update(problem->density, *byField(loads, f), 0.0);
         to.assembler->zeroDirichlet(*B.getVectorNonConst(f));
       }
-      to.massSolver->solve(B, X);
+      // Jacobi CG column by column: the mass matrix is well conditioned, Belos' set-up per call is not needed.
+      const auto& solverParams = deck.sublist("Linear Solver");
+      for (int f = 0; f < nf; ++f)
+        solvers::solveJacobiCG(*to.M, *B.getVector(f), *X.getVectorNonConst(f),
+                               solverParams.get<double>("Relative Tolerance"), solverParams.get<int>("Maximum Iterations"));
     }
     for (int f = 0; f < nf; ++f) {
       fields[f] = Teuchos::rcp(new Vector(to.assembler->ownedMap()));
@@ -589,7 +603,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
           d->M->apply(pred, Mpred);
           d->assembler->zeroDirichlet(Mpred);
           std::vector<double> mu(d->coupling->numSegments(), 0.0), gapPred;
-          d->projection->solve(*d->massSolver, *d->coupling, Mpred, d->coupling->weightedObstacle(I.problem->obstacle, t),
+          d->projection->solve(I.massSolver(*d), *d->coupling, Mpred, d->coupling->weightedObstacle(I.problem->obstacle, t),
                                mu, pred, gapPred);
         }
         d->M->apply(pred, F);
@@ -629,7 +643,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       if (hook) {
         auto scope = I.timers.scope("estimator");
         extras = hook(StepView{n, t, k, beta, *d->forest, *d->mesh, *d->assembler, d->coupling.get(), *I.problem, *u,
-                               pred, lambda, *d->massSolver, d->id, carried,
+                               pred, lambda, d->id, carried,
                                d->lumpedMass ? Teuchos::null : RCP<const CrsMatrix>(d->M), d->K});
         carried = extras.carry;
       }

@@ -43,7 +43,6 @@ struct StepView {
   const Vector& u;                       ///< u_h^n
   const Vector& predictor;               ///< I_h u^{n-1} + k I_h v^{n-1} + (1/2 - beta) k^2 I_h a^{n-1}
   const std::vector<double>& lambda;     ///< scaled QP multipliers
-  solvers::LinearSolver& spdSolver;      ///< a CG solver for SPD systems on this mesh (Jacobi)
   long meshId;                           ///< differs between any two meshes of the run
   /// StepExtras::carry of the previous step, on this step's mesh (nodal interpolation when the mesh
   /// changed); empty in the first step.

@@ -1,5 +1,7 @@
 #include "Assembler.hpp"
 
+#include <tuple>
+
 #include <Tpetra_CrsMatrix.hpp>
 
 #include "Error.hpp"
@@ -39,8 +41,7 @@ RCP<CrsMatrix> combineOnGraph(const CrsMatrix& M, double cm, const CrsMatrix& K,
 Assembler::StepMatrices Assembler::assembleStepMatrices(double stiffCoeff, const ProblemData& problem,
                                                         const std::vector<char>& lumpAt) const {
   StepMatrices s;
-  s.M = assembleSystem(1.0, 0.0, problem, lumpAt);
-  s.K = assembleSystem(0.0, 1.0, problem);
+  std::tie(s.M, s.K) = assembleMassAndStiffness(problem, lumpAt);
   // Dirichlet rows keep their identity row (M and K have 1 on the diagonal there).
   s.A = combineOnGraph(*s.M, 1.0, *s.K, stiffCoeff, dirichletFlags());  // owned unknowns come first in the overlap order
   SIGNORINI_ASSERT(!s.A.is_null(), "the assembler's matrices share one graph");

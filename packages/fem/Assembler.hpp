@@ -70,6 +70,13 @@ class Assembler {
   /// Component \p c of u_h at a point (every rank gets the value); NaN outside the mesh.
   virtual double evaluateComponent(const Vector& uOverlap, double x, double y, int c) const = 0;
 
+  /// M (lumped at \p lumpAt) and K of assembleSystem(1, 0, ...) and assembleSystem(0, 1, ...); an
+  /// assembler may compute both in one pass over the cells.
+  virtual std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> assembleMassAndStiffness(const ProblemData& problem,
+                                                                             const std::vector<char>& lumpAt) const {
+    return {assembleSystem(1.0, 0.0, problem, lumpAt), assembleSystem(0.0, 1.0, problem)};
+  }
+
   /// The step's matrices on one graph: M (mass, lumped at \p lumpAt), K (stiffness) and
   /// A = M + stiffCoeff K (paper (3.7)), Dirichlet rows and columns the identity in each. A is
   /// formed from the values of M and K (two assemblies instead of three).

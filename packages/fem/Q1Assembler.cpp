@@ -28,21 +28,45 @@ Q1Assembler::Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet)
 
 RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,
                                              const std::vector<char>& lumpMassAt) const {
-  const auto lump = deviceFlags(lumpMassAt, dirichlet_.size(), "lump");
   auto A = Teuchos::rcp(new Matrix(graph_));
-  A->beginAssembly();
+  assembleInto(*A, *A, massCoeff * rho, stiffCoeff * kappa, lumpMassAt);
+  setDirichletRows(*A);
+  return A;
+}
+
+std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> Q1Assembler::assembleMassAndStiffness(const ProblemData& problem,
+                                                                                const std::vector<char>& lumpAt) const {
+  auto M = Teuchos::rcp(new Matrix(graph_)), K = Teuchos::rcp(new Matrix(graph_));
+  assembleInto(*M, *K, problem.density, problem.stiffness, lumpAt);
+  setDirichletRows(*M);
+  setDirichletRows(*K);
+  return {M, K};
+}
+
+void Q1Assembler::assembleInto(CrsMatrix& firstMatrix, CrsMatrix& secondMatrix, double cm, double ck,
+                               const std::vector<char>& lumpMassAt) const {
+  auto& first = static_cast<Matrix&>(firstMatrix);
+  auto& second = static_cast<Matrix&>(secondMatrix);
+  const auto lump = deviceFlags(lumpMassAt, dirichlet_.size(), "lump");
+  const bool same = &first == &second;
+  first.beginAssembly();
+  if (!same) second.beginAssembly();
   {
     // The owned+shared matrix may order its columns differently from the overlap map; the
     // translation is the same for every matrix on graph_.
     if (toCol_.extent(0) != mesh_.overlapMap()->getNodeNumElements())
-      toCol_ = overlapToColumns(*mesh_.overlapMap(), *A->getColMap());
+      toCol_ = overlapToColumns(*mesh_.overlapMap(), *first.getColMap());
     const auto toCol = toCol_;
-    auto local = A->getLocalMatrixDevice();
+    const auto one = first.getLocalMatrixDevice();
+    const auto two = second.getLocalMatrixDevice();
+    SIGNORINI_ASSERT(one.graph.entries.data() == two.graph.entries.data(), "both matrices on graph_");
+    const auto rowPtr = one.graph.row_map;
+    const auto cols = one.graph.entries;
+    const auto v1 = one.values, v2 = two.values;
     const auto X = mesh_.cornerCoords;
     const auto dofs = mesh_.cornerDofs;
     const auto wts = mesh_.cornerWeights;
     const auto dir = dirichletView_;
-    const double cm = massCoeff * rho, ck = stiffCoeff * kappa;
     Kokkos::parallel_for(
         "signorini::assembleOperator", Kokkos::RangePolicy<ExecSpace>(0, mesh_.numLocalCells()),
         KOKKOS_LAMBDA(const LO e) {
@@ -58,43 +82,53 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
                   Ke[a][b] += w * ck * (gx[a] * gx[b] + gy[a] * gy[b]);
                 }
             }
+          auto add = [&](const decltype(v1)& values, size_t at, double v) {
+            if (kAtomicScatter)
+              Kokkos::atomic_add(&values(at), v);
+            else
+              values(at) += v;
+          };
           for (int a = 0; a < 4; ++a)
             for (int ka = 0; ka < 2; ++ka) {
               const LO row = dofs(e, a, ka);
               if (row < 0 || dir(row)) continue;
+              const auto rowBegin = rowPtr(row), rowEnd = rowPtr(row + 1);
+              auto offset = [&](LO col) {
+                auto at = rowBegin;
+                while (at < rowEnd && cols(at) != col) ++at;
+                return at;
+              };
               for (int b = 0; b < 4; ++b)
                 for (int kb = 0; kb < 2; ++kb) {
                   const LO dof = dofs(e, b, kb);
                   if (dof < 0 || dir(dof)) continue;
                   const double wab = wts(e, a, ka) * wts(e, b, kb);
-                  LO col = toCol(dof);
-                  double v = wab * Ke[a][b];
-                  double m = wab * Me[a][b];
-                  if (row != dof && (lump(row) || lump(dof))) {  // move the mass coupling to the diagonal
-                    LO diag = toCol(row);
-                    local.sumIntoValues(row, &diag, 1, &m, false, kAtomicScatter);
-                  } else {
-                    v += m;
-                  }
-                  local.sumIntoValues(row, &col, 1, &v, false, kAtomicScatter);
+                  const auto at = offset(toCol(dof));
+                  const double m = wab * Me[a][b];
+                  // lumped: the mass coupling moves to the diagonal
+                  const auto massAt = row != dof && (lump(row) || lump(dof)) ? offset(toCol(row)) : at;
+                  add(v1, massAt, m);
+                  add(v2, at, wab * Ke[a][b]);
                 }
             }
         });
   }
-  A->endAssembly();
-  A->beginModify();
-  {
-    const auto owned = mesh_.ownedMap();
-    const auto colMap = A->getColMap();
-    for (LO i = 0; i < static_cast<LO>(owned->getNodeNumElements()); ++i)
-      if (dirichlet_[i]) {  // overlap ids of owned nodes equal their owned ids
-        const LO col = colMap->getLocalElement(owned->getGlobalElement(i));
-        const double one = 1.0;
-        A->replaceLocalValues(i, 1, &one, &col);
-      }
-  }
-  A->endModify();
-  return A;
+  first.endAssembly();
+  if (!same) second.endAssembly();
+}
+
+void Q1Assembler::setDirichletRows(CrsMatrix& matrix) const {
+  auto& A = static_cast<Matrix&>(matrix);
+  A.beginModify();
+  const auto owned = mesh_.ownedMap();
+  const auto colMap = A.getColMap();
+  for (LO i = 0; i < static_cast<LO>(owned->getNodeNumElements()); ++i)
+    if (dirichlet_[i]) {  // overlap ids of owned nodes equal their owned ids
+      const LO col = colMap->getLocalElement(owned->getGlobalElement(i));
+      const double one = 1.0;
+      A.replaceLocalValues(i, 1, &one, &col);
+    }
+  A.endModify();
 }
 
 namespace {

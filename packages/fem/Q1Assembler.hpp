@@ -51,6 +51,10 @@ class Q1Assembler : public Assembler {
   /// the diagonal (row sums kept): lumped mass on the contact boundary against chattering (DESIGN 1.6).
   RCP<CrsMatrix> assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,
                                   const std::vector<char>& lumpMassAt = {}) const;
+  /// M_rho (lumped at \p lumpAt) and K_kappa in one pass over the cells (same values as
+  /// assembleOperator(1, 0, ...) and assembleOperator(0, 1, ...)).
+  std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> assembleMassAndStiffness(const ProblemData& problem,
+                                                                     const std::vector<char>& lumpAt) const override;
   /// out (owned) = scale * int f(., t) phi_i dx, or += if \p accumulate.
   void assembleLoad(const core::Expression& f, double t, double scale, Vector& out, bool accumulate = false) const;
   /// out (owned) += scale * int_{edges in mask} q(., t) phi_i ds.
@@ -74,6 +78,13 @@ class Q1Assembler : public Assembler {
   std::vector<char> dirichlet_;
   Kokkos::View<int*, DeviceType> dirichletView_;
   RCP<Graph> graph_;
+  /// Cell kernel shared by assembleOperator and assembleMassAndStiffness: mass part times cm into
+  /// \p first, stiffness part times ck into \p second (the same matrix for a combined operator);
+  /// both are Tpetra::FECrsMatrix on graph_.
+  void assembleInto(CrsMatrix& first, CrsMatrix& second, double cm, double ck,
+                    const std::vector<char>& lumpMassAt) const;
+  /// Identity rows for the Dirichlet nodes (after the assembly; A is an FECrsMatrix on graph_).
+  void setDirichletRows(CrsMatrix& A) const;
   mutable Kokkos::View<LO*, DeviceType> toCol_;  ///< overlap index -> column of the assembled matrices
   RCP<const Tpetra::Export<LO, GO, Node>> exporter_;
   RCP<const Tpetra::Import<LO, GO, Node>> importer_;

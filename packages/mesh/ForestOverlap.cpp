@@ -51,54 +51,62 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
   }
   marker[size] = {static_cast<int>(src->connectivity->num_trees), 0};
 
-  // Pack every local source cell for each target rank whose range it intersects.
+  // Every local source cell goes to each target rank whose range it intersects: counted first, then
+  // packed in place (one buffer; on one rank it is the received buffer itself).
   const int record = 4 + payloadSize;  // tree, x-id, y-id, level, payload (as doubles)
-  std::vector<std::vector<double>> out(size);
   const double root = static_cast<double>(P4EST_ROOT_LEN);
-  int e = 0;
-  for (p4est_topidx_t t = src->first_local_tree; t <= src->last_local_tree; ++t) {
-    p4est_tree_t* tree = p4est_tree_array_index(src->trees, t);
-    for (size_t qi = 0; qi < tree->quadrants.elem_count; ++qi, ++e) {
-      const auto* q = p4est_quadrant_array_index(&tree->quadrants, qi);
-      const uint64_t f = firstId(*q), l = f + span(q->level) - 1;
-      // Target ranks r with marker[r] <= (t, l) and marker[r+1] > (t, f), skipping empty ranks.
-      const auto pos = std::make_pair(static_cast<int>(t), f);
-      int r = static_cast<int>(std::upper_bound(marker.begin(), marker.end(), pos,
-                                                [](const auto& a, const auto& b) {
-                                                  return less(a.first, a.second, b.first, b.second);
-                                                }) -
-                               marker.begin()) - 1;
-      for (r = std::max(r, 0); r < size && !less(static_cast<int>(t), l, marker[r].first, marker[r].second); ++r) {
-        const bool empty = !less(marker[r].first, marker[r].second, marker[r + 1].first, marker[r + 1].second);
-        if (empty || !less(static_cast<int>(t), f, marker[r + 1].first, marker[r + 1].second)) continue;
-        auto& o = out[r];
-        o.push_back(static_cast<double>(t));
-        o.push_back(q->x / root);
-        o.push_back(q->y / root);
-        o.push_back(q->level);
-        for (int k = 0; k < payloadSize; ++k) o.push_back(payload[static_cast<size_t>(e) * payloadSize + k]);
+  auto forEachDestination = [&](auto&& visit) {
+    int e = 0;
+    for (p4est_topidx_t t = src->first_local_tree; t <= src->last_local_tree; ++t) {
+      p4est_tree_t* tree = p4est_tree_array_index(src->trees, t);
+      for (size_t qi = 0; qi < tree->quadrants.elem_count; ++qi, ++e) {
+        const auto* q = p4est_quadrant_array_index(&tree->quadrants, qi);
+        const uint64_t f = firstId(*q), l = f + span(q->level) - 1;
+        // Target ranks r with marker[r] <= (t, l) and marker[r+1] > (t, f), skipping empty ranks.
+        const auto pos = std::make_pair(static_cast<int>(t), f);
+        int r = static_cast<int>(std::upper_bound(marker.begin(), marker.end(), pos,
+                                                  [](const auto& a, const auto& b) {
+                                                    return less(a.first, a.second, b.first, b.second);
+                                                  }) -
+                                 marker.begin()) - 1;
+        for (r = std::max(r, 0); r < size && !less(static_cast<int>(t), l, marker[r].first, marker[r].second); ++r) {
+          const bool empty = !less(marker[r].first, marker[r].second, marker[r + 1].first, marker[r + 1].second);
+          if (empty || !less(static_cast<int>(t), f, marker[r + 1].first, marker[r + 1].second)) continue;
+          visit(r, t, *q, e);
+        }
       }
     }
+  };
+  std::vector<int> sendCounts(size, 0), recvCounts(size), sendOff(size + 1, 0), recvOff(size + 1, 0);
+  forEachDestination([&](int r, p4est_topidx_t, const p4est_quadrant_t&, int) { sendCounts[r] += record; });
+  for (int r = 0; r < size; ++r) sendOff[r + 1] = sendOff[r] + sendCounts[r];
+  std::vector<double> sendBuf(static_cast<size_t>(sendOff[size]));
+  std::vector<int> fill(sendOff.begin(), sendOff.end() - 1);
+  forEachDestination([&](int r, p4est_topidx_t t, const p4est_quadrant_t& q, int e) {
+    double* o = &sendBuf[static_cast<size_t>(fill[r])];
+    fill[r] += record;
+    o[0] = static_cast<double>(t);
+    o[1] = q.x / root;
+    o[2] = q.y / root;
+    o[3] = q.level;
+    std::copy_n(payload.begin() + static_cast<size_t>(e) * payloadSize, payloadSize, o + 4);
+  });
+  if (size == 1) {
+    buffer_ = std::move(sendBuf);
+  } else {
+    MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, comm);
+    for (int r = 0; r < size; ++r) recvOff[r + 1] = recvOff[r] + recvCounts[r];
+    buffer_.resize(static_cast<size_t>(recvOff[size]));
+    MPI_Alltoallv(sendBuf.data(), sendCounts.data(), sendOff.data(), MPI_DOUBLE, buffer_.data(), recvCounts.data(),
+                  recvOff.data(), MPI_DOUBLE, comm);
   }
-  std::vector<int> sendCounts(size), recvCounts(size), sendOff(size, 0), recvOff(size, 0);
-  for (int r = 0; r < size; ++r) sendCounts[r] = static_cast<int>(out[r].size());
-  MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, comm);
-  for (int r = 1; r < size; ++r) {
-    sendOff[r] = sendOff[r - 1] + sendCounts[r - 1];
-    recvOff[r] = recvOff[r - 1] + recvCounts[r - 1];
-  }
-  std::vector<double> sendBuf(sendOff[size - 1] + sendCounts[size - 1]);
-  for (int r = 0; r < size; ++r) std::copy(out[r].begin(), out[r].end(), sendBuf.begin() + sendOff[r]);
-  std::vector<double> recvBuf(recvOff[size - 1] + recvCounts[size - 1]);
-  MPI_Alltoallv(sendBuf.data(), sendCounts.data(), sendOff.data(), MPI_DOUBLE, recvBuf.data(), recvCounts.data(),
-                recvOff.data(), MPI_DOUBLE, comm);
 
-  // Unpack and sort by position.
-  const size_t n = recvBuf.size() / record;
+  // Sort by position (the records stay where they are; the payload pointers point into them).
+  const size_t n = buffer_.size() / record;
   std::vector<size_t> order(n);
   std::vector<Key> keys(n);
   for (size_t i = 0; i < n; ++i) {
-    const double* rec = &recvBuf[i * record];
+    const double* rec = &buffer_[i * record];
     p4est_quadrant_t q;
     P4EST_QUADRANT_INIT(&q);
     q.level = static_cast<int8_t>(rec[3]);
@@ -111,21 +119,20 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
   auto byPosition = [&](size_t a, size_t b) { return less(keys[a].tree, keys[a].first, keys[b].tree, keys[b].first); };
   // Usually sorted already: each rank sends its cells in curve order, and the ranks' parts follow the curve.
   if (!std::is_sorted(order.begin(), order.end(), byPosition)) std::sort(order.begin(), order.end(), byPosition);
-  receivedPayload_.resize(n * static_cast<size_t>(payloadSize));
-  received_.resize(n);
-  receivedCells_.resize(n);
+  received_.reserve(n);
+  receivedCells_.reserve(n);
   for (size_t k = 0; k < n; ++k) {
     const size_t i = order[k];
-    const double* rec = &recvBuf[i * record];
-    received_[k] = keys[i];
-    std::copy(rec + 4, rec + record, receivedPayload_.begin() + k * payloadSize);
+    const double* rec = &buffer_[i * record];
+    received_.push_back(keys[i]);
     const int level = static_cast<int>(rec[3]);
-    receivedCells_[k] = {keys[i].tree, level, rec[1], rec[2], 1.0 / (1 << level),
-                         payloadSize ? &receivedPayload_[k * payloadSize] : nullptr};
+    receivedCells_.push_back({keys[i].tree, level, rec[1], rec[2], 1.0 / (1 << level), payloadSize ? rec + 4 : nullptr});
   }
 
   // For each local target cell, the received cells whose range intersects its range. The target
   // cells come in curve order, so each search starts where the previous one ended.
+  targetRange_.reserve(static_cast<size_t>(dst->local_num_quadrants));
+  targetCells_.reserve(static_cast<size_t>(dst->local_num_quadrants));
   auto searchFrom = received_.begin();
   for (p4est_topidx_t t = dst->first_local_tree; t <= dst->last_local_tree; ++t) {
     p4est_tree_t* tree = p4est_tree_array_index(dst->trees, t);

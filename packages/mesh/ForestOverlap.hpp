@@ -52,7 +52,7 @@ class ForestOverlap {
   int payloadSize_;
   std::vector<Key> received_;          // source cells received, sorted by (tree, first)
   std::vector<OverlapCell> receivedCells_;
-  std::vector<double> receivedPayload_;
+  std::vector<double> buffer_;         // the received records (tree, x, y, level, payload), in arrival order
   std::vector<std::pair<size_t, size_t>> targetRange_;  // [begin, end) in received_ per target cell
   std::vector<OverlapCell> targetCells_;
 };

@@ -181,9 +181,10 @@ TEST(StepMatrices, EqualSeparateAssembly) {
       EXPECT_EQ(s.A->getLocalMatrixDevice().graph.entries.data(), s.K->getLocalMatrixDevice().graph.entries.data());
       const auto A = asmb->assembleSystem(1.0, c, problem, lump);
       const auto M = asmb->assembleSystem(1.0, 0.0, problem, lump);
+      const auto K = asmb->assembleSystem(0.0, 1.0, problem);
       Vector x(asmb->ownedMap()), y(asmb->ownedMap()), z(asmb->ownedMap());
       x.randomize();
-      for (const auto& [mine, reference] : {std::pair{s.A, A}, std::pair{s.M, M}}) {
+      for (const auto& [mine, reference] : {std::pair{s.A, A}, std::pair{s.M, M}, std::pair{s.K, K}}) {
         mine->apply(x, y);
         reference->apply(x, z);
         z.update(-1.0, y, 1.0);

@@ -9,7 +9,7 @@
 
 #include "Error.hpp"
 
-namespace signorini::estimate {
+namespace signorini::solvers {
 
 namespace {
 /// Sum over all ranks of n local partial sums.
@@ -47,6 +47,10 @@ int solveJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativ
         start[0], start[1]);
   }
   sumAll(comm, start);
+  if (start[0] == 0.0) {
+    x.putScalar(0.0);
+    return 0;
+  }
   const double target = relativeTolerance * std::sqrt(start[0]);
   double rz = start[1];
   {  // the initial residual may already be small enough
@@ -92,4 +96,4 @@ int solveJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativ
                           std::to_string(maxIterations) + " iterations");
 }
 
-}  // namespace signorini::estimate
+}  // namespace signorini::solvers
