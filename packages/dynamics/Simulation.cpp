@@ -329,11 +329,7 @@ struct Simulation::Impl {
     };
     const auto interpolants = t.interpolate();
     for (size_t c = 0; c < carried.size(); ++c) carried[c] = interpolants[nParts + c];
-    MultiVector X(to.assembler->ownedMap(), nf);
-    for (int f = 0; f < nf; ++f) {
-      X.getVectorNonConst(f)->assign(*byField(interpolants, f));
-      to.assembler->zeroDirichlet(*X.getVectorNonConst(f));
-    }
+    std::vector<RCP<Vector>> loads;
     if (!interpolate) {
       const auto* scalar = dynamic_cast<const fem::Q1Assembler*>(to.assembler.get());
       std::unique_ptr<fem::Q1Assembler> nodal;  // vector problems: loads per component, no Dirichlet rows
@@ -341,21 +337,20 @@ struct Simulation::Impl {
         nodal = std::make_unique<fem::Q1Assembler>(*to.mesh, std::vector<char>(to.mesh->overlapMap()->getNodeNumElements(), 0));
         scalar = nodal.get();
       }
-      const auto loads = t.projectionLoads(*scalar, nParts);
-      MultiVector B(to.assembler->ownedMap(), nf);
-      for (int f = 0; f < nf; ++f) {  // M_rho x = rho int u_old phi
-        B.getVectorNonConst(f)->update(problem->density, *byField(loads, f), 0.0);
-        to.assembler->zeroDirichlet(*B.getVectorNonConst(f));
-      }
-      // Jacobi CG column by column: the mass matrix is well conditioned, Belos' set-up per call is not needed.
-      const auto& solverParams = deck.sublist("Linear Solver");
-      for (int f = 0; f < nf; ++f)
-        solvers::solveJacobiCG(*to.M, *B.getVector(f), *X.getVectorNonConst(f),
-                               solverParams.get<double>("Relative Tolerance"), solverParams.get<int>("Maximum Iterations"));
+      loads = t.projectionLoads(*scalar, nParts);
     }
+    const auto& solverParams = deck.sublist("Linear Solver");
     for (int f = 0; f < nf; ++f) {
-      fields[f] = Teuchos::rcp(new Vector(to.assembler->ownedMap()));
-      fields[f]->assign(*X.getVector(f));
+      auto x = byField(interpolants, f);
+      to.assembler->zeroDirichlet(*x);
+      if (!interpolate) {  // M_rho x = rho int u_old phi by Jacobi CG (M is well conditioned: no Belos set-up per call)
+        auto b = byField(loads, f);
+        b->scale(problem->density);
+        to.assembler->zeroDirichlet(*b);
+        solvers::solveJacobiCG(*to.M, *b, *x, solverParams.get<double>("Relative Tolerance"),
+                               solverParams.get<int>("Maximum Iterations"));
+      }
+      fields[f] = x;
     }
     if (from.coupling && to.coupling) {
       const auto& oldMid = from.coupling->segmentMidpoint();

@@ -96,6 +96,7 @@ void Q1Assembler::assembleInto(CrsMatrix& firstMatrix, CrsMatrix& secondMatrix, 
               auto offset = [&](LO col) {
                 auto at = rowBegin;
                 while (at < rowEnd && cols(at) != col) ++at;
+                if (at == rowEnd) Kokkos::abort("signorini::assembleOperator: coupling missing from the Q1 graph");
                 return at;
               };
               for (int b = 0; b < 4; ++b)

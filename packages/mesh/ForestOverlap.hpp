@@ -36,6 +36,8 @@ class ForestOverlap {
   /// \param payload  payloadSize doubles per local source cell (local cell order); may be empty
   ///                 when payloadSize is 0.
   ForestOverlap(const Forest& source, const Forest& target, const std::vector<double>& payload, int payloadSize);
+  ForestOverlap(const ForestOverlap&) = delete;  ///< the payload pointers point into buffer_
+  ForestOverlap& operator=(const ForestOverlap&) = delete;
 
   /// The source cells overlapping local target cell e, in curve order (the range and the payload
   /// pointers stay valid as long as this object lives).

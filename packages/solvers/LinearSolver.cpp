@@ -112,34 +112,13 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
 int LinearSolver::solve(const Vector& b, Vector& x) {
   auto& I = *impl_;
   SIGNORINI_ASSERT(!I.A.is_null(), "solve() before setOperator()");
+  ++I.solves;
   if (b.norm2() == 0.0) {
-    ++I.solves;
     x.putScalar(0.0);
     return 0;
   }
-  return solveColumns(Teuchos::rcpFromRef(b), Teuchos::rcpFromRef(x), 1);
-}
-
-int LinearSolver::solve(const MultiVector& B, MultiVector& X) {
-  auto& I = *impl_;
-  SIGNORINI_ASSERT(!I.A.is_null(), "solve() before setOperator()");
-  const size_t n = B.getNumVectors();
-  SIGNORINI_ASSERT(X.getNumVectors() == n, "as many solutions as right-hand sides");
-  std::vector<double> norms(n);
-  B.norm2(Teuchos::ArrayView<double>(norms));
-  if (std::find(norms.begin(), norms.end(), 0.0) != norms.end()) {  // the relative tolerance needs b != 0
-    int its = 0;
-    for (size_t j = 0; j < n; ++j) its = std::max(its, solve(*B.getVector(j), *X.getVectorNonConst(j)));
-    return its;
-  }
-  return solveColumns(Teuchos::rcpFromRef(B), Teuchos::rcpFromRef(X), static_cast<int>(n));
-}
-
-int LinearSolver::solveColumns(const RCP<const MultiVector>& B, const RCP<MultiVector>& X, int columns) {
-  auto& I = *impl_;
-  I.solves += columns;
-  I.problem->setLHS(X);
-  I.problem->setRHS(B);
+  I.problem->setLHS(Teuchos::rcpFromRef(x));
+  I.problem->setRHS(Teuchos::rcpFromRef(b));
   I.problem->setProblem();
   I.solver->setProblem(I.problem);
   const Belos::ReturnType ret = I.solver->solve();

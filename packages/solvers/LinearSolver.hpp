@@ -29,9 +29,6 @@ class LinearSolver {
   /// Solves A x = b to the relative tolerance ||b - A x|| <= tol ||b||, starting from x.
   /// Returns the number of iterations; throws core::SolverError if not converged.
   int solve(const Vector& b, Vector& x);
-  /// Solves A X = B for all columns in one Krylov run (one operator application per iteration for
-  /// all of them), each to ||b_j - A x_j|| <= tol ||b_j||, starting from X. Returns the iterations.
-  int solve(const MultiVector& B, MultiVector& X);
   /// Name of the preconditioner in use ("MueLu", "Jacobi" or "none").
   const std::string& preconditioner() const;
   double relativeTolerance() const;
@@ -39,7 +36,6 @@ class LinearSolver {
   long totalIterations() const;
 
  private:
-  int solveColumns(const RCP<const MultiVector>& B, const RCP<MultiVector>& X, int columns);
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
