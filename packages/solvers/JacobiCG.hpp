@@ -2,8 +2,8 @@
 /// \file JacobiCG.hpp
 /// A lean Jacobi-preconditioned conjugate gradient method for the small SPD solves inside an
 /// adaptive step (the estimator's s1, the mass solve of the L2 projection between meshes): one
-/// matrix apply, three fused vector kernels and two reductions per iteration, no solver or
-/// preconditioner objects to set up per call.
+/// matrix apply, three vector kernels (two of them fused reductions, one global sum each) per
+/// iteration, the inverse diagonal computed once, no solver or preconditioner objects to set up per call.
 #include "Types.hpp"
 
 namespace signorini::solvers {
