@@ -26,9 +26,10 @@ inline Kokkos::View<int*, DeviceType> deviceFlags(const std::vector<char>& flags
 
 /// The graph of Q1 cells (hanging corners coupled through their constraints) with \p components
 /// unknowns per node: unknown c of overlap node i is overlap entry components * i + c of \p overlap.
-/// Globally indexed: the owned rows also couple to nodes that only other ranks' cells touch, so the
-/// column maps come from the graph, not from the overlap map. \p ownedToOverlap (owned -> overlap)
-/// is reused by the graph for its export of the shared rows.
+/// On several ranks globally indexed: the owned rows also couple to nodes that only other ranks'
+/// cells touch, so the column maps come from the graph, not from the overlap map; on one rank the
+/// overlap map is the column map. \p ownedToOverlap (owned -> overlap) is reused by the graph for
+/// its export of the shared rows.
 inline RCP<Tpetra::FECrsGraph<LO, GO, Node>> q1Graph(const mesh::Q1Mesh& mesh, int components,
                                                     const RCP<const Map>& owned, const RCP<const Map>& overlap,
                                                     const RCP<const Tpetra::Import<LO, GO, Node>>& ownedToOverlap) {
@@ -70,8 +71,24 @@ inline RCP<Tpetra::FECrsGraph<LO, GO, Node>> q1Graph(const mesh::Q1Mesh& mesh, i
     for (int c = 0; c < components; ++c) perRow.h_view(components * n + c) = components * unique[n];
   perRow.modify_host();
   perRow.sync_device();
-  auto graph = Teuchos::rcp(new Tpetra::FECrsGraph<LO, GO, Node>(
-      owned, overlap, Kokkos::DualView<const size_t*, DeviceType>(perRow), ownedToOverlap));
+  const Kokkos::DualView<const size_t*, DeviceType> rowLengths(perRow);
+  if (overlap->getComm()->getSize() == 1) {
+    // One rank: every coupling is local, so the overlap map is the column map and the graph is
+    // filled by local indices (no global lookups, no column map to discover).
+    auto graph = Teuchos::rcp(new Tpetra::FECrsGraph<LO, GO, Node>(owned, overlap, overlap, rowLengths, ownedToOverlap));
+    graph->beginAssembly();
+    std::vector<LO> columns;
+    for (size_t n = 0; n < nNodes; ++n) {
+      columns.clear();
+      for (size_t k = offset[n]; k < offset[n] + unique[n]; ++k)
+        for (int c = 0; c < components; ++c) columns.push_back(static_cast<LO>(components * adjacent[k] + c));
+      for (int c = 0; c < components; ++c)
+        graph->insertLocalIndices(static_cast<LO>(components * n + c), Teuchos::ArrayView<const LO>(columns));
+    }
+    graph->endAssembly();
+    return graph;
+  }
+  auto graph = Teuchos::rcp(new Tpetra::FECrsGraph<LO, GO, Node>(owned, overlap, rowLengths, ownedToOverlap));
   graph->beginAssembly();
   std::vector<GO> columns;
   for (size_t n = 0; n < nNodes; ++n) {
