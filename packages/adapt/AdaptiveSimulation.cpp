@@ -167,9 +167,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       const double maxDofs = ap.get<double>("Maximum Total Unknowns"), tol = ap.get<double>("Tolerance");
       const bool stop = (maxDofs > 0 && last.totalDofs >= maxDofs) || (tol > 0 && etaMax <= tol) || l + 1 == cycles;
       if (!stop) {  // Algorithm 5.3, then the next cycle's meshes.
-        std::vector<mesh::Forest*> seq;
-        for (auto& m : next) seq.push_back(m.get());
-        mesh::regulariseSequence(seq);
+        mesh::regulariseSteps(next);
         meshes = next;
       }
       const double regularise = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr0).count();

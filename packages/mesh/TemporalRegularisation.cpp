@@ -1,6 +1,7 @@
 #include "TemporalRegularisation.hpp"
 
 #include <algorithm>
+#include <set>
 
 #include "ForestOverlap.hpp"
 
@@ -50,6 +51,17 @@ void regulariseSequence(std::vector<Forest*>& meshes) {
     for (size_t n = meshes.size() - 1; n-- > 0;) changed += regulariseInTime(*meshes[n + 1], *meshes[n]);
   }
   for (Forest* f : meshes) f->partition();
+}
+
+void regulariseSteps(std::vector<std::shared_ptr<Forest>>& steps) {
+  std::set<const Forest*> seen;
+  for (auto& f : steps)
+    if (!seen.insert(f.get()).second) f = std::make_shared<Forest>(*f);
+  std::vector<Forest*> raw;
+  for (auto& f : steps) raw.push_back(f.get());
+  regulariseSequence(raw);
+  for (size_t n = 1; n < steps.size(); ++n)
+    if (steps[n]->sameCells(*steps[n - 1])) steps[n] = steps[n - 1];
 }
 
 }  // namespace signorini::mesh

@@ -2,6 +2,7 @@
 /// \file TemporalRegularisation.hpp
 /// Paper Algorithm 5.3 (DESIGN 1.3): no cell of a step's mesh may be more than one level coarser
 /// than a cell of a neighbouring step's mesh that it overlaps ("multiple hanging nodes in time").
+#include <memory>
 #include <vector>
 
 #include "Forest.hpp"
@@ -17,6 +18,12 @@ int regulariseInTime(const Forest& neighbour, Forest& target);
 /// predecessor) and backward sweeps (against its successor), repeated until nothing changes
 /// (a backward refinement can create a forward violation), then re-partitioning.
 void regulariseSequence(std::vector<Forest*>& meshes);
+
+/// regulariseSequence on the meshes of consecutive steps, which may share one forest (equal
+/// meshes of neighbouring steps are stored once): each step is regularised on its own copy, so a
+/// refinement one step needs does not refine the steps it shared with; afterwards neighbouring
+/// steps with equal meshes share one forest again.
+void regulariseSteps(std::vector<std::shared_ptr<Forest>>& steps);
 
 /// Largest level difference (neighbour level - target level) over overlapping cells, all ranks.
 int maxLevelExcess(const Forest& neighbour, const Forest& target);

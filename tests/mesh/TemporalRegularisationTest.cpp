@@ -65,6 +65,29 @@ TEST(TemporalRegularisation, NoCellIsMoreThanOneLevelCoarserThanItsNeighbourStep
   EXPECT_GE(steps[1]->numGlobalCells(), a.forest->numGlobalCells());
 }
 
+// Steps with equal meshes share one forest; a refinement that Algorithm 5.3 demands for one of
+// them must not reach the other.
+TEST(TemporalRegularisation, SharedMeshesAreRegularisedStepByStep) {
+  test::TestMesh a(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
+  auto coarse = std::make_shared<mesh::Forest>(*a.forest);
+  auto fine = std::make_shared<mesh::Forest>(*a.forest);
+  refineAt(*fine, 0.3, 0.3, 2);  // two levels finer than the coarse mesh near (0.3, 0.3)
+  fine->balance();
+  fine->partition();
+  std::vector<std::shared_ptr<mesh::Forest>> steps{coarse, coarse, coarse, fine};
+  mesh::regulariseSteps(steps);
+  for (size_t n = 0; n + 1 < steps.size(); ++n) {
+    EXPECT_LE(mesh::maxLevelExcess(*steps[n], *steps[n + 1]), 1) << "forward " << n;
+    EXPECT_LE(mesh::maxLevelExcess(*steps[n + 1], *steps[n]), 1) << "backward " << n;
+  }
+  // Only step 2 needed refinement (one level); steps 0 and 1 are unchanged and still share.
+  EXPECT_GT(steps[2]->numGlobalCells(), coarse->numGlobalCells());
+  EXPECT_TRUE(steps[1]->sameCells(*a.forest));
+  EXPECT_EQ(steps[0].get(), steps[1].get());
+  EXPECT_NE(steps[1].get(), steps[2].get());
+  EXPECT_TRUE(steps[3]->sameCells(*fine));
+}
+
 TEST(Forest, MarkedRefinementAndCoarseningAndSameCells) {
   test::TestMesh a(0.0, 1.0, 0.0, 1.0, 2, 2, 2);  // 64 cells
   mesh::Forest f(*a.forest);
