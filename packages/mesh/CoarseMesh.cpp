@@ -44,7 +44,11 @@ std::shared_ptr<CoarseMesh> CoarseMesh::create(const core::ParameterList& p) {
   return rectangle(x0, x1, y0, y1, p.get<int>("Cells X"), p.get<int>("Cells Y"));
 }
 
-std::shared_ptr<CoarseMesh> CoarseMesh::rectangle(double x0, double x1, double y0, double y1, int nx, int ny) {
+std::shared_ptr<CoarseMesh> CoarseMesh::rectangle(double x0, double x1, double y0, double y1, int cellsX,
+                                                  int cellsY) {
+  int offset = 0;
+  while (offset < kMaxLevelOffset && cellsX % (2 << offset) == 0 && cellsY % (2 << offset) == 0) ++offset;
+  const int nx = cellsX >> offset, ny = cellsY >> offset;  // trees
   std::vector<double> x, y;
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) {
@@ -63,8 +67,11 @@ std::shared_ptr<CoarseMesh> CoarseMesh::rectangle(double x0, double x1, double y
       if (i == 0) sets["left"].push_back({q, 3});
     }
   std::ostringstream src;
-  src << "rectangle [" << x0 << "," << x1 << "]x[" << y0 << "," << y1 << "] of " << nx << "x" << ny << " cells";
-  return fromQuads(x, y, quads, sets, src.str());
+  src << "rectangle [" << x0 << "," << x1 << "]x[" << y0 << "," << y1 << "] of " << cellsX << "x" << cellsY
+      << " cells";
+  auto mesh = fromQuads(x, y, quads, sets, src.str());
+  mesh->levelOffset_ = offset;
+  return mesh;
 }
 
 std::shared_ptr<CoarseMesh> CoarseMesh::fromQuads(

@@ -24,8 +24,13 @@ class CoarseMesh {
   /// Builds the coarse mesh from a validated "Mesh" sublist. Throws core::UserError for an
   /// unreadable file or an inverted cell.
   static std::shared_ptr<CoarseMesh> create(const core::ParameterList& meshParams);
-  /// A rectangle [x0,x1] x [y0,y1] of nx x ny cells.
+  /// A rectangle [x0,x1] x [y0,y1] of nx x ny cells. Blocks of 2^o x 2^o cells form one p4est tree
+  /// (o = levelOffset(), the largest o <= kMaxLevelOffset with 2^o dividing nx and ny): p4est's
+  /// work at tree boundaries (face and corner transforms) is then spent only where it must be.
   static std::shared_ptr<CoarseMesh> rectangle(double x0, double x1, double y0, double y1, int nx, int ny);
+  /// Largest level offset of a rectangle: the user's levels (Refinement Level <= 18, Maximum Level
+  /// <= 25) plus the offset stay within p4est's P4EST_QMAXLEVEL = 29.
+  static constexpr int kMaxLevelOffset = 4;
 
   ~CoarseMesh();
   CoarseMesh(const CoarseMesh&) = delete;
@@ -48,6 +53,9 @@ class CoarseMesh {
   const std::string& source() const { return source_; }
   /// Bounding box diameter (length units).
   double diameter() const;
+  /// p4est level of the coarse cells: a cell of (user) refinement level l is a quadrant of level
+  /// l + levelOffset() (0 unless a rectangle's trees hold several coarse cells).
+  int levelOffset() const { return levelOffset_; }
 
  private:
   CoarseMesh() = default;
@@ -59,6 +67,7 @@ class CoarseMesh {
   std::vector<std::array<std::array<double, 2>, 4>> treeCorners_;
   std::vector<std::array<std::vector<std::string>, 4>> faceSets_;
   std::string source_;
+  int levelOffset_ = 0;
 };
 
 }  // namespace signorini::mesh

@@ -24,7 +24,7 @@ void initializeP4est(MPI_Comm comm) {
 
 Forest::Forest(std::shared_ptr<const CoarseMesh> coarse, MPI_Comm comm, int level) : coarse_(std::move(coarse)) {
   initializeP4est(comm);
-  p4est_ = p4est_new_ext(comm, coarse_->connectivity(), 0, level, 1, 0, nullptr, nullptr);
+  p4est_ = p4est_new_ext(comm, coarse_->connectivity(), 0, level + coarse_->levelOffset(), 1, 0, nullptr, nullptr);
 }
 
 Forest::Forest(const Forest& other) : coarse_(other.coarse_), p4est_(p4est_copy(other.p4est_, 0)) {}
@@ -228,7 +228,7 @@ void Forest::refineAndCoarsen(const std::vector<char>& refine, const std::vector
   // Families may be split between ranks: share the flagged cells, partition so that families
   // are local, coarsen, then refine by position.
   const auto refineKeys = allFlaggedCells(p4est_, refine);
-  CoarsenContext ctx{allFlaggedCells(p4est_, coarsen), minLevel};
+  CoarsenContext ctx{allFlaggedCells(p4est_, coarsen), minLevel + coarse_->levelOffset()};
   p4est_partition(p4est_, 1, nullptr);
   void* saved = p4est_->user_pointer;
   p4est_->user_pointer = &ctx;

@@ -57,7 +57,7 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
     for (size_t qi = 0; qi < tree->quadrants.elem_count; ++qi, ++e) {
       const auto* q = p4est_quadrant_array_index(&tree->quadrants, qi);
       const p4est_qcoord_t len = P4EST_QUADRANT_LEN(q->level);
-      cellLevel_[e] = q->level;
+      cellLevel_[e] = q->level - coarse.levelOffset();  // the user's level: 0 on the coarse cells
       cellTree_[e] = static_cast<int>(t);
       for (int c = 0; c < 4; ++c) {
         const double s = (q->x + ((c & 1) ? len : 0)) / root, r = (q->y + ((c & 2) ? len : 0)) / root;
@@ -105,7 +105,7 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
         BoundaryEdge be{};
         be.cell = e;
         be.face = f;
-        be.level = q->level;
+        be.level = q->level - coarse.levelOffset();
         for (int k = 0; k < 2; ++k) {
           const int c = p4est_face_corners[f][k];
           SIGNORINI_ASSERT(cornerDofsHost(e, c, 1) < 0, "boundary corner is hanging");

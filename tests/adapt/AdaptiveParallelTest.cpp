@@ -27,6 +27,10 @@ Result runAdaptive(RCP<const Comm> comm, const std::string& name, const std::str
                                        Teuchos::outArg(deck));
   deck.sublist("Time Integration").set("Final Time", finalTime);
   deck.sublist("Adaptivity").set("Cycles", 3);
+  // s1 is an iterate stopped at a relative residual (1e-3 by default: within 1.1e-5 of s1 from
+  // above); on another partition it stops at a slightly different iterate (7e-7 relative measured).
+  // Solved tightly, s1 agrees like the rest; the meshes do not depend on it (s1 is not marked).
+  deck.sublist("Estimator").set("S1 Relative Tolerance", 1e-10);
   deck.sublist("Output").set("Write Exodus", false);
   deck.sublist("Output").set("Basename", name);
   deck.sublist("Output").set("Progress Interval", 1000000);
@@ -52,7 +56,7 @@ void expectAgreement(const std::string& deckName, double finalTime, const std::s
       EXPECT_EQ(one.cycles.rows[l][one.cycles.column("total_dofs")], two.cycles.rows[l][two.cycles.column("total_dofs")]);
       EXPECT_EQ(one.cycles.rows[l][one.cycles.column("total_cells")], two.cycles.rows[l][two.cycles.column("total_cells")]);
       const double e1 = one.cycles.rows[l][one.cycles.column("eta")], e2 = two.cycles.rows[l][two.cycles.column("eta")];
-      EXPECT_NEAR(e1, e2, 1e-8 * e1);
+      EXPECT_NEAR(e1, e2, 1e-9 * e1);
     }
     // Adaptivity refines: more unknowns and a smaller estimate from cycle to cycle.
     EXPECT_GT(one.cycles.rows[2][one.cycles.column("total_dofs")], one.cycles.rows[0][one.cycles.column("total_dofs")]);
@@ -64,7 +68,7 @@ void expectAgreement(const std::string& deckName, double finalTime, const std::s
       EXPECT_EQ(one.steps.rows[n][one.steps.column("active")], two.steps.rows[n][two.steps.column("active")]) << n;
       contactSteps += one.steps.rows[n][one.steps.column("active")] > 0;
       const double e1 = one.steps.rows[n][one.steps.column("eta")], e2 = two.steps.rows[n][two.steps.column("eta")];
-      EXPECT_NEAR(e1, e2, 1e-8 * std::max(e1, 1e-300)) << n;
+      EXPECT_NEAR(e1, e2, 1e-9 * std::max(e1, 1e-300)) << n;  // measured: 1.3e-12 (membrane), 4e-11 (bar)
     }
     EXPECT_GT(contactSteps, 0);  // the compared interval includes contact
   }
