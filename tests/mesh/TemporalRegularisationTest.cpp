@@ -1,6 +1,8 @@
 // Refinement, balance (Algorithm 5.2) and temporal regularisation (Algorithm 5.3) on forests.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <p4est_bits.h>
 #include <p4est_lnodes.h>
 
@@ -86,6 +88,33 @@ TEST(TemporalRegularisation, SharedMeshesAreRegularisedStepByStep) {
   EXPECT_EQ(steps[0].get(), steps[1].get());
   EXPECT_NE(steps[1].get(), steps[2].get());
   EXPECT_TRUE(steps[3]->sameCells(*fine));
+}
+
+// A rectangle's coarse cells are grouped into trees of up to 16 x 16 cells; the user sees the
+// same cells, levels (0 on the coarse cells) and cell sizes as with one tree per cell.
+TEST(CoarseMesh, GroupedRectangleKeepsTheCoarseCellsAndLevels) {
+  struct Case {
+    int nx, ny, offset;
+  };
+  for (const Case c : {Case{16, 16, 4}, Case{12, 8, 2}, Case{64, 32, 4}, Case{3, 5, 0}}) {
+    test::TestMesh tm(0.0, 3.0, 0.0, 1.0, c.nx, c.ny, 1);
+    EXPECT_EQ(tm.coarse->levelOffset(), c.offset) << c.nx << "x" << c.ny;
+    EXPECT_EQ(tm.coarse->numTrees(), (c.nx >> c.offset) * (c.ny >> c.offset));
+    EXPECT_EQ(tm.forest->numGlobalCells(), 4LL * c.nx * c.ny);
+    const auto& m = tm.build();
+    for (LO e = 0; e < m.numLocalCells(); ++e) {
+      ASSERT_EQ(m.cellLevel()[e], 1);
+      // Level 1 of a coarse cell of 3/nx x 1/ny: the corners span half of it.
+      EXPECT_NEAR(std::abs(m.cornerCoordsHost(e, 1, 0) - m.cornerCoordsHost(e, 0, 0)), 1.5 / c.nx, 1e-14);
+      EXPECT_NEAR(std::abs(m.cornerCoordsHost(e, 2, 1) - m.cornerCoordsHost(e, 0, 1)), 0.5 / c.ny, 1e-14);
+    }
+    // Coarsening stops at the user's level 0: the coarse cells themselves.
+    tm.forest->coarsenMarked(std::vector<char>(m.numLocalCells(), 1), 0);
+    EXPECT_EQ(tm.forest->numGlobalCells(), static_cast<long long>(c.nx) * c.ny);
+    tm.forest->partition();
+    tm.forest->coarsenMarked(std::vector<char>(tm.build().numLocalCells(), 1), 0);
+    EXPECT_EQ(tm.forest->numGlobalCells(), static_cast<long long>(c.nx) * c.ny);
+  }
 }
 
 TEST(Forest, MarkedRefinementAndCoarseningAndSameCells) {
