@@ -72,33 +72,29 @@ inline RCP<Tpetra::FECrsGraph<LO, GO, Node>> q1Graph(const mesh::Q1Mesh& mesh, i
   perRow.modify_host();
   perRow.sync_device();
   const Kokkos::DualView<const size_t*, DeviceType> rowLengths(perRow);
-  if (overlap->getComm()->getSize() == 1) {
-    // One rank: every coupling is local, so the overlap map is the column map and the graph is
-    // filled by local indices (no global lookups, no column map to discover).
-    auto graph = Teuchos::rcp(new Tpetra::FECrsGraph<LO, GO, Node>(owned, overlap, overlap, rowLengths, ownedToOverlap));
-    graph->beginAssembly();
-    std::vector<LO> columns;
+  // One rank: every coupling is local, so the overlap map is the column map and the graph is
+  // filled by local indices (no global lookups, no column map to discover).
+  const bool local = overlap->getComm()->getSize() == 1;
+  using Graph = Tpetra::FECrsGraph<LO, GO, Node>;
+  auto graph = local ? Teuchos::rcp(new Graph(owned, overlap, overlap, rowLengths, ownedToOverlap))
+                     : Teuchos::rcp(new Graph(owned, overlap, rowLengths, ownedToOverlap));
+  graph->beginAssembly();
+  // Rows and columns of the overlap unknowns as index(i) (local or global), inserted by insert.
+  auto insertRows = [&](auto index, auto insert) {
+    std::vector<decltype(index(LO{0}))> columns;
     for (size_t n = 0; n < nNodes; ++n) {
       columns.clear();
       for (size_t k = offset[n]; k < offset[n] + unique[n]; ++k)
-        for (int c = 0; c < components; ++c) columns.push_back(static_cast<LO>(components * adjacent[k] + c));
-      for (int c = 0; c < components; ++c)
-        graph->insertLocalIndices(static_cast<LO>(components * n + c), Teuchos::ArrayView<const LO>(columns));
+        for (int c = 0; c < components; ++c) columns.push_back(index(static_cast<LO>(components * adjacent[k] + c)));
+      for (int c = 0; c < components; ++c) insert(index(static_cast<LO>(components * n + c)), columns);
     }
-    graph->endAssembly();
-    return graph;
-  }
-  auto graph = Teuchos::rcp(new Tpetra::FECrsGraph<LO, GO, Node>(owned, overlap, rowLengths, ownedToOverlap));
-  graph->beginAssembly();
-  std::vector<GO> columns;
-  for (size_t n = 0; n < nNodes; ++n) {
-    columns.clear();
-    for (size_t k = offset[n]; k < offset[n] + unique[n]; ++k)
-      for (int c = 0; c < components; ++c) columns.push_back(overlap->getGlobalElement(components * adjacent[k] + c));
-    for (int c = 0; c < components; ++c)
-      graph->insertGlobalIndices(overlap->getGlobalElement(static_cast<LO>(components * n + c)),
-                                 Teuchos::ArrayView<const GO>(columns));
-  }
+  };
+  if (local)
+    insertRows([](LO i) { return i; },
+               [&](LO row, const std::vector<LO>& cols) { graph->insertLocalIndices(row, Teuchos::ArrayView<const LO>(cols)); });
+  else
+    insertRows([&](LO i) { return overlap->getGlobalElement(i); },
+               [&](GO row, const std::vector<GO>& cols) { graph->insertGlobalIndices(row, Teuchos::ArrayView<const GO>(cols)); });
   graph->endAssembly();
   return graph;
 }

@@ -24,10 +24,11 @@ class CoarseMesh {
   /// Builds the coarse mesh from a validated "Mesh" sublist. Throws core::UserError for an
   /// unreadable file or an inverted cell.
   static std::shared_ptr<CoarseMesh> create(const core::ParameterList& meshParams);
-  /// A rectangle [x0,x1] x [y0,y1] of nx x ny cells. Blocks of 2^o x 2^o cells form one p4est tree
-  /// (o = levelOffset(), the largest o <= kMaxLevelOffset with 2^o dividing nx and ny): p4est's
-  /// work at tree boundaries (face and corner transforms) is then spent only where it must be.
-  static std::shared_ptr<CoarseMesh> rectangle(double x0, double x1, double y0, double y1, int nx, int ny);
+  /// A rectangle [x0,x1] x [y0,y1] of cellsX x cellsY cells. Blocks of 2^o x 2^o cells form one
+  /// p4est tree (o = levelOffset(), the largest o <= kMaxLevelOffset with 2^o dividing cellsX and
+  /// cellsY): p4est's work at tree boundaries (face and corner transforms) is then spent only where
+  /// it must be.
+  static std::shared_ptr<CoarseMesh> rectangle(double x0, double x1, double y0, double y1, int cellsX, int cellsY);
   /// Largest level offset of a rectangle: the user's levels (Refinement Level <= 18, Maximum Level
   /// <= 25) plus the offset stay within p4est's P4EST_QMAXLEVEL = 29.
   static constexpr int kMaxLevelOffset = 4;
