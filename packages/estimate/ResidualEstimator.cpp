@@ -2,12 +2,14 @@
 /// The residual estimator of paper Sec. 4 with the corrections of DESIGN 1.3.
 ///
 /// eta_*^2 = sum_K eta_K^2, eta_K^2 = h_K^2 ||r||_K^2 + h_K ||R||^2_{dK}, h_K = longest diagonal of K:
-///  - cell part (Kokkos kernel over the cells, 3x3 Gauss): r = beta k^2 f + rho (predictor - u_h)
+///  - cell part (Kokkos kernel over the cells): r = beta k^2 f + rho (predictor - u_h)
 ///    + beta k^2 kappa Laplace(u_h), the Laplacian of the bilinear field through the inverse
-///    bilinear map (non-zero on non-rectangular cells);
+///    bilinear map (non-zero on non-rectangular cells); exact from r's corner values where r is
+///    bilinear (parallelograms, constant f), else 3x3 Gauss;
 ///  - interior edges (host, p4est_iterate over faces with the face ghost layer): R = -(beta k^2 / 2) J,
-///    J = [kappa du_h/dn]. Every cell K adjacent to an edge E gets h_K ||R||^2_E = h_K (beta k^2 / 2)^2
-///    ||J||^2_E, so E adds (h_K + h_K') (beta k^2)^2 ||J||^2_E / 4 in total: the jump is shared
+///    J = [kappa du_h/dn] (linear along the edge between parallelograms: integrated exactly from
+///    its end values; else 3-point Gauss). Every cell K adjacent to an edge E gets h_K ||R||^2_E =
+///    h_K (beta k^2 / 2)^2 ||J||^2_E, so E adds (h_K + h_K') (beta k^2)^2 ||J||^2_E / 4 in total: the jump is shared
 ///    half and half (the 1/2 in R), each half weighted with its own cell's h_K. A 2:1 face is
 ///    split into its two fine edges; on each, J uses the coarse cell's flux evaluated on that half,
 ///    and the coarse cell collects both halves;
@@ -63,6 +65,17 @@ double normalDerivative(const CellPayload& c, int f, double tau, const double n[
   return dx * n[0] + dy * n[1];
 }
 
+/// grad u_h . n at the reference point (s, r) of a parallelogram cell: grad u_h = J^{-T} (u_s, u_r)
+/// with the constant Jacobian J = [x_s, x_r] (the same as normalDerivative, without the general map).
+double affineNormalDerivative(const CellPayload& c, double s, double r, const double n[2]) {
+  const double xs0 = c.X[1][0] - c.X[0][0], xs1 = c.X[1][1] - c.X[0][1];
+  const double xr0 = c.X[2][0] - c.X[0][0], xr1 = c.X[2][1] - c.X[0][1];
+  const double us = (c.u[1] - c.u[0]) * (1 - r) + (c.u[3] - c.u[2]) * r;
+  const double ur = (c.u[2] - c.u[0]) * (1 - s) + (c.u[3] - c.u[1]) * s;
+  const double det = xs0 * xr1 - xs1 * xr0;
+  return ((xr1 * us - xs1 * ur) * n[0] + (xs0 * ur - xr0 * us) * n[1]) / det;
+}
+
 /// Context of the p4est_iterate face callback.
 struct FaceContext {
   const std::vector<CellPayload>* local;
@@ -88,10 +101,21 @@ void addEdgeJump(const FaceContext& ctx, const FaceSide<CellPayload>& A, const F
   outwardNormal(a.X, A.face, n);
   const double b0 = faceParameter(b.X, B.face, P0), b1 = faceParameter(b.X, B.face, P1);
   double integral = 0;
-  for (int g = 0; g < 3; ++g) {
-    const double jump =
-        ctx.kappa * (normalDerivative(a, A.face, kG3[g], n) - normalDerivative(b, B.face, b0 + kG3[g] * (b1 - b0), n));
-    integral += kW3[g] * jump * jump;
+  if (isParallelogram(a.X) && isParallelogram(b.X)) {  // the jump is linear along the edge: exact from its end values
+    double jump[2];
+    for (int end = 0; end < 2; ++end) {
+      double sa, ra, sb, rb;
+      faceReference(A.face, end, sa, ra);
+      faceReference(B.face, end == 0 ? b0 : b1, sb, rb);
+      jump[end] = ctx.kappa * (affineNormalDerivative(a, sa, ra, n) - affineNormalDerivative(b, sb, rb, n));
+    }
+    integral = squareOfLinearIntegral(jump[0], jump[1]);
+  } else {
+    for (int g = 0; g < 3; ++g) {
+      const double jump = ctx.kappa * (normalDerivative(a, A.face, kG3[g], n) -
+                                       normalDerivative(b, B.face, b0 + kG3[g] * (b1 - b0), n));
+      integral += kW3[g] * jump * jump;
+    }
   }
   const double rSquared = ctx.halfBk2 * ctx.halfBk2 * integral * len;  // ||R||^2_E
   if (A.local >= 0) (*ctx.edgeTerm)[A.local] += cellDiameter(a.X) * rSquared;
@@ -140,21 +164,18 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
   in.assembler.toOverlap(in.predictor, pOv);
 
   // --- Cell residuals (Kokkos): vol(e) = h_K^2 ||r||_K^2 with
-  //     r = beta k^2 f + rho (predictor - u_h) + beta k^2 kappa Laplace(u_h), 3x3 Gauss points.
+  //     r = beta k^2 f + rho (predictor - u_h) + beta k^2 kappa Laplace(u_h): exact from r's corner
+  //     values where r is bilinear (parallelograms, constant f), else 3x3 Gauss points.
   Kokkos::View<double*, DeviceType> vol("estimatorVolume", nc);
   {
-    Kokkos::View<double* [9], DeviceType> fq("estimatorF", nc);
-    {
+    const bool constantForce = problem.bodyForce.isConstant();
+    const double fConstant = constantForce ? problem.bodyForce(0, 0, t) : 0.0;
+    Kokkos::View<double* [9], DeviceType> fq("estimatorF", constantForce ? 0 : nc);
+    if (!constantForce) {
       auto h = Kokkos::create_mirror_view(fq);
       const auto& X = mesh.cornerCoordsHost;
-      const bool constant = problem.bodyForce.isConstant();
-      const double fc = constant ? problem.bodyForce(0, 0, t) : 0.0;
       for (LO e = 0; e < nc; ++e)
         for (int q = 0; q < 9; ++q) {
-          if (constant) {
-            h(e, q) = fc;
-            continue;
-          }
           double N[4], ds[4], dr[4];
           fem::q1Shape(kG3[q % 3], kG3[q / 3], N, ds, dr);
           double x = 0, y = 0;
@@ -188,14 +209,24 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
             }
           }
           double sum = 0;
-          for (int q = 0; q < 9; ++q) {
-            double N[4], gx[4], gy[4];
-            const double s = rule(q, 0), r = rule(q, 1);
-            const double det = fem::q1Gradients(Xe, s, r, N, gx, gy);
-            double diff = 0;
-            for (int c = 0; c < 4; ++c) diff += N[c] * (pe[c] - ue[c]);
-            const double res = bk2 * fq(e, q) + rho * diff + bk2 * kappa * q1Laplacian(Xe, ue, s, r);
-            sum += rule(q, 2) * det * res * res;
+          if (constantForce && isParallelogram(Xe)) {  // r is bilinear (its Laplacian term constant): exact
+            const double L = bk2 * kappa * q1Laplacian(Xe, ue, 0.5, 0.5);
+            double rc[4];
+            for (int c = 0; c < 4; ++c) rc[c] = bk2 * fConstant + rho * (pe[c] - ue[c]) + L;
+            const double area = Kokkos::Experimental::fabs((Xe[1][0] - Xe[0][0]) * (Xe[2][1] - Xe[0][1]) -
+                                                           (Xe[1][1] - Xe[0][1]) * (Xe[2][0] - Xe[0][0]));
+            sum = bilinearSquareIntegral(rc, area);
+          } else {
+            for (int q = 0; q < 9; ++q) {
+              double N[4], gx[4], gy[4];
+              const double s = rule(q, 0), r = rule(q, 1);
+              const double det = fem::q1Gradients(Xe, s, r, N, gx, gy);
+              double diff = 0;
+              for (int c = 0; c < 4; ++c) diff += N[c] * (pe[c] - ue[c]);
+              const double f = constantForce ? fConstant : fq(e, q);
+              const double res = bk2 * f + rho * diff + bk2 * kappa * q1Laplacian(Xe, ue, s, r);
+              sum += rule(q, 2) * det * res * res;
+            }
           }
           const double h = cellDiameter(Xe);
           vol(e) = h * h * sum;
