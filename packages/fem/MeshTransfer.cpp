@@ -1,6 +1,7 @@
 #include "MeshTransfer.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Import.hpp>
@@ -13,6 +14,16 @@ namespace signorini::fem {
 namespace {
 constexpr double kGp[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
 constexpr double kGw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+/// 36 times the Q1 mass matrix of the reference square (corners in z-order).
+constexpr double kMass36[4][4] = {{4, 2, 2, 1}, {2, 4, 1, 2}, {2, 1, 4, 2}, {1, 2, 2, 4}};
+
+/// The determinant of tree t's map if it is constant (parallelogram trees, every rectangle), else NaN.
+double constantJacobianDeterminant(const mesh::CoarseMesh& coarse, int t) {
+  const double d = coarse.jacobianDeterminant(t, 0, 0);
+  const double spread = std::abs(coarse.jacobianDeterminant(t, 1, 0) - d) +
+                        std::abs(coarse.jacobianDeterminant(t, 0, 1) - d) + std::abs(coarse.jacobianDeterminant(t, 1, 1) - d);
+  return spread <= 1e-13 * std::abs(d) ? d : std::nan("");
+}
 }  // namespace
 
 MeshTransfer::MeshTransfer(const mesh::Forest& oldForest, const mesh::Q1Mesh& oldMesh,
@@ -58,23 +69,57 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
   std::vector<decltype(overlap[0].getLocalViewHost(Tpetra::Access::ReadWrite))> views;
   for (auto& o : overlap) views.push_back(o.getLocalViewHost(Tpetra::Access::ReadWrite));
   const auto& dir = newAssembler.dirichletFlags();
+  std::vector<double> treeDeterminant(coarse_.numTrees());
+  for (int t = 0; t < coarse_.numTrees(); ++t) treeDeterminant[t] = constantJacobianDeterminant(coarse_, t);
   for (int e = 0; e < overlap_->numTargetCells(); ++e) {
     const auto& K = overlap_->target(e);
     double be[8][4] = {};  // [field][corner]
     SIGNORINI_ASSERT(nf <= 8, "too many fields");
-    for (const auto& Q : overlap_->overlapping(e)) {
-      const auto& R = Q.size < K.size ? Q : K;  // the cell of the common refinement
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-          const double s = R.s0 + kGp[i] * R.size, r = R.r0 + kGp[j] * R.size;
-          const double w = kGw[i] * kGw[j] * R.size * R.size * coarse_.jacobianDeterminant(K.tree, s, r);
-          const double ks = (s - K.s0) / K.size, kr = (r - K.r0) / K.size;
-          const double N[4] = {(1 - ks) * (1 - kr), ks * (1 - kr), (1 - ks) * kr, ks * kr};
+    const double det = treeDeterminant[K.tree];
+    if (!std::isnan(det)) {  // u and the basis are bilinear on each cell of the common refinement: exact
+      for (const auto& Q : overlap_->overlapping(e)) {
+        if (Q.size >= K.size) {  // K inside Q: be = M_K (u at K's corners)
+          const double area36 = det * K.size * K.size / 36;
           for (int f = 0; f < nf; ++f) {
-            const double u = valueAt(Q, f, s, r);
-            for (int c = 0; c < 4; ++c) be[f][c] += w * u * N[c];
+            double u[4];
+            for (int c = 0; c < 4; ++c)
+              u[c] = valueAt(Q, f, K.s0 + ((c & 1) ? K.size : 0), K.r0 + ((c & 2) ? K.size : 0));
+            for (int a = 0; a < 4; ++a)
+              for (int b = 0; b < 4; ++b) be[f][a] += area36 * kMass36[a][b] * u[b];
+          }
+        } else {  // Q inside K: be_c = (phi^K_c at Q's corners) . M_Q u_Q
+          const double area36 = det * Q.size * Q.size / 36;
+          double N[4][4];  // [corner of Q][basis function of K]
+          for (int a = 0; a < 4; ++a) {
+            const double ks = (Q.s0 + ((a & 1) ? Q.size : 0) - K.s0) / K.size;
+            const double kr = (Q.r0 + ((a & 2) ? Q.size : 0) - K.r0) / K.size;
+            N[a][0] = (1 - ks) * (1 - kr), N[a][1] = ks * (1 - kr), N[a][2] = (1 - ks) * kr, N[a][3] = ks * kr;
+          }
+          for (int f = 0; f < nf; ++f) {
+            const double* u = Q.payload + 4 * f;
+            for (int a = 0; a < 4; ++a) {
+              double Mu = 0;
+              for (int b = 0; b < 4; ++b) Mu += kMass36[a][b] * u[b];
+              for (int c = 0; c < 4; ++c) be[f][c] += area36 * N[a][c] * Mu;
+            }
           }
         }
+      }
+    } else {  // 3 x 3 Gauss points on each cell of the common refinement
+      for (const auto& Q : overlap_->overlapping(e)) {
+        const auto& R = Q.size < K.size ? Q : K;  // the cell of the common refinement
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) {
+            const double s = R.s0 + kGp[i] * R.size, r = R.r0 + kGp[j] * R.size;
+            const double w = kGw[i] * kGw[j] * R.size * R.size * coarse_.jacobianDeterminant(K.tree, s, r);
+            const double ks = (s - K.s0) / K.size, kr = (r - K.r0) / K.size;
+            const double N[4] = {(1 - ks) * (1 - kr), ks * (1 - kr), (1 - ks) * kr, ks * kr};
+            for (int f = 0; f < nf; ++f) {
+              const double u = valueAt(Q, f, s, r);
+              for (int c = 0; c < 4; ++c) be[f][c] += w * u * N[c];
+            }
+          }
+      }
     }
     for (int f = 0; f < nf; ++f)
       for (int c = 0; c < 4; ++c)

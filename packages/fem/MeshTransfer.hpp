@@ -18,8 +18,9 @@ class MeshTransfer {
                const mesh::Forest& newForest, const mesh::Q1Mesh& newMesh);
 
   /// b_i = int u_old phi_i for each field (owned vectors on the new mesh, Dirichlet rows zeroed by
-  /// \p newAssembler): the right-hand sides of the L2 projection M x = b. Exact for Q1 fields
-  /// (3 x 3 Gauss points on each cell of the common refinement).
+  /// \p newAssembler): the right-hand sides of the L2 projection M x = b. Exact for Q1 fields:
+  /// element mass matrices on each cell of the common refinement in trees with a constant
+  /// Jacobian (parallelograms, every rectangle), 3 x 3 Gauss points there in other trees.
   /// Only the first \p numFields fields (all: -1).
   std::vector<RCP<Vector>> projectionLoads(const Q1Assembler& newAssembler, int numFields = -1) const;
   /// Nodal interpolation of each field at the new mesh's nodes (owned vectors).

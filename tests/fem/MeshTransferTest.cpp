@@ -1,6 +1,8 @@
 // Transfer between the meshes of two time steps: the L2 projection on the common refinement
 // reproduces fields that lie in both spaces, is the identity for identical meshes, conserves the
-// integral; nodal interpolation reproduces fields of the new space. Meshes partitioned differently.
+// integral; nodal interpolation reproduces fields of the new space. Meshes partitioned differently;
+// rectangles (exact element mass matrices), parallelograms in rotated frames and distorted cells
+// (Gauss points).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,6 +10,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "../QuadMeshes.hpp"
 #include "../TestMesh.hpp"
 #include "LinearSolver.hpp"
 #include "MeshTransfer.hpp"
@@ -92,5 +95,43 @@ TEST(MeshTransfer, IsTheIdentityBetweenEqualMeshes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Directions, MeshTransferTest, ::testing::Values(true, false));
+
+enum class Coarse { Rectangles, RotatedSquares, Distorted };
+
+class TransferOnQuadrilateralsTest : public ::testing::TestWithParam<Coarse> {};
+
+TEST_P(TransferOnQuadrilateralsTest, ProjectionReproducesAFieldOfBothSpacesInBothDirections) {
+  const std::vector<std::pair<std::string, std::string>> sides = {{"all", "boundary"}};
+  const auto coarse = GetParam() == Coarse::Rectangles       ? nullptr
+                      : GetParam() == Coarse::RotatedSquares ? test::rotatedSquares()
+                                                             : test::distortedSquare();
+  auto side = [&]() {
+    return coarse ? std::make_unique<test::TestMesh>(coarse, sides, 1)
+                  : std::make_unique<test::TestMesh>(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
+  };
+  auto coarseSide = side(), fineSide = side();
+  fineSide->refineCorner();
+  const auto& coarseMesh = coarseSide->build();
+  const auto& fineMesh = fineSide->build();
+  Vector uc(coarseMesh.ownedMap());
+  interpolate(coarseMesh, [](double x, double y) { return std::exp(x) * std::sin(3 * y) + x * y; }, uc);
+  // Coarse -> fine: the field lies in the finer space, so its projection is its nodal interpolant.
+  fem::MeshTransfer up(*coarseSide->forest, coarseMesh, {&uc}, *fineSide->forest, fineMesh);
+  fem::Q1Assembler fineAsmb(fineMesh, std::vector<char>(fineMesh.overlapMap()->getNodeNumElements(), 0));
+  const auto uf = up.interpolate()[0];
+  EXPECT_LT(maxDiff(*project(fineAsmb, *up.projectionLoads(fineAsmb)[0]), *uf), 1e-10);
+  // Fine -> coarse: the same field (now given on the fine mesh) comes back.
+  fem::MeshTransfer down(*fineSide->forest, fineMesh, {uf.get()}, *coarseSide->forest, coarseMesh);
+  fem::Q1Assembler coarseAsmb(coarseMesh, std::vector<char>(coarseMesh.overlapMap()->getNodeNumElements(), 0));
+  EXPECT_LT(maxDiff(*project(coarseAsmb, *down.projectionLoads(coarseAsmb)[0]), uc), 1e-10);
+}
+
+INSTANTIATE_TEST_SUITE_P(CoarseMeshes, TransferOnQuadrilateralsTest,
+                         ::testing::Values(Coarse::Rectangles, Coarse::RotatedSquares, Coarse::Distorted),
+                         [](const auto& info) {
+                           return std::string(info.param == Coarse::Rectangles       ? "rectangles"
+                                              : info.param == Coarse::RotatedSquares ? "rotatedSquares"
+                                                                                     : "distorted");
+                         });
 
 }  // namespace
