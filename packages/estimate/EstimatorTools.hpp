@@ -88,23 +88,13 @@ inline void outwardNormal(const double X[4][2], int f, double n[2]) {
   if (n[0] * (0.5 * (p0[0] + p1[0]) - cx) + n[1] * (0.5 * (p0[1] + p1[1]) - cy) < 0) n[0] = -n[0], n[1] = -n[1];
 }
 
-/// Whether the cell with corners X (z-order) is a parallelogram (rectangles included): then its
-/// bilinear map is affine, and gradients and tractions of Q1 fields are linear along each face.
-KOKKOS_INLINE_FUNCTION bool isParallelogram(const double X[4][2]) {
-  using Kokkos::Experimental::fabs;
-  const double dx = X[0][0] + X[3][0] - X[1][0] - X[2][0];
-  const double dy = X[0][1] + X[3][1] - X[1][1] - X[2][1];
-  const double size = fabs(X[3][0] - X[0][0]) + fabs(X[3][1] - X[0][1]);
-  return fabs(dx) + fabs(dy) <= 1e-13 * size;
-}
-
 /// int_K w^2 dx for the bilinear field w with corner values w (z-order) on the parallelogram K of
-/// area \p area (exact: the Q1 element mass matrix, area / 36 [4 2 2 1; 2 4 1 2; 2 1 4 2; 1 2 2 4]).
+/// area \p area (exact: the Q1 element mass matrix).
 KOKKOS_INLINE_FUNCTION double bilinearSquareIntegral(const double w[4], double area) {
-  const double diagonal = w[0] * w[0] + w[1] * w[1] + w[2] * w[2] + w[3] * w[3];
-  const double edges = w[0] * w[1] + w[0] * w[2] + w[1] * w[3] + w[2] * w[3];
-  const double across = w[0] * w[3] + w[1] * w[2];
-  return area / 36 * (4 * diagonal + 4 * edges + 2 * across);
+  double sum = 0;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) sum += w[a] * fem::q1Mass36(a, b) * w[b];
+  return area / 36 * sum;
 }
 
 /// int_0^1 j(tau)^2 dtau for the linear j with j(0) = j0, j(1) = j1 (exact).

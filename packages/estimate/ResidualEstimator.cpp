@@ -101,7 +101,7 @@ void addEdgeJump(const FaceContext& ctx, const FaceSide<CellPayload>& A, const F
   outwardNormal(a.X, A.face, n);
   const double b0 = faceParameter(b.X, B.face, P0), b1 = faceParameter(b.X, B.face, P1);
   double integral = 0;
-  if (isParallelogram(a.X) && isParallelogram(b.X)) {  // the jump is linear along the edge: exact from its end values
+  if (fem::isParallelogram(a.X) && fem::isParallelogram(b.X)) {  // the jump is linear along the edge: exact from its end values
     double jump[2];
     for (int end = 0; end < 2; ++end) {
       double sa, ra, sb, rb;
@@ -209,7 +209,7 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
             }
           }
           double sum = 0;
-          if (constantForce && isParallelogram(Xe)) {  // r is bilinear (its Laplacian term constant): exact
+          if (constantForce && fem::isParallelogram(Xe)) {  // r is bilinear (its Laplacian term constant): exact
             const double L = bk2 * kappa * q1Laplacian(Xe, ue, 0.5, 0.5);
             double rc[4];
             for (int c = 0; c < 4; ++c) rc[c] = bk2 * fConstant + rho * (pe[c] - ue[c]) + L;

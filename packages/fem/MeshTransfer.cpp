@@ -14,8 +14,6 @@ namespace signorini::fem {
 namespace {
 constexpr double kGp[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
 constexpr double kGw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
-/// 36 times the Q1 mass matrix of the reference square (corners in z-order).
-constexpr double kMass36[4][4] = {{4, 2, 2, 1}, {2, 4, 1, 2}, {2, 1, 4, 2}, {1, 2, 2, 4}};
 
 /// The determinant of tree t's map if it is constant (parallelogram trees, every rectangle), else NaN.
 double constantJacobianDeterminant(const mesh::CoarseMesh& coarse, int t) {
@@ -85,7 +83,7 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
             for (int c = 0; c < 4; ++c)
               u[c] = valueAt(Q, f, K.s0 + ((c & 1) ? K.size : 0), K.r0 + ((c & 2) ? K.size : 0));
             for (int a = 0; a < 4; ++a)
-              for (int b = 0; b < 4; ++b) be[f][a] += area36 * kMass36[a][b] * u[b];
+              for (int b = 0; b < 4; ++b) be[f][a] += area36 * q1Mass36(a, b) * u[b];
           }
         } else {  // Q inside K: be_c = (phi^K_c at Q's corners) . M_Q u_Q
           const double area36 = det * Q.size * Q.size / 36;
@@ -99,7 +97,7 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
             const double* u = Q.payload + 4 * f;
             for (int a = 0; a < 4; ++a) {
               double Mu = 0;
-              for (int b = 0; b < 4; ++b) Mu += kMass36[a][b] * u[b];
+              for (int b = 0; b < 4; ++b) Mu += q1Mass36(a, b) * u[b];
               for (int c = 0; c < 4; ++c) be[f][c] += area36 * N[a][c] * Mu;
             }
           }

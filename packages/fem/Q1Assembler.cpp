@@ -72,16 +72,23 @@ void Q1Assembler::assembleInto(CrsMatrix& firstMatrix, CrsMatrix& secondMatrix, 
         KOKKOS_LAMBDA(const LO e) {
           double Xe[4][2], Ke[4][4] = {}, Me[4][4] = {};
           for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
-          for (int i = 0; i < 2; ++i)
-            for (int j = 0; j < 2; ++j) {
-              double N[4], gx[4], gy[4];
-              const double w = kGauss2Weight * kGauss2Weight * q1Gradients(Xe, gauss2Point(i), gauss2Point(j), N, gx, gy);
-              for (int a = 0; a < 4; ++a)
-                for (int b = 0; b < 4; ++b) {
-                  Me[a][b] += w * cm * N[a] * N[b];
-                  Ke[a][b] += w * ck * (gx[a] * gx[b] + gy[a] * gy[b]);
-                }
-            }
+          if (isParallelogram(Xe)) {  // closed forms (2x2 Gauss is exact too)
+            q1ParallelogramMatrices(Xe, Me, Ke);
+            for (int a = 0; a < 4; ++a)
+              for (int b = 0; b < 4; ++b) Me[a][b] *= cm, Ke[a][b] *= ck;
+          } else {
+            for (int i = 0; i < 2; ++i)
+              for (int j = 0; j < 2; ++j) {
+                double N[4], gx[4], gy[4];
+                const double w =
+                    kGauss2Weight * kGauss2Weight * q1Gradients(Xe, gauss2Point(i), gauss2Point(j), N, gx, gy);
+                for (int a = 0; a < 4; ++a)
+                  for (int b = 0; b < 4; ++b) {
+                    Me[a][b] += w * cm * N[a] * N[b];
+                    Ke[a][b] += w * ck * (gx[a] * gx[b] + gy[a] * gy[b]);
+                  }
+              }
+          }
           auto add = [&](const decltype(v1)& values, size_t at, double v) {
             if (kAtomicScatter)
               Kokkos::atomic_add(&values(at), v);

@@ -42,4 +42,39 @@ KOKKOS_INLINE_FUNCTION double q1Gradients(const double X[4][2], double s, double
   return det;
 }
 
+/// Whether the cell with corners X (z-order) is a parallelogram (every rectangle is): then its map
+/// is affine, gradients of Q1 fields are linear along each face and the element matrices have
+/// closed forms.
+KOKKOS_INLINE_FUNCTION bool isParallelogram(const double X[4][2]) {
+  using Kokkos::Experimental::fabs;
+  const double dx = X[0][0] + X[3][0] - X[1][0] - X[2][0];
+  const double dy = X[0][1] + X[3][1] - X[1][1] - X[2][1];
+  const double size = fabs(X[3][0] - X[0][0]) + fabs(X[3][1] - X[0][1]);
+  return fabs(dx) + fabs(dy) <= 1e-13 * size;
+}
+
+/// 36 times the Q1 mass matrix of the unit square (z-order): 4 on the diagonal, 2 along an edge,
+/// 1 across the diagonal.
+KOKKOS_INLINE_FUNCTION double q1Mass36(int a, int b) { return a == b ? 4.0 : (a ^ b) == 3 ? 1.0 : 2.0; }
+
+/// Exact mass (int phi_a phi_b) and stiffness (int grad phi_a . grad phi_b) matrices of the
+/// parallelogram with corners X. With x_s = X1 - X0, x_r = X2 - X0 and the reference matrices
+/// S_ss, S_rr, S_sr of the derivative pairs: K = (|x_r|^2 S_ss - x_s.x_r (S_sr + S_sr^T) + |x_s|^2 S_rr) / |det J|.
+KOKKOS_INLINE_FUNCTION void q1ParallelogramMatrices(const double X[4][2], double M[4][4], double K[4][4]) {
+  const double xs0 = X[1][0] - X[0][0], xs1 = X[1][1] - X[0][1];
+  const double xr0 = X[2][0] - X[0][0], xr1 = X[2][1] - X[0][1];
+  const double det = Kokkos::Experimental::fabs(xs0 * xr1 - xs1 * xr0);
+  const double ss = xs0 * xs0 + xs1 * xs1, rr = xr0 * xr0 + xr1 * xr1, sr = xs0 * xr0 + xs1 * xr1;
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) {
+      const double signS = ((a & 1) ? 1.0 : -1.0) * ((b & 1) ? 1.0 : -1.0);  // d/ds of phi_a and phi_b
+      const double signR = ((a & 2) ? 1.0 : -1.0) * ((b & 2) ? 1.0 : -1.0);
+      const double Sss = signS * (((a & 2) == (b & 2)) ? 2.0 : 1.0) / 6;
+      const double Srr = signR * (((a & 1) == (b & 1)) ? 2.0 : 1.0) / 6;
+      const double SsrSym = (((a & 1) ? 1.0 : -1.0) * ((b & 2) ? 1.0 : -1.0) + ((b & 1) ? 1.0 : -1.0) * ((a & 2) ? 1.0 : -1.0)) / 4;
+      M[a][b] = det * q1Mass36(a, b) / 36;
+      K[a][b] = (rr * Sss - sr * SsrSym + ss * Srr) / det;
+    }
+}
+
 }  // namespace signorini::fem

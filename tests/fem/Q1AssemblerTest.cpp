@@ -13,6 +13,7 @@
 #include "ElasticityAssembler.hpp"
 #include "ProblemData.hpp"
 #include "Q1Assembler.hpp"
+#include "Q1Kernels.hpp"
 
 using namespace signorini;
 
@@ -139,6 +140,34 @@ INSTANTIATE_TEST_SUITE_P(Meshes, AssemblyTest,
 }  // namespace
 
 // Loads accumulate: two boundary loads and an accumulated body load add up (1, 2, 3 ranks).
+TEST(Q1Kernels, ParallelogramMatricesEqualGaussQuadrature) {
+  // Closed forms against 2x2 Gauss (exact for these integrands on affine cells): a rectangle, a
+  // sheared and a rotated parallelogram; a trapezoid is not a parallelogram.
+  const double cells[3][4][2] = {{{0, 0}, {2, 0}, {0, 0.5}, {2, 0.5}},
+                                 {{1, 1}, {2, 1.2}, {1.3, 2}, {2.3, 2.2}},
+                                 {{0, 0}, {0.6, 0.8}, {-0.4, 0.3}, {0.2, 1.1}}};
+  for (const auto& X : cells) {
+    ASSERT_TRUE(fem::isParallelogram(X));
+    double M[4][4], K[4][4], Mg[4][4] = {}, Kg[4][4] = {};
+    fem::q1ParallelogramMatrices(X, M, K);
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) {
+        double N[4], gx[4], gy[4];
+        const double w = fem::kGauss2Weight * fem::kGauss2Weight *
+                         fem::q1Gradients(X, fem::gauss2Point(i), fem::gauss2Point(j), N, gx, gy);
+        for (int a = 0; a < 4; ++a)
+          for (int b = 0; b < 4; ++b) Mg[a][b] += w * N[a] * N[b], Kg[a][b] += w * (gx[a] * gx[b] + gy[a] * gy[b]);
+      }
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        EXPECT_NEAR(M[a][b], Mg[a][b], 1e-14) << a << "," << b;
+        EXPECT_NEAR(K[a][b], Kg[a][b], 1e-13) << a << "," << b;
+      }
+  }
+  const double trapezoid[4][2] = {{0, 0}, {1, 0}, {0.2, 1}, {0.8, 1}};
+  EXPECT_FALSE(fem::isParallelogram(trapezoid));
+}
+
 TEST(Q1AssemblerLoads, LoadsAccumulate) {
   test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
   const auto& m = tm.build();
