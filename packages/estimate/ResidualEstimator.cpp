@@ -101,7 +101,7 @@ void addEdgeJump(const FaceContext& ctx, const FaceSide<CellPayload>& A, const F
   outwardNormal(a.X, A.face, n);
   const double b0 = faceParameter(b.X, B.face, P0), b1 = faceParameter(b.X, B.face, P1);
   double integral = 0;
-  if (fem::isParallelogram(a.X) && fem::isParallelogram(b.X)) {  // the jump is linear along the edge: exact from its end values
+  if (fem::isParallelogram(a.X) && fem::isParallelogram(b.X)) {  // linear jump: exact from its end values
     double jump[2];
     for (int end = 0; end < 2; ++end) {
       double sa, ra, sb, rb;

@@ -18,8 +18,8 @@ constexpr double kGw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
 /// The determinant of tree t's map if it is constant (parallelogram trees, every rectangle), else NaN.
 double constantJacobianDeterminant(const mesh::CoarseMesh& coarse, int t) {
   const double d = coarse.jacobianDeterminant(t, 0, 0);
-  const double spread = std::abs(coarse.jacobianDeterminant(t, 1, 0) - d) +
-                        std::abs(coarse.jacobianDeterminant(t, 0, 1) - d) + std::abs(coarse.jacobianDeterminant(t, 1, 1) - d);
+  double spread = 0;  // det J is bilinear in (s, r): constant if equal at the corners
+  for (int c = 1; c < 4; ++c) spread += std::abs(coarse.jacobianDeterminant(t, c & 1, c >> 1) - d);
   return spread <= 1e-13 * std::abs(d) ? d : std::nan("");
 }
 }  // namespace
