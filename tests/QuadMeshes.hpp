@@ -58,35 +58,10 @@ inline std::shared_ptr<mesh::CoarseMesh> exodusCoarseMesh(const std::vector<doub
   return coarse;
 }
 
-/// The unit square as 2 x 2 distorted quadrilaterals (interior vertex and side midpoints moved);
-/// the second and fourth cells list their vertices from another corner, so that neighbouring
-/// trees have differently oriented reference frames.
-inline std::shared_ptr<mesh::CoarseMesh> distortedSquare(const RCP<const Comm>& comm = Tpetra::getDefaultComm()) {
-  std::vector<double> x = {0, 0.4, 1, 0, 0.6, 1, 0, 0.55, 1};
-  std::vector<double> y = {0, 0, 0, 0.45, 0.42, 0.6, 1, 1, 1};
-  std::vector<std::array<int, 4>> quads;
-  for (int j = 0; j < 2; ++j)
-    for (int i = 0; i < 2; ++i) {
-      const int v = 3 * j + i;
-      if (i == 1 && j == 0)
-        quads.push_back({v + 1, v + 4, v + 3, v});  // counter-clockwise from another corner
-      else if (i == 1 && j == 1)
-        quads.push_back({v + 4, v + 3, v, v + 1});
-      else
-        quads.push_back({v, v + 1, v + 4, v + 3});
-    }
-  return exodusCoarseMesh(x, y, quads, "distorted", comm);
-}
-inline const std::vector<std::pair<std::string, std::string>> kDistortedSides = {{"left", "boundary, x < 0.001"},
-                                                                          {"right", "boundary, x > 0.999"},
-                                                                          {"bottom", "boundary, y < 0.001"},
-                                                                          {"top", "boundary, y > 0.999"}};
-
-/// The unit square as 2 x 2 squares from an Exodus file; the right-hand cells list their vertices
-/// from another corner (neighbouring trees with differently oriented reference frames).
-inline std::shared_ptr<mesh::CoarseMesh> rotatedSquares() {
-  std::vector<double> x = {0, 0.5, 1, 0, 0.5, 1, 0, 0.5, 1};
-  std::vector<double> y = {0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1};
+/// The four cells of a 2 x 2 grid of vertices v = 3 j + i (counter-clockwise); the right-hand cells
+/// list their vertices from another corner, so that neighbouring trees have differently oriented
+/// reference frames.
+inline std::vector<std::array<int, 4>> twoByTwoQuads() {
   std::vector<std::array<int, 4>> quads;
   for (int j = 0; j < 2; ++j)
     for (int i = 0; i < 2; ++i) {
@@ -98,10 +73,28 @@ inline std::shared_ptr<mesh::CoarseMesh> rotatedSquares() {
       else
         quads.push_back({v, v + 1, v + 4, v + 3});
     }
-  return exodusCoarseMesh(x, y, quads, "rotated");
+  return quads;
 }
 
-// ---------------------------------------------------------------------------------------------
-// 1. A discrete solution that satisfies the step equations exactly has eta = 0.
+/// The unit square as 2 x 2 distorted quadrilaterals (interior vertex and side midpoints moved);
+/// the second and fourth cells list their vertices from another corner, so that neighbouring
+/// trees have differently oriented reference frames.
+inline std::shared_ptr<mesh::CoarseMesh> distortedSquare(const RCP<const Comm>& comm = Tpetra::getDefaultComm()) {
+  std::vector<double> x = {0, 0.4, 1, 0, 0.6, 1, 0, 0.55, 1};
+  std::vector<double> y = {0, 0, 0, 0.45, 0.42, 0.6, 1, 1, 1};
+  return exodusCoarseMesh(x, y, twoByTwoQuads(), "distorted", comm);
+}
+inline const std::vector<std::pair<std::string, std::string>> kDistortedSides = {{"left", "boundary, x < 0.001"},
+                                                                          {"right", "boundary, x > 0.999"},
+                                                                          {"bottom", "boundary, y < 0.001"},
+                                                                          {"top", "boundary, y > 0.999"}};
+
+/// The unit square as 2 x 2 squares from an Exodus file; the right-hand cells list their vertices
+/// from another corner (neighbouring trees with differently oriented reference frames).
+inline std::shared_ptr<mesh::CoarseMesh> rotatedSquares() {
+  std::vector<double> x = {0, 0.5, 1, 0, 0.5, 1, 0, 0.5, 1};
+  std::vector<double> y = {0, 0, 0, 0.5, 0.5, 0.5, 1, 1, 1};
+  return exodusCoarseMesh(x, y, twoByTwoQuads(), "rotated");
+}
 
 }  // namespace signorini::test

@@ -91,7 +91,8 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
           for (int a = 0; a < 4; ++a) {
             const double ks = (Q.s0 + ((a & 1) ? Q.size : 0) - K.s0) / K.size;
             const double kr = (Q.r0 + ((a & 2) ? Q.size : 0) - K.r0) / K.size;
-            N[a][0] = (1 - ks) * (1 - kr), N[a][1] = ks * (1 - kr), N[a][2] = (1 - ks) * kr, N[a][3] = ks * kr;
+            double dNds[4], dNdr[4];
+            q1Shape(ks, kr, N[a], dNds, dNdr);
           }
           for (int f = 0; f < nf; ++f) {
             const double* u = Q.payload + 4 * f;

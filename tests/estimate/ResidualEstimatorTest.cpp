@@ -128,6 +128,9 @@ struct EstimatorCase {
 const std::vector<std::pair<std::string, std::string>> kSides = {
     {"left", "left"}, {"right", "right"}, {"bottom", "bottom"}, {"top", "top"}};
 
+// ---------------------------------------------------------------------------------------------
+// 1. A discrete solution that satisfies the step equations exactly has eta = 0.
+
 enum class CoarseKind { Rectangle, RotatedSquares, Distorted };
 
 struct ExactCase {
