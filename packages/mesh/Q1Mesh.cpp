@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <p4est_ghost.h>
 #include <p4est_lnodes.h>
@@ -17,22 +18,128 @@ namespace signorini::mesh {
 
 double BoundaryEdge::length() const { return std::hypot(x[1][0] - x[0][0], x[1][1] - x[0][1]); }
 
-Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const Comm> comm) : comm_(comm) {
-  p4est_t* p4est = forest.p4est();
-  const CoarseMesh& coarse = forest.coarse();
+namespace {
+
+/// The Q1 nodes at the corners of the local cells: overlap ids (owned first) with their global
+/// ids, and per corner (4 per cell, z-order) the node, or for a hanging corner the two end
+/// nodes of the coarser face it halves (second entry -1 at a regular corner).
+struct CornerNumbering {
+  LO owned = 0;
+  std::vector<GO> gids;
+  std::vector<std::array<LO, 2>> corner;
+};
+
+/// The general numbering: p4est lnodes (any forest, any number of ranks).
+CornerNumbering numberWithLnodes(p4est_t* p4est) {
   p4est_ghost_t* ghost = p4est_ghost_new(p4est, P4EST_CONNECT_FULL);
   p4est_lnodes_t* lnodes = p4est_lnodes_new(p4est, ghost, 1);
+  CornerNumbering out;
+  const LO numLocalNodes = lnodes->num_local_nodes;
+  out.owned = lnodes->owned_count;
+  out.gids.resize(numLocalNodes);
+  for (LO i = 0; i < out.owned; ++i) out.gids[i] = static_cast<GO>(lnodes->global_offset + i);
+  for (LO i = out.owned; i < numLocalNodes; ++i) out.gids[i] = static_cast<GO>(lnodes->nonlocal_nodes[i - out.owned]);
+  const LO numCells = static_cast<LO>(p4est->local_num_quadrants);
+  out.corner.resize(4 * static_cast<size_t>(numCells));
+  for (LO e = 0; e < numCells; ++e) {
+    for (int c = 0; c < 4; ++c) out.corner[4 * e + c] = {lnodes->element_nodes[4 * e + c], -1};
+    // p4est lnodes encoding: the hanging corner lists the parent's node at that corner; the
+    // other end of the parent's face is the node at corner cid.
+    const p4est_lnodes_code_t fc = lnodes->face_code[e];
+    if (!fc) continue;
+    const int cid = fc & 3;
+    int work = fc >> 2;
+    for (int i = 0; i < 2; ++i, work >>= 1)
+      if (work & 1) out.corner[4 * e + (cid ^ 3 ^ (1 << i))][1] = lnodes->element_nodes[4 * e + cid];
+  }
+  p4est_lnodes_destroy(lnodes);
+  p4est_ghost_destroy(ghost);
+  return out;
+}
 
-  // Maps: owned nodes are global_offset + [0, owned_count); overlap = owned then nonlocal.
-  const LO numLocalNodes = lnodes->num_local_nodes, owned = lnodes->owned_count;
-  std::vector<GO> gids(numLocalNodes);
-  for (LO i = 0; i < owned; ++i) gids[i] = static_cast<GO>(lnodes->global_offset + i);
-  for (LO i = owned; i < numLocalNodes; ++i) gids[i] = static_cast<GO>(lnodes->nonlocal_nodes[i - owned]);
+/// The same numbering for a forest of one tree on one rank, without p4est's general iteration
+/// over volumes, faces and corners (which costs about as much as an unconstrained solve on
+/// the membrane's meshes): the corner points of all cells in one hash table of their integer
+/// coordinates; a corner point is hanging exactly when it is the midpoint of a face of another
+/// cell (2:1 balance: that cell is one level coarser and the face's end points are regular).
+/// Regular points are numbered in the order the cells first touch them.
+CornerNumbering numberOneTreeOneRank(p4est_t* p4est) {
+  p4est_tree_t* tree = p4est_tree_array_index(p4est->trees, 0);
+  const size_t numCells = tree->quadrants.elem_count;
+  size_t capacity = 16;
+  while (capacity < 8 * numCells) capacity <<= 1;
+  const int shift = 64 - __builtin_ctzll(capacity);
+  constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
+  std::vector<std::uint64_t> keys(capacity, kEmpty);
+  std::vector<LO> pointOf(capacity);
+  LO numPoints = 0;
+  // Point id of (x, y); a new id if absent and insert, else -1 if absent.
+  auto point = [&](p4est_qcoord_t x, p4est_qcoord_t y, bool insert) -> LO {
+    const std::uint64_t key = (static_cast<std::uint64_t>(x) << 32) | static_cast<std::uint32_t>(y);
+    for (size_t slot = (key * 0x9E3779B97F4A7C15ull) >> shift;; slot = (slot + 1) & (capacity - 1)) {
+      if (keys[slot] == key) return pointOf[slot];
+      if (keys[slot] == kEmpty) {
+        if (!insert) return -1;
+        keys[slot] = key;
+        return pointOf[slot] = numPoints++;
+      }
+    }
+  };
+  std::vector<LO> cornerPoint(4 * numCells);
+  for (size_t e = 0; e < numCells; ++e) {
+    const auto* q = p4est_quadrant_array_index(&tree->quadrants, e);
+    const p4est_qcoord_t len = P4EST_QUADRANT_LEN(q->level);
+    for (int c = 0; c < 4; ++c) cornerPoint[4 * e + c] = point(q->x + ((c & 1) ? len : 0), q->y + ((c & 2) ? len : 0), true);
+  }
+  std::vector<std::array<LO, 2>> ends(numPoints, {-1, -1});  // a hanging point's face end points
+  for (size_t e = 0; e < numCells; ++e) {
+    const auto* q = p4est_quadrant_array_index(&tree->quadrants, e);
+    const p4est_qcoord_t len = P4EST_QUADRANT_LEN(q->level), half = len / 2;
+    SIGNORINI_ASSERT(half > 0, "cell at p4est's finest level");
+    const p4est_qcoord_t mid[4][2] = {{q->x, q->y + half}, {q->x + len, q->y + half}, {q->x + half, q->y},
+                                      {q->x + half, q->y + len}};
+    for (int f = 0; f < 4; ++f) {
+      const LO m = point(mid[f][0], mid[f][1], false);
+      if (m >= 0) ends[m] = {cornerPoint[4 * e + p4est_face_corners[f][0]], cornerPoint[4 * e + p4est_face_corners[f][1]]};
+    }
+  }
+  std::vector<LO> node(numPoints, -1);
+  CornerNumbering out;
+  for (size_t k = 0; k < 4 * numCells; ++k) {  // first touch order
+    const LO p = cornerPoint[k];
+    if (ends[p][0] < 0 && node[p] < 0) node[p] = out.owned++;
+  }
+  out.gids.resize(out.owned);
+  for (LO i = 0; i < out.owned; ++i) out.gids[i] = i;
+  out.corner.resize(4 * numCells);
+  for (size_t k = 0; k < 4 * numCells; ++k) {
+    const LO p = cornerPoint[k];
+    if (ends[p][0] < 0) {
+      out.corner[k] = {node[p], -1};
+    } else {
+      out.corner[k] = {node[ends[p][0]], node[ends[p][1]]};
+      SIGNORINI_ASSERT(out.corner[k][0] >= 0 && out.corner[k][1] >= 0, "hanging node on a hanging face (forest not 2:1 balanced)");
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const Comm> comm, Numbering how)
+    : comm_(comm) {
+  p4est_t* p4est = forest.p4est();
+  const CoarseMesh& coarse = forest.coarse();
+  const bool direct = how == Numbering::automatic && p4est->mpisize == 1 && p4est->connectivity->num_trees == 1;
+  const CornerNumbering numbering = direct ? numberOneTreeOneRank(p4est) : numberWithLnodes(p4est);
+
+  // Maps: owned nodes are contiguous by rank; overlap = owned then nonlocal.
+  const LO numLocalNodes = static_cast<LO>(numbering.gids.size()), owned = numbering.owned;
+  const auto& gids = numbering.gids;
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  // lnodes numbers the owned nodes contiguously by rank: a contiguous map (Amesos2 and MueLu's
-  // coarse solver need one).
+  // A contiguous map (Amesos2 and MueLu's coarse solver need one).
   ownedMap_ = Teuchos::rcp(new Map(invalid, static_cast<size_t>(owned), 0, comm));
-  SIGNORINI_ASSERT(owned == 0 || ownedMap_->getMinGlobalIndex() == gids[0], "lnodes owned nodes are not contiguous");
+  SIGNORINI_ASSERT(owned == 0 || ownedMap_->getMinGlobalIndex() == gids[0], "owned nodes are not contiguous");
   overlapMap_ = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GO>(gids.data(), numLocalNodes), 0, comm));
   importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(ownedMap_, overlapMap_));
   exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(*importer_));  // the reverse of importer_
@@ -64,25 +171,12 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
         const auto p = coarse.mapPoint(static_cast<int>(t), s, r);
         cornerCoordsHost(e, c, 0) = p[0];
         cornerCoordsHost(e, c, 1) = p[1];
-        const LO n = lnodes->element_nodes[4 * e + c];
-        cornerDofsHost(e, c, 0) = n;
-        cornerWeightsHost(e, c, 0) = 1.0;
-        cornerDofsHost(e, c, 1) = -1;
-        cornerWeightsHost(e, c, 1) = 0.0;
-      }
-      // Hanging corners: value = average of the parent face's end nodes (p4est lnodes encoding:
-      // the hanging corner lists the parent's node at that corner; the other end is corner cid).
-      const p4est_lnodes_code_t fc = lnodes->face_code[e];
-      if (fc) {
-        const int cid = fc & 3;
-        int work = fc >> 2;
-        for (int i = 0; i < 2; ++i, work >>= 1) {
-          if (!(work & 1)) continue;
-          const int k = cid ^ 3 ^ (1 << i);
-          cornerWeightsHost(e, k, 0) = 0.5;
-          cornerDofsHost(e, k, 1) = lnodes->element_nodes[4 * e + cid];
-          cornerWeightsHost(e, k, 1) = 0.5;
-        }
+        const auto& nodes = numbering.corner[4 * e + c];
+        const bool hanging = nodes[1] >= 0;  // the value is the mean of the face's end nodes
+        cornerDofsHost(e, c, 0) = nodes[0];
+        cornerWeightsHost(e, c, 0) = hanging ? 0.5 : 1.0;
+        cornerDofsHost(e, c, 1) = nodes[1];
+        cornerWeightsHost(e, c, 1) = hanging ? 0.5 : 0.0;
       }
       for (int c = 0; c < 4; ++c)
         if (cornerDofsHost(e, c, 1) < 0)
@@ -163,8 +257,6 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
     for (LO i = 0; i < numLocalNodes; ++i) nodeCoords_[i] = {hx(i, 0), hy(i, 0)};
   }
 
-  p4est_lnodes_destroy(lnodes);
-  p4est_ghost_destroy(ghost);
 }
 
 LO Q1Mesh::locate(double x, double y, double& s, double& r) const {
