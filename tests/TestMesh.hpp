@@ -12,6 +12,16 @@
 
 namespace signorini::test {
 
+/// Refines, `times` times, the cells of tree 0 whose closure contains the point (s, r) of the
+/// tree's reference square (not balanced).
+inline void refineAt(mesh::Forest& f, double s, double r, int times) {
+  for (int i = 0; i < times; ++i)
+    f.refineIf([&](int tree, const p4est_quadrant_t& q) {
+      const double len = static_cast<double>(P4EST_QUADRANT_LEN(q.level)) / P4EST_ROOT_LEN;
+      const double x = q.x / static_cast<double>(P4EST_ROOT_LEN), y = q.y / static_cast<double>(P4EST_ROOT_LEN);
+      return tree == 0 && s >= x && s <= x + len && r >= y && r <= y + len;
+    });
+}
 
 /// A forest on the rectangle with segments "left", "right", "bottom", "top" (one per side).
 struct TestMesh {

@@ -11,6 +11,7 @@
 #include <p4est_iterate.h>
 #include <Teuchos_CommHelpers.hpp>
 
+#include "CoordinateTable.hpp"
 #include "Error.hpp"
 #include "Q1Kernels.hpp"
 #include "ResidualEstimator.hpp"
@@ -216,14 +217,65 @@ struct FaceIteration {
 };
 }  // namespace detail
 
+/// How forEachInteriorFace finds the faces: p4est_iterate over a face ghost layer always, or
+/// (automatic) on one rank and one tree a walk over the +x and +y faces of every cell with a
+/// table of the cells' lower-left corners (the same pairs without p4est's general iteration).
+enum class FaceWalk { automatic, p4est };
+
+namespace detail {
+/// The faces of a 2:1 balanced forest of one tree on one rank: each interior face is the +x or
+/// +y face of the cell on its lower side, whose neighbour there has the same size, is one of
+/// two finer cells or is one level coarser.
+template <class Payload, class OnPair>
+void walkOneTreeOneRank(p4est_t* p4est, const std::vector<Payload>& local, OnPair& onPair) {
+  p4est_tree_t* tree = p4est_tree_array_index(p4est->trees, 0);
+  const LO n = static_cast<LO>(tree->quadrants.elem_count);
+  auto quadrant = [&](LO e) { return p4est_quadrant_array_index(&tree->quadrants, static_cast<size_t>(e)); };
+  mesh::CoordinateTable cells(static_cast<size_t>(n));
+  for (LO e = 0; e < n; ++e) cells.insert(quadrant(e)->x, quadrant(e)->y, e);
+  auto side = [&](LO e, int face) { return FaceSide<Payload>{&local[e], e, face}; };
+  for (LO e = 0; e < n; ++e) {
+    const auto* q = quadrant(e);
+    const p4est_qcoord_t len = P4EST_QUADRANT_LEN(q->level);
+    for (int along = 0; along < 2; ++along) {  // along x: face 1 against the neighbour's face 0; along y: 3 against 2
+      const int face = 2 * along + 1;
+      const p4est_qcoord_t x = along == 0 ? q->x + len : q->x, y = along == 0 ? q->y : q->y + len;
+      if (x >= P4EST_ROOT_LEN || y >= P4EST_ROOT_LEN) continue;  // domain boundary
+      const LO m = cells.find(x, y);
+      if (m >= 0 && quadrant(m)->level == q->level) {
+        onPair(side(e, face), side(m, face - 1));
+      } else if (m >= 0 && quadrant(m)->level == q->level + 1) {  // two finer neighbours
+        const LO m2 = cells.find(along == 0 ? x : x + len / 2, along == 0 ? y + len / 2 : y);
+        SIGNORINI_ASSERT(m2 >= 0 && quadrant(m2)->level == q->level + 1, "forest not 2:1 balanced at cell " << m);
+        onPair(side(m, face - 1), side(e, face));
+        onPair(side(m2, face - 1), side(e, face));
+      } else if (m >= 0) {  // a coarser neighbour starting at the same point
+        SIGNORINI_ASSERT(quadrant(m)->level == q->level - 1, "forest not 2:1 balanced at cell " << e);
+        onPair(side(e, face), side(m, face - 1));
+      } else {  // a coarser neighbour starting half its size earlier
+        const LO c = cells.find(along == 0 ? x : x - len, along == 0 ? y - len : y);
+        SIGNORINI_ASSERT(c >= 0 && quadrant(c)->level == q->level - 1, "no face neighbour of cell " << e);
+        onPair(side(e, face), side(c, face - 1));
+      }
+    }
+  }
+}
+}  // namespace detail
+
 /// Calls onPair(A, B) for every interior face with a local cell on at least one side: A's face is
 /// the whole fine edge, B the (equal or coarser) neighbour; a 2:1 face gives one call per fine
 /// half. The payloads of the neighbours on other ranks come from p4est's face ghost layer;
-/// onGhosts(ghosts) is called once they have arrived.
+/// onGhosts(ghosts) is called once they have arrived (with none on the direct walk).
 template <class Payload, class OnGhosts, class OnPair>
 void forEachInteriorFace(const mesh::Forest& forest, const std::vector<Payload>& local, OnGhosts onGhosts,
-                         OnPair onPair) {
+                         OnPair onPair, FaceWalk walk = FaceWalk::automatic) {
   p4est_t* p4est = forest.p4est();
+  if (walk == FaceWalk::automatic && p4est->mpisize == 1 && p4est->connectivity->num_trees == 1) {
+    const std::vector<Payload> none;
+    onGhosts(none);
+    detail::walkOneTreeOneRank(p4est, local, onPair);
+    return;
+  }
   p4est_ghost_t* ghost = p4est_ghost_new(p4est, P4EST_CONNECT_FACE);
   std::vector<Payload> ghosts(ghost->ghosts.elem_count);
   std::vector<void*> mirrors(ghost->mirrors.elem_count);

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 
 #include <p4est_ghost.h>
 #include <p4est_lnodes.h>
@@ -12,6 +11,7 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "CoordinateTable.hpp"
 #include "Error.hpp"
 
 namespace signorini::mesh {
@@ -66,30 +66,18 @@ CornerNumbering numberWithLnodes(p4est_t* p4est) {
 CornerNumbering numberOneTreeOneRank(p4est_t* p4est) {
   p4est_tree_t* tree = p4est_tree_array_index(p4est->trees, 0);
   const size_t numCells = tree->quadrants.elem_count;
-  size_t capacity = 16;
-  while (capacity < 8 * numCells) capacity <<= 1;
-  const int shift = 64 - __builtin_ctzll(capacity);
-  constexpr std::uint64_t kEmpty = ~std::uint64_t{0};
-  std::vector<std::uint64_t> keys(capacity, kEmpty);
-  std::vector<LO> pointOf(capacity);
+  CoordinateTable points(4 * numCells);
   LO numPoints = 0;
-  // Point id of (x, y); a new id if absent and insert, else -1 if absent.
-  auto point = [&](p4est_qcoord_t x, p4est_qcoord_t y, bool insert) -> LO {
-    const std::uint64_t key = (static_cast<std::uint64_t>(x) << 32) | static_cast<std::uint32_t>(y);
-    for (size_t slot = (key * 0x9E3779B97F4A7C15ull) >> shift;; slot = (slot + 1) & (capacity - 1)) {
-      if (keys[slot] == key) return pointOf[slot];
-      if (keys[slot] == kEmpty) {
-        if (!insert) return -1;
-        keys[slot] = key;
-        return pointOf[slot] = numPoints++;
-      }
-    }
+  auto point = [&](p4est_qcoord_t x, p4est_qcoord_t y) {
+    const LO p = points.insert(x, y, numPoints);
+    if (p == numPoints) ++numPoints;
+    return p;
   };
   std::vector<LO> cornerPoint(4 * numCells);
   for (size_t e = 0; e < numCells; ++e) {
     const auto* q = p4est_quadrant_array_index(&tree->quadrants, e);
     const p4est_qcoord_t len = P4EST_QUADRANT_LEN(q->level);
-    for (int c = 0; c < 4; ++c) cornerPoint[4 * e + c] = point(q->x + ((c & 1) ? len : 0), q->y + ((c & 2) ? len : 0), true);
+    for (int c = 0; c < 4; ++c) cornerPoint[4 * e + c] = point(q->x + ((c & 1) ? len : 0), q->y + ((c & 2) ? len : 0));
   }
   std::vector<std::array<LO, 2>> ends(numPoints, {-1, -1});  // a hanging point's face end points
   for (size_t e = 0; e < numCells; ++e) {
@@ -99,7 +87,7 @@ CornerNumbering numberOneTreeOneRank(p4est_t* p4est) {
     const p4est_qcoord_t mid[4][2] = {{q->x, q->y + half}, {q->x + len, q->y + half}, {q->x + half, q->y},
                                       {q->x + half, q->y + len}};
     for (int f = 0; f < 4; ++f) {
-      const LO m = point(mid[f][0], mid[f][1], false);
+      const LO m = points.find(mid[f][0], mid[f][1]);
       if (m >= 0) ends[m] = {cornerPoint[4 * e + p4est_face_corners[f][0]], cornerPoint[4 * e + p4est_face_corners[f][1]]};
     }
   }

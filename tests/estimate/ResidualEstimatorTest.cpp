@@ -29,6 +29,8 @@
 #include "Error.hpp"
 #include "ExodusMesh.hpp"
 #include "../QuadMeshes.hpp"
+#include "../TestMesh.hpp"
+#include "EstimatorTools.hpp"
 #include "MpiComm.hpp"
 #include "ProblemData.hpp"
 #include "Q1Assembler.hpp"
@@ -598,6 +600,41 @@ TEST(ResidualEstimatorScaling, PhysicalScalingDividesByBetaKSquared) {
   EXPECT_NEAR(physical.s0, step.s0 / std::sqrt(c), 1e-12 * std::max(physical.s0, 1e-300));
   EXPECT_NEAR(physical.s1, step.s1, 1e-12 * std::max(step.s1, 1e-300));
   EXPECT_NEAR(physical.eta, physical.etaStar + physical.s0 + physical.s1, 1e-12 * physical.eta);
+}
+
+TEST(FaceWalk, DirectWalkOfOneTreeGivesP4estsFacePairs) {
+  // Interior faces of a graded forest of one tree: conforming faces and 2:1 faces with the fine
+  // side on either side in both directions.
+  if (Tpetra::getDefaultComm()->getSize() > 1) GTEST_SKIP() << "the direct walk serves one rank";
+  test::TestMesh tm(0.0, 2.0, 0.0, 1.0, 1, 1, 2);
+  ASSERT_EQ(tm.forest->p4est()->connectivity->num_trees, 1);
+  test::refineAt(*tm.forest, 0.4, 0.6, 4);
+  test::refineAt(*tm.forest, 0.999, 0.001, 3);
+  tm.forest->balance();
+  const auto& level = tm.build().cellLevel();
+  const std::vector<int> payload(level.size(), 0);
+  int hangingHalves = 0;
+  auto pairs = [&](estimate::FaceWalk walk) {
+    std::vector<std::array<int, 4>> out;  // A's cell and face, B's cell and face
+    hangingHalves = 0;
+    estimate::forEachInteriorFace<int>(
+        *tm.forest, payload, [](const std::vector<int>&) {},
+        [&](const estimate::FaceSide<int>& a, const estimate::FaceSide<int>& b) {
+          EXPECT_GE(level[a.local], level[b.local]);  // A is the fine side
+          std::array<int, 4> p{a.local, a.face, b.local, b.face};
+          if (level[a.local] == level[b.local] && b.local < a.local) p = {b.local, b.face, a.local, a.face};
+          hangingHalves += level[a.local] > level[b.local];
+          out.push_back(p);
+        },
+        walk);
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  const auto viaP4est = pairs(estimate::FaceWalk::p4est);
+  const int hangingViaP4est = hangingHalves;
+  EXPECT_EQ(pairs(estimate::FaceWalk::automatic), viaP4est);
+  EXPECT_EQ(hangingHalves, hangingViaP4est);
+  EXPECT_GT(hangingHalves, 16);
 }
 
 TEST(ResidualEstimatorParameters, ValidListIsDocumentedAndChecked) {

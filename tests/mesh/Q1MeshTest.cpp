@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <array>
-#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -36,14 +35,8 @@ TEST(Q1Mesh, DirectNumberingOfOneTreeEqualsLnodes) {
   ASSERT_EQ(tm.forest->p4est()->connectivity->num_trees, 1);
   // Deep refinements inside and at a corner: hanging nodes on faces of all four orientations and
   // at three levels.
-  for (const auto& [s, r, times] : std::vector<std::tuple<double, double, int>>{{0.4, 0.6, 4}, {0.999, 0.001, 3}}) {
-    for (int i = 0; i < times; ++i)
-      tm.forest->refineIf([&, s = s, r = r](int, const p4est_quadrant_t& q) {
-        const double len = static_cast<double>(P4EST_QUADRANT_LEN(q.level)) / P4EST_ROOT_LEN;
-        const double x = q.x / static_cast<double>(P4EST_ROOT_LEN), y = q.y / static_cast<double>(P4EST_ROOT_LEN);
-        return s >= x && s <= x + len && r >= y && r <= y + len;
-      });
-  }
+  test::refineAt(*tm.forest, 0.4, 0.6, 4);
+  test::refineAt(*tm.forest, 0.999, 0.001, 3);
   tm.forest->balance();
   const mesh::Q1Mesh direct(*tm.forest, *tm.segments, Tpetra::getDefaultComm());
   const mesh::Q1Mesh lnodes(*tm.forest, *tm.segments, Tpetra::getDefaultComm(), mesh::Q1Mesh::Numbering::lnodes);

@@ -13,16 +13,7 @@ using namespace signorini;
 
 namespace {
 
-/// Refines, `times` times, the cells touching the point (s, r) of tree 0's reference square.
-void refineAt(mesh::Forest& f, double s, double r, int times) {
-  for (int i = 0; i < times; ++i) {
-    f.refineIf([&](int tree, const p4est_quadrant_t& q) {
-      const double len = static_cast<double>(P4EST_QUADRANT_LEN(q.level)) / P4EST_ROOT_LEN;
-      const double x = q.x / static_cast<double>(P4EST_ROOT_LEN), y = q.y / static_cast<double>(P4EST_ROOT_LEN);
-      return tree == 0 && s >= x && s <= x + len && r >= y && r <= y + len;
-    });
-  }
-}
+using test::refineAt;
 
 TEST(Balance, LeavesAtMostOneHangingNodePerEdge) {
   test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 1, 1, 1);
