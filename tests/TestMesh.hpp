@@ -55,6 +55,14 @@ struct TestMesh {
     }
     forest->partition();
   }
+  /// Refines tree 0 deeply inside (four times around (0.4, 0.6)) and at a corner (three times at
+  /// (0.999, 0.001)), then balances (no partition): hanging nodes on faces of all four
+  /// orientations, at three levels.
+  void refineGraded() {
+    refineAt(*forest, 0.4, 0.6, 4);
+    refineAt(*forest, 0.999, 0.001, 3);
+    forest->balance();
+  }
   const mesh::Q1Mesh& build() {
     mesh = std::make_unique<mesh::Q1Mesh>(*forest, *segments, Tpetra::getDefaultComm());
     return *mesh;

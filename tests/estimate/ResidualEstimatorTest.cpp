@@ -608,9 +608,7 @@ TEST(FaceWalk, DirectWalkOfOneTreeGivesP4estsFacePairs) {
   if (Tpetra::getDefaultComm()->getSize() > 1) GTEST_SKIP() << "the direct walk serves one rank";
   test::TestMesh tm(0.0, 2.0, 0.0, 1.0, 1, 1, 2);
   ASSERT_EQ(tm.forest->p4est()->connectivity->num_trees, 1);
-  test::refineAt(*tm.forest, 0.4, 0.6, 4);
-  test::refineAt(*tm.forest, 0.999, 0.001, 3);
-  tm.forest->balance();
+  tm.refineGraded();
   const auto& level = tm.build().cellLevel();
   const std::vector<int> payload(level.size(), 0);
   int hangingHalves = 0;

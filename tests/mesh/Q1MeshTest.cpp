@@ -33,11 +33,7 @@ TEST(Q1Mesh, DirectNumberingOfOneTreeEqualsLnodes) {
   if (Tpetra::getDefaultComm()->getSize() > 1) GTEST_SKIP() << "the direct numbering serves one rank";
   test::TestMesh tm(0.0, 2.0, 0.0, 1.0, 1, 1, 2);
   ASSERT_EQ(tm.forest->p4est()->connectivity->num_trees, 1);
-  // Deep refinements inside and at a corner: hanging nodes on faces of all four orientations and
-  // at three levels.
-  test::refineAt(*tm.forest, 0.4, 0.6, 4);
-  test::refineAt(*tm.forest, 0.999, 0.001, 3);
-  tm.forest->balance();
+  tm.refineGraded();
   const mesh::Q1Mesh direct(*tm.forest, *tm.segments, Tpetra::getDefaultComm());
   const mesh::Q1Mesh lnodes(*tm.forest, *tm.segments, Tpetra::getDefaultComm(), mesh::Q1Mesh::Numbering::lnodes);
 
