@@ -58,8 +58,8 @@ CornerNumbering numberWithLnodes(p4est_t* p4est) {
 }
 
 /// The same numbering for a forest of one tree on one rank, without p4est's general iteration
-/// over volumes, faces and corners (which costs about as much as an unconstrained solve on
-/// the membrane's meshes): the corner points of all cells in one hash table of their integer
+/// over volumes, faces and corners (which cost more than an unconstrained solve per step of the
+/// membrane benchmark): the corner points of all cells in one hash table of their integer
 /// coordinates; a corner point is hanging exactly when it is the midpoint of a face of another
 /// cell (2:1 balance: that cell is one level coarser and the face's end points are regular).
 /// Regular points are numbered in the order the cells first touch them.
