@@ -35,7 +35,7 @@ class Q1Mesh {
 
   /// How the nodes are found: p4est lnodes always, or (automatic) a direct numbering of the
   /// corner points when the forest has one tree on one rank (the same nodes and constraints,
-  /// numbered in another order; the whole constructor 2.1 -> 0.75 unconstrained solves per step
+  /// numbered in another order; the whole constructor 2.3 -> 0.75 unconstrained solves per step
   /// of the membrane benchmark).
   enum class Numbering { automatic, lnodes };
   /// \p forest must be 2:1 balanced (Forest::balance()).
