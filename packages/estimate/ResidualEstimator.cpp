@@ -6,7 +6,8 @@
 ///    + beta k^2 kappa Laplace(u_h), the Laplacian of the bilinear field through the inverse
 ///    bilinear map (non-zero on non-rectangular cells); exact from r's corner values where r is
 ///    bilinear (parallelograms, constant f), else 3x3 Gauss;
-///  - interior edges (host, p4est_iterate over faces with the face ghost layer): R = -(beta k^2 / 2) J,
+///  - interior edges (host, forEachInteriorFace: p4est_iterate with the face ghost layer, or the
+///    direct walk on one tree and one rank): R = -(beta k^2 / 2) J,
 ///    J = [kappa du_h/dn] (linear along the edge between parallelograms: integrated exactly from
 ///    its end values; else 3-point Gauss). Every cell K adjacent to an edge E gets h_K ||R||^2_E =
 ///    h_K (beta k^2 / 2)^2 ||J||^2_E, so E adds (h_K + h_K') (beta k^2)^2 ||J||^2_E / 4 in total: the jump is shared
@@ -76,7 +77,7 @@ double affineNormalDerivative(const CellPayload& c, double s, double r, const do
   return ((xr1 * us - xs1 * ur) * n[0] + (xs0 * ur - xr0 * us) * n[1]) / det;
 }
 
-/// Context of the p4est_iterate face callback.
+/// Context of the face callback (forEachInteriorFace).
 struct FaceContext {
   const std::vector<CellPayload>* local;
   const std::vector<CellPayload>* ghosts;

@@ -111,8 +111,8 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
           for (int j = 0; j < 3; ++j) {
             const double s = R.s0 + kGp[i] * R.size, r = R.r0 + kGp[j] * R.size;
             const double w = kGw[i] * kGw[j] * R.size * R.size * coarse_.jacobianDeterminant(K.tree, s, r);
-            const double ks = (s - K.s0) / K.size, kr = (r - K.r0) / K.size;
-            const double N[4] = {(1 - ks) * (1 - kr), ks * (1 - kr), (1 - ks) * kr, ks * kr};
+            double N[4], dNds[4], dNdr[4];
+            q1Shape((s - K.s0) / K.size, (r - K.r0) / K.size, N, dNds, dNdr);
             for (int f = 0; f < nf; ++f) {
               const double u = valueAt(Q, f, s, r);
               for (int c = 0; c < 4; ++c) be[f][c] += w * u * N[c];

@@ -73,10 +73,7 @@ int solveJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativ
   }
   const double target = relativeTolerance * std::sqrt(start[0]);
   double rz = start[1];
-  {  // the initial residual may already be small enough
-    double rr[1] = {r.norm2()};
-    if (rr[0] <= target) return 0;
-  }
+  if (r.norm2() <= target) return 0;  // the initial residual may already be small enough
   auto dv = inverseDiagonal.getLocalViewDevice(Tpetra::Access::ReadOnly);
   for (int it = 1; it <= maxIterations; ++it) {
     A.apply(p, q);
