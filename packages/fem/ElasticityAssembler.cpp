@@ -4,7 +4,6 @@
 #include <limits>
 
 #include <Teuchos_CommHelpers.hpp>
-#include <Tpetra_FECrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
@@ -15,7 +14,6 @@
 
 namespace signorini::fem {
 
-using Matrix = Tpetra::FECrsMatrix<Scalar, LO, GO, Node>;
 
 namespace {
 
@@ -66,18 +64,18 @@ ElasticityAssembler::ElasticityAssembler(const mesh::Q1Mesh& mesh, std::vector<c
   dirichletView_ = deviceFlags(dirichlet_, dirichlet_.size(), "dirichlet");
   importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(ownedMap_, overlapMap_));
   exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(*importer_));
-  graph_ = q1Graph(mesh, 2, ownedMap_, overlapMap_, importer_);
+  pattern_ = std::make_unique<Q1Pattern>(mesh, 2, ownedMap_, overlapMap_, importer_);
 }
+
+ElasticityAssembler::~ElasticityAssembler() = default;
 
 RCP<CrsMatrix> ElasticityAssembler::assembleOperator(double massCoeff, double stiffCoeff, double rho,
                                                      const std::vector<char>& lumpAt) const {
   const auto lump = deviceFlags(lumpAt, dirichlet_.size(), "lump");
-  auto A = Teuchos::rcp(new Matrix(graph_));
-  A->beginAssembly();
+  auto A = pattern_->begin();
   {
-    if (toCol_.extent(0) != overlapMap_->getNodeNumElements()) toCol_ = overlapToColumns(*overlapMap_, *A->getColMap());
-    const auto toCol = toCol_;
-    auto local = A->getLocalMatrixDevice();
+    const auto toCol = pattern_->toColumn();
+    auto local = A.local;
     const auto X = mesh_.cornerCoords;
     const auto dofs = mesh_.cornerDofs;
     const auto wts = mesh_.cornerWeights;
@@ -135,19 +133,7 @@ RCP<CrsMatrix> ElasticityAssembler::assembleOperator(double massCoeff, double st
             }
         });
   }
-  A->endAssembly();
-  A->beginModify();
-  {
-    const auto colMap = A->getColMap();
-    for (LO i = 0; i < static_cast<LO>(ownedMap_->getNodeNumElements()); ++i)
-      if (dirichlet_[i]) {  // owned unknowns come first in the overlap order
-        const LO col = colMap->getLocalElement(ownedMap_->getGlobalElement(i));
-        const double one = 1.0;
-        A->replaceLocalValues(i, 1, &one, &col);
-      }
-  }
-  A->endModify();
-  return A;
+  return pattern_->end(A, dirichlet_);
 }
 
 void ElasticityAssembler::assembleLoad(const core::ExpressionList& f, double t, double scale, Vector& out,

@@ -8,21 +8,23 @@
 /// body forces, surface tractions, error norms and point values. Hanging nodes are eliminated
 /// through the mesh's corner constraints; Dirichlet unknowns (per component) get identity rows.
 #include <array>
+#include <memory>
 
 #include <Tpetra_Export.hpp>
-#include <Tpetra_FECrsGraph.hpp>
 #include <Tpetra_Import.hpp>
 
 #include "Assembler.hpp"
 
 namespace signorini::fem {
 
+class Q1Pattern;
+
 class ElasticityAssembler : public Assembler {
  public:
-  using Graph = Tpetra::FECrsGraph<LO, GO, Node>;
   /// \param dirichlet  flags on the overlap unknowns (2 per overlap node), e.g. from dirichletUnknowns().
   /// \param lambda, mu Lame parameters [force / area].
   ElasticityAssembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet, double lambda, double mu);
+  ~ElasticityAssembler() override;
 
   /// The Dirichlet unknowns of a problem: every component on "Dirichlet Segments", component c on
   /// "Dirichlet X/Y Segments".
@@ -33,7 +35,6 @@ class ElasticityAssembler : public Assembler {
   RCP<const Map> ownedMap() const override { return ownedMap_; }
   RCP<const Map> overlapMap() const override { return overlapMap_; }
   const std::vector<char>& dirichletFlags() const override { return dirichlet_; }
-  RCP<const Graph> graph() const { return graph_; }
 
   /// massCoeff * M_rho + stiffCoeff * K with the constructor's Lame parameters.
   RCP<CrsMatrix> assembleOperator(double massCoeff, double stiffCoeff, double rho,
@@ -65,8 +66,7 @@ class ElasticityAssembler : public Assembler {
   double lambda_, mu_;
   RCP<const Map> ownedMap_, overlapMap_;
   Kokkos::View<int*, DeviceType> dirichletView_;
-  RCP<Graph> graph_;
-  mutable Kokkos::View<LO*, DeviceType> toCol_;
+  std::unique_ptr<Q1Pattern> pattern_;  ///< the matrix's sparsity; creates and finishes it
   RCP<const Tpetra::Export<LO, GO, Node>> exporter_;
   RCP<const Tpetra::Import<LO, GO, Node>> importer_;
 };

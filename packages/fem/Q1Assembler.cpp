@@ -4,7 +4,6 @@
 #include <limits>
 
 #include <Teuchos_CommHelpers.hpp>
-#include <Tpetra_FECrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "AssemblyTools.hpp"
@@ -12,8 +11,6 @@
 #include "Q1Kernels.hpp"
 
 namespace signorini::fem {
-
-using Matrix = Tpetra::FECrsMatrix<Scalar, LO, GO, Node>;
 
 Q1Assembler::Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet)
     : mesh_(mesh), dirichlet_(std::move(dirichlet)) {
@@ -23,43 +20,31 @@ Q1Assembler::Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet)
   // Unknowns are nodes: the mesh's transfers serve the loads too.
   importer_ = Teuchos::rcpFromRef(mesh.ownedToOverlap());
   exporter_ = Teuchos::rcpFromRef(mesh.overlapToOwned());
-  graph_ = q1Graph(mesh, 1, mesh.ownedMap(), overlap, importer_);
+  pattern_ = std::make_unique<Q1Pattern>(mesh, 1, mesh.ownedMap(), overlap, importer_);
 }
+
+Q1Assembler::~Q1Assembler() = default;
 
 RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,
                                              const std::vector<char>& lumpMassAt) const {
-  auto A = Teuchos::rcp(new Matrix(graph_));
-  assembleInto(*A, *A, massCoeff * rho, stiffCoeff * kappa, lumpMassAt);
-  setDirichletRows(*A);
-  return A;
+  auto A = pattern_->begin();
+  assembleInto(A.local, A.local, massCoeff * rho, stiffCoeff * kappa, lumpMassAt);
+  return pattern_->end(A, dirichlet_);
 }
 
 std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> Q1Assembler::assembleMassAndStiffness(const ProblemData& problem,
                                                                                 const std::vector<char>& lumpAt) const {
-  auto M = Teuchos::rcp(new Matrix(graph_)), K = Teuchos::rcp(new Matrix(graph_));
-  assembleInto(*M, *K, problem.density, problem.stiffness, lumpAt);
-  setDirichletRows(*M);
-  setDirichletRows(*K);
-  return {M, K};
+  auto M = pattern_->begin(), K = pattern_->begin();
+  assembleInto(M.local, K.local, problem.density, problem.stiffness, lumpAt);
+  return {pattern_->end(M, dirichlet_), pattern_->end(K, dirichlet_)};
 }
 
-void Q1Assembler::assembleInto(CrsMatrix& firstMatrix, CrsMatrix& secondMatrix, double cm, double ck,
+void Q1Assembler::assembleInto(const LocalMatrix& one, const LocalMatrix& two, double cm, double ck,
                                const std::vector<char>& lumpMassAt) const {
-  auto& first = static_cast<Matrix&>(firstMatrix);
-  auto& second = static_cast<Matrix&>(secondMatrix);
   const auto lump = deviceFlags(lumpMassAt, dirichlet_.size(), "lump");
-  const bool same = &first == &second;
-  first.beginAssembly();
-  if (!same) second.beginAssembly();
   {
-    // The owned+shared matrix may order its columns differently from the overlap map; the
-    // translation is the same for every matrix on graph_.
-    if (toCol_.extent(0) != mesh_.overlapMap()->getNodeNumElements())
-      toCol_ = overlapToColumns(*mesh_.overlapMap(), *first.getColMap());
-    const auto toCol = toCol_;
-    const auto one = first.getLocalMatrixDevice();
-    const auto two = second.getLocalMatrixDevice();
-    SIGNORINI_ASSERT(one.graph.entries.data() == two.graph.entries.data(), "both matrices on graph_");
+    const auto toCol = pattern_->toColumn();
+    SIGNORINI_ASSERT(one.graph.entries.data() == two.graph.entries.data(), "both matrices on one pattern");
     const auto rowPtr = one.graph.row_map;
     const auto cols = one.graph.entries;
     const auto v1 = one.values, v2 = two.values;
@@ -121,22 +106,6 @@ void Q1Assembler::assembleInto(CrsMatrix& firstMatrix, CrsMatrix& secondMatrix, 
             }
         });
   }
-  first.endAssembly();
-  if (!same) second.endAssembly();
-}
-
-void Q1Assembler::setDirichletRows(CrsMatrix& matrix) const {
-  auto& A = static_cast<Matrix&>(matrix);
-  A.beginModify();
-  const auto owned = mesh_.ownedMap();
-  const auto colMap = A.getColMap();
-  for (LO i = 0; i < static_cast<LO>(owned->getNodeNumElements()); ++i)
-    if (dirichlet_[i]) {  // overlap ids of owned nodes equal their owned ids
-      const LO col = colMap->getLocalElement(owned->getGlobalElement(i));
-      const double one = 1.0;
-      A.replaceLocalValues(i, 1, &one, &col);
-    }
-  A.endModify();
 }
 
 namespace {

@@ -5,8 +5,9 @@
 /// error norms against an exact solution and point evaluation (probes). Hanging nodes are
 /// eliminated through the corner constraints of the mesh; homogeneous Dirichlet nodes get
 /// identity rows and zero columns.
+#include <memory>
+
 #include <Tpetra_Export.hpp>
-#include <Tpetra_FECrsGraph.hpp>
 #include <Tpetra_Import.hpp>
 
 #include "Assembler.hpp"
@@ -15,11 +16,13 @@
 
 namespace signorini::fem {
 
+class Q1Pattern;
+
 class Q1Assembler : public Assembler {
  public:
-  using Graph = Tpetra::FECrsGraph<LO, GO, Node>;
   /// \param dirichlet  flags on the mesh's overlap map (from Q1Mesh::nodesOnSegments).
   Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet);
+  ~Q1Assembler() override;
 
   const mesh::Q1Mesh& mesh() const override { return mesh_; }
   int components() const override { return 1; }
@@ -71,21 +74,18 @@ class Q1Assembler : public Assembler {
   double area() const;
 
   const std::vector<char>& dirichletFlags() const override { return dirichlet_; }
-  RCP<const Graph> graph() const { return graph_; }
 
  private:
   const mesh::Q1Mesh& mesh_;
   std::vector<char> dirichlet_;
   Kokkos::View<int*, DeviceType> dirichletView_;
-  RCP<Graph> graph_;
-  /// Cell kernel shared by assembleOperator and assembleMassAndStiffness: mass part times cm into
-  /// \p first, stiffness part times ck into \p second (the same matrix for a combined operator);
-  /// both are Tpetra::FECrsMatrix on graph_.
-  void assembleInto(CrsMatrix& first, CrsMatrix& second, double cm, double ck,
+  std::unique_ptr<Q1Pattern> pattern_;  ///< the matrices' sparsity; creates and finishes them
+  using LocalMatrix = CrsMatrix::local_matrix_device_type;
+  /// Cell kernel shared by assembleOperator and assembleMassAndStiffness: mass part times cm summed
+  /// into \p first, stiffness part times ck into \p second (the same matrix for a combined
+  /// operator); both opened by pattern_. Dirichlet rows and columns stay empty.
+  void assembleInto(const LocalMatrix& first, const LocalMatrix& second, double cm, double ck,
                     const std::vector<char>& lumpMassAt) const;
-  /// Identity rows for the Dirichlet nodes (after the assembly; A is an FECrsMatrix on graph_).
-  void setDirichletRows(CrsMatrix& A) const;
-  mutable Kokkos::View<LO*, DeviceType> toCol_;  ///< overlap index -> column of the assembled matrices
   RCP<const Tpetra::Export<LO, GO, Node>> exporter_;
   RCP<const Tpetra::Import<LO, GO, Node>> importer_;
 };
