@@ -1,5 +1,6 @@
 #include "Q1Assembler.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -42,6 +43,7 @@ std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> Q1Assembler::assembleMassAndStiffness(
 void Q1Assembler::assembleInto(const LocalMatrix& one, const LocalMatrix& two, double cm, double ck,
                                const std::vector<char>& lumpMassAt) const {
   const auto lump = deviceFlags(lumpMassAt, dirichlet_.size(), "lump");
+  const bool anyLump = std::find(lumpMassAt.begin(), lumpMassAt.end(), 1) != lumpMassAt.end();
   {
     const auto toCol = pattern_->toColumn();
     SIGNORINI_ASSERT(one.graph.entries.data() == two.graph.entries.data(), "both matrices on one pattern");
@@ -55,13 +57,15 @@ void Q1Assembler::assembleInto(const LocalMatrix& one, const LocalMatrix& two, d
     Kokkos::parallel_for(
         "signorini::assembleOperator", Kokkos::RangePolicy<ExecSpace>(0, mesh_.numLocalCells()),
         KOKKOS_LAMBDA(const LO e) {
-          double Xe[4][2], Ke[4][4] = {}, Me[4][4] = {};
+          double Xe[4][2], Ke[4][4], Me[4][4];
           for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
           if (isParallelogram(Xe)) {  // closed forms (2x2 Gauss is exact too)
             q1ParallelogramMatrices(Xe, Me, Ke);
             for (int a = 0; a < 4; ++a)
               for (int b = 0; b < 4; ++b) Me[a][b] *= cm, Ke[a][b] *= ck;
           } else {
+            for (int a = 0; a < 4; ++a)
+              for (int b = 0; b < 4; ++b) Me[a][b] = Ke[a][b] = 0.0;
             for (int i = 0; i < 2; ++i)
               for (int j = 0; j < 2; ++j) {
                 double N[4], gx[4], gy[4];
@@ -99,7 +103,7 @@ void Q1Assembler::assembleInto(const LocalMatrix& one, const LocalMatrix& two, d
                   const auto at = offset(toCol(dof));
                   const double m = wab * Me[a][b];
                   // lumped: the mass coupling moves to the diagonal
-                  const auto massAt = row != dof && (lump(row) || lump(dof)) ? offset(toCol(row)) : at;
+                  const auto massAt = anyLump && row != dof && (lump(row) || lump(dof)) ? offset(toCol(row)) : at;
                   add(v1, massAt, m);
                   add(v2, at, wab * Ke[a][b]);
                 }

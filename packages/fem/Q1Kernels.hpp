@@ -65,16 +65,17 @@ KOKKOS_INLINE_FUNCTION void q1ParallelogramMatrices(const double X[4][2], double
   const double xr0 = X[2][0] - X[0][0], xr1 = X[2][1] - X[0][1];
   const double det = Kokkos::Experimental::fabs(xs0 * xr1 - xs1 * xr0);
   const double ss = xs0 * xs0 + xs1 * xs1, rr = xr0 * xr0 + xr1 * xr1, sr = xs0 * xr0 + xs1 * xr1;
+  // Both matrices are symmetric (each term below is symmetric in a and b, bit for bit).
   for (int a = 0; a < 4; ++a)
-    for (int b = 0; b < 4; ++b) {
+    for (int b = a; b < 4; ++b) {
       // signs of d phi / ds and d phi / dr (constant up to a factor 1 - r or r, 1 - s or s)
       const double sa = (a & 1) ? 1.0 : -1.0, sb = (b & 1) ? 1.0 : -1.0;
       const double ra = (a & 2) ? 1.0 : -1.0, rb = (b & 2) ? 1.0 : -1.0;
       const double Sss = sa * sb * (((a & 2) == (b & 2)) ? 2.0 : 1.0) / 6;
       const double Srr = ra * rb * (((a & 1) == (b & 1)) ? 2.0 : 1.0) / 6;
       const double SsrSym = (sa * rb + sb * ra) / 4;
-      M[a][b] = det * q1Mass36(a, b) / 36;
-      K[a][b] = (rr * Sss - sr * SsrSym + ss * Srr) / det;
+      M[a][b] = M[b][a] = det * q1Mass36(a, b) / 36;
+      K[a][b] = K[b][a] = (rr * Sss - sr * SsrSym + ss * Srr) / det;
     }
 }
 
