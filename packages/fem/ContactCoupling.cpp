@@ -160,18 +160,52 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
   auto row = [&](LO node) { return static_cast<LO>(nc * node + comp); };
   using Graph = Tpetra::FECrsGraph<LO, GO, Node>;
   using FEMatrix = Tpetra::FECrsMatrix<Scalar, LO, GO, Node>;
-  auto graph = Teuchos::rcp(new Graph(ownedRows, overlap, 4));
-  graph->beginAssembly();
-  for (size_t k = 0; k < localIds.size(); ++k) {
-    const auto& be = bedges[localIds[k]];
-    const GO seg = localEdgeSegment_[localIds[k]];
-    for (int p = 0; p < 2; ++p)
-      if (!dirichlet[row(be.node[p])])
-        graph->insertGlobalIndices(overlap->getGlobalElement(row(be.node[p])), Teuchos::tuple(seg));
+  using LocalMatrix = CrsMatrix::local_matrix_device_type;
+  // One rank: B is summed into local CRS arrays (columns: the segments) and built from them; several
+  // ranks: a finite element matrix whose endAssembly adds the shared rows to their owners.
+  const bool oneRank = comm_->getSize() == 1;
+  RCP<FEMatrix> feB;
+  LocalMatrix localB;
+  if (oneRank) {
+    const size_t nRows = overlap->getNodeNumElements();
+    std::vector<std::vector<LO>> segmentsOf(nRows);
+    for (size_t k = 0; k < localIds.size(); ++k) {
+      const auto& be = bedges[localIds[k]];
+      const LO seg = localEdgeSegment_[localIds[k]];
+      for (int p = 0; p < 2; ++p) {
+        auto& cols = segmentsOf[row(be.node[p])];
+        if (!dirichlet[row(be.node[p])] && std::find(cols.begin(), cols.end(), seg) == cols.end()) cols.push_back(seg);
+      }
+    }
+    LocalMatrix::row_map_type::non_const_type rowPtr("contactRows", nRows + 1);
+    auto rh = Kokkos::create_mirror_view(rowPtr);
+    rh(0) = 0;
+    for (size_t i = 0; i < nRows; ++i) rh(i + 1) = rh(i) + segmentsOf[i].size();
+    LocalMatrix::index_type::non_const_type entries("contactColumns", rh(nRows));
+    auto eh = Kokkos::create_mirror_view(entries);
+    for (size_t i = 0; i < nRows; ++i) {
+      std::sort(segmentsOf[i].begin(), segmentsOf[i].end());
+      std::copy(segmentsOf[i].begin(), segmentsOf[i].end(), &eh(rh(i)));
+    }
+    Kokkos::deep_copy(rowPtr, rh);
+    Kokkos::deep_copy(entries, eh);
+    LocalMatrix::values_type values("contactValues", rh(nRows));
+    localB = LocalMatrix("contactCoupling", static_cast<LO>(nRows), m, rh(nRows), values, rowPtr, entries);
+  } else {
+    auto graph = Teuchos::rcp(new Graph(ownedRows, overlap, 4));
+    graph->beginAssembly();
+    for (size_t k = 0; k < localIds.size(); ++k) {
+      const auto& be = bedges[localIds[k]];
+      const GO seg = localEdgeSegment_[localIds[k]];
+      for (int p = 0; p < 2; ++p)
+        if (!dirichlet[row(be.node[p])])
+          graph->insertGlobalIndices(overlap->getGlobalElement(row(be.node[p])), Teuchos::tuple(seg));
+    }
+    graph->endAssembly(segmentMap_, ownedRows);
+    feB = Teuchos::rcp(new FEMatrix(graph));
+    feB->beginAssembly();
+    localB = feB->getLocalMatrixDevice();
   }
-  graph->endAssembly(segmentMap_, ownedRows);
-  auto B = Teuchos::rcp(new FEMatrix(graph));
-  B->beginAssembly();
   {
     const LO ne = static_cast<LO>(localIds.size());
     Kokkos::View<double* [2][2], DeviceType> X("edgeX", ne);
@@ -180,7 +214,7 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
     auto Xh = Kokkos::create_mirror_view(X);
     auto rowsh = Kokkos::create_mirror_view(rows);
     auto colh = Kokkos::create_mirror_view(col);
-    const auto colMap = B->getColMap();
+    const auto colMap = oneRank ? segmentMap_ : feB->getColMap();
     for (LO k = 0; k < ne; ++k) {
       const auto& be = bedges[localIds[k]];
       for (int p = 0; p < 2; ++p) {
@@ -193,7 +227,7 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
     Kokkos::deep_copy(X, Xh);
     Kokkos::deep_copy(rows, rowsh);
     Kokkos::deep_copy(col, colh);
-    auto local = B->getLocalMatrixDevice();
+    auto local = localB;
     const double sign = unknowns.sign;
     // sign int_E phi_i ds = sign |E| / 2 for both end points of a straight edge.
     Kokkos::parallel_for(
@@ -205,8 +239,12 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
             if (rows(k, p) >= 0) local.sumIntoValues(rows(k, p), &c, 1, &half, false, kAtomicScatter);
         });
   }
-  B->endAssembly();
-  B_ = B;
+  if (oneRank) {
+    B_ = Teuchos::rcp(new CrsMatrix(localB, ownedRows, segmentMap_, segmentMap_, ownedRows, Teuchos::null, Teuchos::null));
+  } else {
+    feB->endAssembly();
+    B_ = feB;
+  }
 
   // Replicated edge data for the weighted obstacle kernel.
   edgeCoords_ = Kokkos::View<double* [4], DeviceType>("contactEdges", ne);
