@@ -12,6 +12,7 @@
 #include <Tpetra_FECrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
 
+#include "Error.hpp"
 #include "Q1Mesh.hpp"
 
 namespace signorini::fem {
@@ -124,7 +125,7 @@ class Q1Pattern {
           "signorini::q1PatternColumns", Kokkos::RangePolicy<ExecSpace>(0, nRows),
           KOKKOS_LAMBDA(const LO i) { toCol(i) = i; });
       toCol_ = toCol;
-      if (!overlap->isSameAs(*owned)) columnImporter_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(owned, overlap));
+      SIGNORINI_ASSERT(overlap->isSameAs(*owned), "on one rank every overlap unknown is owned");
       return;
     }
     Kokkos::DualView<size_t*, DeviceType> perRow("q1GraphRowLengths", overlap->getNodeNumElements());
@@ -182,7 +183,8 @@ class Q1Pattern {
           for (auto k = rh(i); k < rh(i + 1); ++k)
             if (ch(k) == i) values(k) = 1.0;
       Kokkos::deep_copy(f.local.values, values);
-      return Teuchos::rcp(new CrsMatrix(f.local, owned_, overlap_, owned_, owned_, columnImporter_, Teuchos::null));
+      // The column map equals the domain map: no importer.
+      return Teuchos::rcp(new CrsMatrix(f.local, owned_, overlap_, owned_, owned_, Teuchos::null, Teuchos::null));
     }
     f.fe->endAssembly();
     f.fe->beginModify();
@@ -204,7 +206,6 @@ class Q1Pattern {
   RCP<FEGraph> graph_;  // several ranks
   LocalMatrix::row_map_type rowPtr_;  // one rank
   LocalMatrix::index_type cols_;
-  RCP<const Tpetra::Import<LO, GO, Node>> columnImporter_;
   mutable Kokkos::View<LO*, DeviceType> toCol_;
 };
 

@@ -14,7 +14,6 @@
 
 namespace signorini::fem {
 
-
 namespace {
 
 /// The map of unknowns (2 g, 2 g + 1) of a node map, in the node map's local order.

@@ -43,73 +43,71 @@ std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> Q1Assembler::assembleMassAndStiffness(
 void Q1Assembler::assembleInto(const LocalMatrix& one, const LocalMatrix& two, double cm, double ck,
                                const std::vector<char>& lumpMassAt) const {
   const auto lump = deviceFlags(lumpMassAt, dirichlet_.size(), "lump");
-  const bool anyLump = std::find(lumpMassAt.begin(), lumpMassAt.end(), 1) != lumpMassAt.end();
-  {
-    const auto toCol = pattern_->toColumn();
-    SIGNORINI_ASSERT(one.graph.entries.data() == two.graph.entries.data(), "both matrices on one pattern");
-    const auto rowPtr = one.graph.row_map;
-    const auto cols = one.graph.entries;
-    const auto v1 = one.values, v2 = two.values;
-    const auto X = mesh_.cornerCoords;
-    const auto dofs = mesh_.cornerDofs;
-    const auto wts = mesh_.cornerWeights;
-    const auto dir = dirichletView_;
-    Kokkos::parallel_for(
-        "signorini::assembleOperator", Kokkos::RangePolicy<ExecSpace>(0, mesh_.numLocalCells()),
-        KOKKOS_LAMBDA(const LO e) {
-          double Xe[4][2], Ke[4][4], Me[4][4];
-          for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
-          if (isParallelogram(Xe)) {  // closed forms (2x2 Gauss is exact too)
-            q1ParallelogramMatrices(Xe, Me, Ke);
-            for (int a = 0; a < 4; ++a)
-              for (int b = 0; b < 4; ++b) Me[a][b] *= cm, Ke[a][b] *= ck;
-          } else {
-            for (int a = 0; a < 4; ++a)
-              for (int b = 0; b < 4; ++b) Me[a][b] = Ke[a][b] = 0.0;
-            for (int i = 0; i < 2; ++i)
-              for (int j = 0; j < 2; ++j) {
-                double N[4], gx[4], gy[4];
-                const double w =
-                    kGauss2Weight * kGauss2Weight * q1Gradients(Xe, gauss2Point(i), gauss2Point(j), N, gx, gy);
-                for (int a = 0; a < 4; ++a)
-                  for (int b = 0; b < 4; ++b) {
-                    Me[a][b] += w * cm * N[a] * N[b];
-                    Ke[a][b] += w * ck * (gx[a] * gx[b] + gy[a] * gy[b]);
-                  }
-              }
-          }
-          auto add = [&](const decltype(v1)& values, size_t at, double v) {
-            if (kAtomicScatter)
-              Kokkos::atomic_add(&values(at), v);
-            else
-              values(at) += v;
-          };
+  const bool anyLump = std::any_of(lumpMassAt.begin(), lumpMassAt.end(), [](char f) { return f != 0; });
+  const auto toCol = pattern_->toColumn();
+  SIGNORINI_ASSERT(one.graph.entries.data() == two.graph.entries.data(), "both matrices on one pattern");
+  const auto rowPtr = one.graph.row_map;
+  const auto cols = one.graph.entries;
+  const auto v1 = one.values, v2 = two.values;
+  const auto X = mesh_.cornerCoords;
+  const auto dofs = mesh_.cornerDofs;
+  const auto wts = mesh_.cornerWeights;
+  const auto dir = dirichletView_;
+  Kokkos::parallel_for(
+      "signorini::assembleOperator", Kokkos::RangePolicy<ExecSpace>(0, mesh_.numLocalCells()),
+      KOKKOS_LAMBDA(const LO e) {
+        double Xe[4][2], Ke[4][4], Me[4][4];
+        for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
+        if (isParallelogram(Xe)) {  // closed forms (2x2 Gauss is exact too)
+          q1ParallelogramMatrices(Xe, Me, Ke);
           for (int a = 0; a < 4; ++a)
-            for (int ka = 0; ka < 2; ++ka) {
-              const LO row = dofs(e, a, ka);
-              if (row < 0 || dir(row)) continue;
-              const auto rowBegin = rowPtr(row), rowEnd = rowPtr(row + 1);
-              auto offset = [&](LO col) {
-                auto at = rowBegin;
-                while (at < rowEnd && cols(at) != col) ++at;
-                if (at == rowEnd) Kokkos::abort("signorini::assembleOperator: coupling missing from the Q1 graph");
-                return at;
-              };
-              for (int b = 0; b < 4; ++b)
-                for (int kb = 0; kb < 2; ++kb) {
-                  const LO dof = dofs(e, b, kb);
-                  if (dof < 0 || dir(dof)) continue;
-                  const double wab = wts(e, a, ka) * wts(e, b, kb);
-                  const auto at = offset(toCol(dof));
-                  const double m = wab * Me[a][b];
-                  // lumped: the mass coupling moves to the diagonal
-                  const auto massAt = anyLump && row != dof && (lump(row) || lump(dof)) ? offset(toCol(row)) : at;
-                  add(v1, massAt, m);
-                  add(v2, at, wab * Ke[a][b]);
+            for (int b = 0; b < 4; ++b) Me[a][b] *= cm, Ke[a][b] *= ck;
+        } else {
+          for (int a = 0; a < 4; ++a)
+            for (int b = 0; b < 4; ++b) Me[a][b] = Ke[a][b] = 0.0;
+          for (int i = 0; i < 2; ++i)
+            for (int j = 0; j < 2; ++j) {
+              double N[4], gx[4], gy[4];
+              const double w =
+                  kGauss2Weight * kGauss2Weight * q1Gradients(Xe, gauss2Point(i), gauss2Point(j), N, gx, gy);
+              for (int a = 0; a < 4; ++a)
+                for (int b = 0; b < 4; ++b) {
+                  Me[a][b] += w * cm * N[a] * N[b];
+                  Ke[a][b] += w * ck * (gx[a] * gx[b] + gy[a] * gy[b]);
                 }
             }
-        });
-  }
+        }
+        auto add = [&](const decltype(v1)& values, size_t at, double v) {
+          if (kAtomicScatter)
+            Kokkos::atomic_add(&values(at), v);
+          else
+            values(at) += v;
+        };
+        for (int a = 0; a < 4; ++a)
+          for (int ka = 0; ka < 2; ++ka) {
+            const LO row = dofs(e, a, ka);
+            if (row < 0 || dir(row)) continue;
+            const auto rowBegin = rowPtr(row), rowEnd = rowPtr(row + 1);
+            auto offset = [&](LO col) {
+              auto at = rowBegin;
+              while (at < rowEnd && cols(at) != col) ++at;
+              if (at == rowEnd) Kokkos::abort("signorini::assembleOperator: coupling missing from the Q1 graph");
+              return at;
+            };
+            for (int b = 0; b < 4; ++b)
+              for (int kb = 0; kb < 2; ++kb) {
+                const LO dof = dofs(e, b, kb);
+                if (dof < 0 || dir(dof)) continue;
+                const double wab = wts(e, a, ka) * wts(e, b, kb);
+                const auto at = offset(toCol(dof));
+                const double m = wab * Me[a][b];
+                // lumped: the mass coupling moves to the diagonal
+                const auto massAt = anyLump && row != dof && (lump(row) || lump(dof)) ? offset(toCol(row)) : at;
+                add(v1, massAt, m);
+                add(v2, at, wab * Ke[a][b]);
+              }
+          }
+      });
 }
 
 namespace {
