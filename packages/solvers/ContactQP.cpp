@@ -70,7 +70,7 @@ core::ParameterList ContactQP::getValidParameters() {
                   {"consistent", "lumped"});
   core::addChoice(p, "Schur Preconditioner", "auto",
                   "Preconditioner of CG on Q_AA: B^T A_s^{-1} B with A on a strip along Gamma_C (factored once per "
-                  "mesh, KLU2); \"strip + coarse\" adds B^T P A_c^{-1} P^T B from the deck's initial mesh (the far "
+                  "mesh, sparse Cholesky); \"strip + coarse\" adds B^T P A_c^{-1} P^T B from the deck's initial mesh (the far "
                   "field); \"auto\": strip + coarse when the strip would need more than 40 node layers, else strip; "
                   "the lumped B^T diag(A)^{-1} B; or none",
                   {"auto", "strip", "strip + coarse", "lumped", "none"});

@@ -1,16 +1,14 @@
 #include "StripSchurApproximation.hpp"
 
-#include <Amesos2.hpp>
 #include <algorithm>
 
 #include <Teuchos_CommHelpers.hpp>
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
-#include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "EnvelopeCholesky.hpp"
 #include "Error.hpp"
 #include "MpiComm.hpp"
 
@@ -84,8 +82,8 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
   }
 
   // The strip matrix: rows and columns of A on strip nodes only, numbered contiguously in rank
-  // order; gathered with B_s on rank 0, which factors it alone: Amesos2 13.2's KLU2 solves
-  // distributed matrices wrongly here (a residual of order one on 2 ranks).
+  // order; gathered with B_s on rank 0, which factors it alone (EnvelopeCholesky: the strip is
+  // thin, so its envelope is narrow).
   for (LO i = 0; i < nOwned; ++i)
     if (inStrip[i]) impl_->stripToOwned.push_back(i);
   const LO nStrip = static_cast<LO>(impl_->stripToOwned.size());
@@ -127,37 +125,12 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
   const auto allB = gatherToRoot(raw, Bs);
   std::vector<double> allW;
   if (comm->getRank() == 0 && m > 0) {
-    const LO n = static_cast<LO>(stripSize_);
-    using Local = CrsMatrix::local_matrix_device_type;
-    typename Local::row_map_type::non_const_type rowPtr("stripRows", n + 1);
-    typename Local::index_type::non_const_type entries("stripCols", allCols.size());
-    typename Local::values_type values("stripValues", allVals.size());
-    size_t offset = 0;
-    std::vector<std::pair<long long, double>> row;
-    for (LO r = 0; r < n; ++r) {  // rows sorted by column
-      row.clear();
-      for (int k = 0; k < allLength[r]; ++k) row.push_back({allCols[offset + k], allVals[offset + k]});
-      std::sort(row.begin(), row.end());
-      for (int k = 0; k < allLength[r]; ++k) entries(offset + k) = static_cast<LO>(row[k].first), values(offset + k) = row[k].second;
-      offset += allLength[r];
-      rowPtr(r + 1) = offset;
-    }
-    auto self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
-    auto selfMap = Teuchos::rcp(new Map(static_cast<GO>(n), 0, self));
-    auto As = Teuchos::rcp(new CrsMatrix(selfMap, selfMap, rowPtr, entries, values));
-    As->fillComplete(selfMap, selfMap);
-    auto Bself = Teuchos::rcp(new MultiVector(selfMap, m)), Wself = Teuchos::rcp(new MultiVector(selfMap, m));
-    {
-      auto h = Bself->getLocalViewHost(Tpetra::Access::OverwriteAll);
-      for (LO r = 0; r < n; ++r)
-        for (int j = 0; j < m; ++j) h(r, j) = allB[static_cast<size_t>(r) * m + j];
-    }
-    auto solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", As, Wself, Bself);
-    solver->symbolicFactorization().numericFactorization().solve();
-    auto h = Wself->getLocalViewHost(Tpetra::Access::ReadOnly);
-    allW.resize(static_cast<size_t>(n) * m);
-    for (LO r = 0; r < n; ++r)
-      for (int j = 0; j < m; ++j) allW[static_cast<size_t>(r) * m + j] = h(r, j);
+    const int n = static_cast<int>(stripSize_);
+    std::vector<int> rowPtr(n + 1, 0), cols(allCols.begin(), allCols.end());
+    for (int r = 0; r < n; ++r) rowPtr[r + 1] = rowPtr[r] + allLength[r];
+    const EnvelopeCholesky As(n, rowPtr, cols, allVals);
+    allW = allB;
+    As.solveInPlace(allW, m);
   }
   // W back to the owners of the strip rows (row-major blocks in rank order).
   {

@@ -2,11 +2,10 @@
 /// \file StripSchurApproximation.hpp
 /// A local approximation of the Schur complement Q = B^T A^{-1} B (DESIGN 1.6): A restricted to
 /// a strip of a few layers of nodes along the contact boundary (homogeneous Dirichlet at its
-/// inner edge), factored once per mesh with Amesos2/KLU2. Provides
+/// inner edge), factored once per mesh (EnvelopeCholesky, on rank 0). Provides
 ///  - Qs = B^T A_s^{-1} B (dense m x m, replicated): a preconditioner for CG on Q_AA, whose
 ///    entries decay like exp(-1.4 d/k) so a strip of about 6 c k captures them;
 ///  - W_s p = A_s^{-1} B p (zero outside the strip): an initial guess for the exact A-solve.
-/// Amesos2 headers stay in the .cpp (compile time).
 #include <memory>
 #include <vector>
 

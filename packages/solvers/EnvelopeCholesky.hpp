@@ -1,0 +1,37 @@
+#pragma once
+/// \file EnvelopeCholesky.hpp
+/// A serial sparse Cholesky factorisation A = L L^T for the small SPD matrices of thin domains
+/// (the strip along Gamma_C of StripSchurApproximation): reverse Cuthill-McKee ordering, then
+/// L stored row by row from the first non-zero of each row (the envelope, which holds all fill).
+/// A strip of w node layers has an envelope of about 2 w entries per row, so the factorisation
+/// costs O(n w^2) and a solve O(n w) per right-hand side, with no set-up beyond that.
+#include <cstddef>
+#include <vector>
+
+namespace signorini::solvers {
+
+class EnvelopeCholesky {
+ public:
+  /// Factors the n x n matrix given by CRS arrays holding both triangles (columns in any order,
+  /// the structure symmetric). Throws core::SolverError if a pivot is not positive (A not SPD).
+  EnvelopeCholesky(int n, const std::vector<int>& rowPtr, const std::vector<int>& cols,
+                   const std::vector<double>& values);
+
+  /// Solves A X = B in place for \p m right-hand sides: \p X is row-major n x m (row i, column j
+  /// at i m + j) holding B on entry. Columns that start with zero rows (in the factor's ordering)
+  /// skip them in the forward sweep.
+  void solveInPlace(std::vector<double>& X, int m) const;
+
+  int size() const { return n_; }
+  /// Stored entries of L (the envelope including the diagonal).
+  std::size_t envelopeSize() const { return env_.size(); }
+
+ private:
+  int n_;
+  std::vector<int> perm_;    // perm_[p] = original row at position p
+  std::vector<int> first_;   // first column of row p of L (positions)
+  std::vector<std::size_t> off_;  // row p of L at env_[off_[p] .. off_[p] + p - first_[p]]
+  std::vector<double> env_;
+};
+
+}  // namespace signorini::solvers
