@@ -66,19 +66,33 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
     else
       cols.doImport(owned, *importer, Tpetra::INSERT);
   };
-  for (int layer = 0; layer < layers; ++layer) {
-    toColumns([&](LO i) { return static_cast<double>(inStrip[i]); });
-    auto c = cols.getLocalViewHost(Tpetra::Access::ReadOnly);
-    std::vector<char> next = inStrip;
-    for (LO i = 0; i < nOwned; ++i) {
-      if (inStrip[i]) continue;
-      for (auto k = Al.graph.row_map(i); k < Al.graph.row_map(i + 1); ++k)
-        if (c(Al.graph.entries(k), 0) > 0) {
-          next[i] = 1;
-          break;
-        }
+  if (importer.is_null()) {
+    // One rank: column and row ids coincide, so the layers grow breadth-first from the contact nodes.
+    std::vector<LO> front;
+    for (LO i = 0; i < nOwned; ++i)
+      if (inStrip[i]) front.push_back(i);
+    for (int layer = 0; layer < layers; ++layer) {
+      std::vector<LO> grown;
+      for (LO i : front)
+        for (auto k = Al.graph.row_map(i); k < Al.graph.row_map(i + 1); ++k)
+          if (!inStrip[Al.graph.entries(k)]) inStrip[Al.graph.entries(k)] = 1, grown.push_back(Al.graph.entries(k));
+      front.swap(grown);
     }
-    inStrip.swap(next);
+  } else {
+    for (int layer = 0; layer < layers; ++layer) {
+      toColumns([&](LO i) { return static_cast<double>(inStrip[i]); });
+      auto c = cols.getLocalViewHost(Tpetra::Access::ReadOnly);
+      std::vector<char> next = inStrip;
+      for (LO i = 0; i < nOwned; ++i) {
+        if (inStrip[i]) continue;
+        for (auto k = Al.graph.row_map(i); k < Al.graph.row_map(i + 1); ++k)
+          if (c(Al.graph.entries(k), 0) > 0) {
+            next[i] = 1;
+            break;
+          }
+      }
+      inStrip.swap(next);
+    }
   }
 
   // The strip matrix: rows and columns of A on strip nodes only, numbered contiguously in rank
