@@ -22,7 +22,6 @@ class EnvelopeCholesky {
   /// skip them in the forward sweep.
   void solveInPlace(std::vector<double>& X, int m) const;
 
-  int size() const { return n_; }
   /// Stored entries of L (the envelope including the diagonal).
   std::size_t envelopeSize() const { return env_.size(); }
 

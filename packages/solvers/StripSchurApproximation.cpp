@@ -96,8 +96,8 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
   }
 
   // The strip matrix: rows and columns of A on strip nodes only, numbered contiguously in rank
-  // order; gathered with B_s on rank 0, which factors it alone (EnvelopeCholesky: the strip is
-  // thin, so its envelope is narrow).
+  // order; gathered with B_s on rank 0, which factors it alone (EnvelopeCholesky is serial; the
+  // strip is thin, so its envelope is narrow).
   for (LO i = 0; i < nOwned; ++i)
     if (inStrip[i]) impl_->stripToOwned.push_back(i);
   const LO nStrip = static_cast<LO>(impl_->stripToOwned.size());
@@ -136,14 +136,12 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
   const auto allLength = gatherToRoot(raw, rowLength);
   const auto allCols = gatherToRoot(raw, stripCols);
   const auto allVals = gatherToRoot(raw, stripVals);
-  const auto allB = gatherToRoot(raw, Bs);
-  std::vector<double> allW;
+  auto allW = gatherToRoot(raw, Bs);  // B_s, overwritten by A_s^{-1} B_s on rank 0
   if (comm->getRank() == 0 && m > 0) {
     const int n = static_cast<int>(stripSize_);
     std::vector<int> rowPtr(n + 1, 0), cols(allCols.begin(), allCols.end());
     for (int r = 0; r < n; ++r) rowPtr[r + 1] = rowPtr[r] + allLength[r];
     const EnvelopeCholesky As(n, rowPtr, cols, allVals);
-    allW = allB;
     As.solveInPlace(allW, m);
   }
   // W back to the owners of the strip rows (row-major blocks in rank order).
