@@ -237,14 +237,24 @@ void Forest::refineAndCoarsen(const std::vector<char>& refine, const std::vector
   refineIf([&](int tree, const p4est_quadrant_t& q) { return refineKeys.count({tree, q.x, q.y, q.level}) > 0; });
 }
 
-unsigned Forest::checksum() const {
-  unsigned c = p4est_checksum(p4est_);
-  MPI_Bcast(&c, 1, MPI_UNSIGNED, 0, p4est_->mpicomm);
-  return c;
-}
-
 bool Forest::sameCells(const Forest& other) const {
-  return numGlobalCells() == other.numGlobalCells() && checksum() == other.checksum();
+  const p4est_t* a = p4est_;
+  const p4est_t* b = other.p4est_;
+  int same = a->global_num_quadrants == b->global_num_quadrants && a->local_num_quadrants == b->local_num_quadrants &&
+             a->first_local_tree == b->first_local_tree && a->last_local_tree == b->last_local_tree;
+  for (p4est_topidx_t t = a->first_local_tree; same && t >= 0 && t <= a->last_local_tree; ++t) {
+    const sc_array_t& qa = p4est_tree_array_index(a->trees, t)->quadrants;
+    const sc_array_t& qb = p4est_tree_array_index(b->trees, t)->quadrants;
+    if (qa.elem_count != qb.elem_count) same = 0;
+    for (size_t i = 0; same && i < qa.elem_count; ++i) {
+      const auto* x = p4est_quadrant_array_index(const_cast<sc_array_t*>(&qa), i);
+      const auto* y = p4est_quadrant_array_index(const_cast<sc_array_t*>(&qb), i);
+      same = x->x == y->x && x->y == y->y && x->level == y->level;
+    }
+  }
+  int all = 0;
+  MPI_Allreduce(&same, &all, 1, MPI_INT, MPI_LAND, a->mpicomm);
+  return all != 0;
 }
 
 size_t Forest::bytes() const { return p4est_memory_used(p4est_); }

@@ -45,9 +45,9 @@ class Forest {
   /// Coarsens the families all flagged in \p coarsen (not below \p minLevel), then refines the
   /// cells flagged in \p refine (both in local cell order of the forest as it is on entry).
   void refineAndCoarsen(const std::vector<char>& refine, const std::vector<char>& coarsen, int minLevel);
-  /// A checksum of the cells, independent of the partition, the same on every rank.
-  unsigned checksum() const;
-  /// True if both forests have the same cells (checksum and count).
+  /// True if both forests have the same cells, compared cell by cell (collective; the same answer
+  /// on every rank). Equal cells partitioned differently over the ranks count as different (only a
+  /// rebuild that was not needed, never a wrong reuse).
   bool sameCells(const Forest& other) const;
   /// Bytes of memory this rank uses for the forest.
   size_t bytes() const;

@@ -123,6 +123,18 @@ TEST(Forest, MarkedRefinementAndCoarseningAndSameCells) {
   f.coarsenMarked(std::vector<char>(f.numLocalCells(), 1), 2);  // not below the minimum level
   EXPECT_EQ(f.numGlobalCells(), a.forest->numGlobalCells());
   EXPECT_GT(f.bytes(), 0u);
+  // Same number of cells, different cells (one refined cell at two different places): not the same.
+  mesh::Forest g(*a.forest), h(*a.forest);
+  refineAt(g, 0.1, 0.1, 3);
+  refineAt(h, 0.9, 0.9, 3);
+  ASSERT_EQ(g.numGlobalCells(), h.numGlobalCells());
+  EXPECT_FALSE(g.sameCells(h));
+  EXPECT_FALSE(h.sameCells(g));
+  refineAt(g, 0.9, 0.9, 3);
+  refineAt(h, 0.1, 0.1, 3);
+  g.partition();
+  h.partition();
+  EXPECT_TRUE(g.sameCells(h));
 }
 
 TEST(Forest, BalancedRefinementEqualsRefinementThenP4estBalance) {
