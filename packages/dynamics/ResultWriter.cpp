@@ -48,6 +48,8 @@ void ResultWriter::write(long meshId, const mesh::Q1Mesh& mesh, double time, con
   std::vector<long long> keys, edgeInfo;
   coords.reserve(8 * nc);
   keys.reserve(4 * nc);
+  values.reserve(4 * nc * nodal.size());
+  cellValues.reserve(nc * numCell_);
   std::vector<decltype(nodal[0]->getLocalViewHost(Tpetra::Access::ReadOnly))> views;
   for (const Vector* v : nodal) views.push_back(v->getLocalViewHost(Tpetra::Access::ReadOnly));
   const auto& X = mesh.cornerCoordsHost;
@@ -92,22 +94,30 @@ void ResultWriter::write(long meshId, const mesh::Q1Mesh& mesh, double time, con
 
   io::QuadMesh out;
   const size_t totalCells = allKeys.size() / 4;
-  std::unordered_map<long long, int> nodeId;  // nodes numbered in the order of first appearance
-  nodeId.reserve(2 * totalCells + 64);
+  // Nodes numbered in the order of first appearance: regular nodes through a table indexed by their
+  // global number, hanging nodes (few) through a hash map.
+  std::vector<int> regularId(numGlobal, -1);
+  std::unordered_map<long long, int> hangingId;
   std::vector<std::vector<double>> nodalOut(numNodal_);
+  for (auto& f : nodalOut) f.reserve(totalCells + 64);
+  out.x.reserve(totalCells + 64);
+  out.y.reserve(totalCells + 64);
+  out.quads.reserve(totalCells);
   static const int zToCcw[4] = {0, 1, 3, 2};
   for (size_t e = 0; e < totalCells; ++e) {
     std::array<int, 4> quad;
     for (int k = 0; k < 4; ++k) {
       const int c = zToCcw[k];
       const size_t i = 4 * e + c;
-      auto [it, added] = nodeId.emplace(allKeys[i], static_cast<int>(out.x.size()));
-      if (added) {
+      const int fresh = static_cast<int>(out.x.size());
+      int& id = allKeys[i] >= 0 ? regularId[allKeys[i]] : hangingId.try_emplace(allKeys[i], -1).first->second;
+      if (id < 0) {
+        id = fresh;
         out.x.push_back(allCoords[2 * i]);
         out.y.push_back(allCoords[2 * i + 1]);
         for (size_t f = 0; f < numNodal_; ++f) nodalOut[f].push_back(allValues[numNodal_ * i + f]);
       }
-      quad[k] = it->second;
+      quad[k] = id;
     }
     out.quads.push_back(quad);
   }

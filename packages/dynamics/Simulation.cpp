@@ -3,10 +3,12 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -32,7 +34,41 @@
 #include "ResultWriter.hpp"
 
 namespace signorini::dynamics {
+
 namespace {
+/// For each point of \p to, the index of the nearest point of \p from (Euclidean distance, the
+/// lowest index among equally near ones; -1 when \p from is empty). Sorted along the coordinate
+/// of larger spread, so a contact boundary (a line) costs O(log n) per point instead of O(n).
+std::vector<int> nearestPoints(const std::vector<std::array<double, 2>>& from, const std::vector<std::array<double, 2>>& to) {
+  std::vector<int> result(to.size(), -1);
+  if (from.empty()) return result;
+  double lo[2] = {from[0][0], from[0][1]}, hi[2] = {lo[0], lo[1]};
+  for (const auto& p : from)
+    for (int d = 0; d < 2; ++d) lo[d] = std::min(lo[d], p[d]), hi[d] = std::max(hi[d], p[d]);
+  const int axis = hi[0] - lo[0] >= hi[1] - lo[1] ? 0 : 1;
+  std::vector<int> order(from.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = static_cast<int>(i);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return from[a][axis] < from[b][axis]; });
+  for (size_t j = 0; j < to.size(); ++j) {
+    const auto& p = to[j];
+    double best = std::numeric_limits<double>::infinity();
+    int bestIndex = -1;
+    auto consider = [&](int i) {  // false once every further point along the axis is farther
+      if (std::abs(from[i][axis] - p[axis]) > best) return false;
+      const double d = std::hypot(from[i][0] - p[0], from[i][1] - p[1]);
+      if (d < best || (d == best && i < bestIndex)) best = d, bestIndex = i;
+      return true;
+    };
+    const auto split = std::lower_bound(order.begin(), order.end(), p[axis],
+                                        [&](int i, double v) { return from[i][axis] < v; }) - order.begin();
+    for (auto k = split; k < static_cast<long>(order.size()) && consider(order[k]); ++k) {
+    }
+    for (auto k = split - 1; k >= 0 && consider(order[k]); --k) {
+    }
+    result[j] = bestIndex;
+  }
+  return result;
+}
 
 core::ParameterList outputParameters() {
   core::ParameterList p("Output");
@@ -353,16 +389,11 @@ struct Simulation::Impl {
       fields[f] = x;
     }
     if (from.coupling && to.coupling) {
-      const auto& oldMid = from.coupling->segmentMidpoint();
+      const auto nearest = nearestPoints(from.coupling->segmentMidpoint(), to.coupling->segmentMidpoint());
       std::vector<double> next(to.coupling->numSegments(), 0.0);
-      for (int j = 0; j < to.coupling->numSegments(); ++j) {
-        const auto& p = to.coupling->segmentMidpoint()[j];
-        double best = 1e300;
-        for (size_t i = 0; i < oldMid.size(); ++i) {
-          const double d2 = std::hypot(oldMid[i][0] - p[0], oldMid[i][1] - p[1]);
-          if (d2 < best) best = d2, next[j] = lambda[i] * to.coupling->segmentLength()[j] / from.coupling->segmentLength()[i];
-        }
-      }
+      for (int j = 0; j < to.coupling->numSegments(); ++j)
+        if (nearest[j] >= 0)
+          next[j] = lambda[nearest[j]] * to.coupling->segmentLength()[j] / from.coupling->segmentLength()[nearest[j]];
       lambda = next;
     } else {
       lambda.assign(to.coupling ? to.coupling->numSegments() : 0, 0.0);
