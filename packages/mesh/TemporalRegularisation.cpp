@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <set>
+#include <utility>
 
+#include <p4est_bits.h>
+
+#include "Error.hpp"
 #include "ForestOverlap.hpp"
 
 namespace signorini::mesh {
@@ -20,7 +24,52 @@ std::vector<int> levelExcess(const Forest& neighbour, const Forest& target) {
   return excess;
 }
 
+uint64_t spreadBits(uint64_t v) {
+  v &= 0xffffffffULL;
+  v = (v | (v << 16)) & 0x0000ffff0000ffffULL;
+  v = (v | (v << 8)) & 0x00ff00ff00ff00ffULL;
+  v = (v | (v << 4)) & 0x0f0f0f0f0f0f0f0fULL;
+  v = (v | (v << 2)) & 0x3333333333333333ULL;
+  v = (v | (v << 1)) & 0x5555555555555555ULL;
+  return v;
+}
+
+/// Morton range [first, last] of q's finest descendants within its tree.
+std::pair<uint64_t, uint64_t> mortonRange(const p4est_quadrant_t& q) {
+  constexpr int shift = P4EST_MAXLEVEL - P4EST_QMAXLEVEL;
+  const uint64_t first = spreadBits(static_cast<uint64_t>(q.x) >> shift) |
+                         (spreadBits(static_cast<uint64_t>(q.y) >> shift) << 1);
+  return {first, first + (uint64_t(1) << (2 * (P4EST_QMAXLEVEL - q.level))) - 1};
+}
+
 }  // namespace
+
+std::vector<int> levelExcessByMerge(const Forest& neighbour, const Forest& target) {
+  const p4est_t* src = neighbour.p4est();
+  const p4est_t* dst = target.p4est();
+  SIGNORINI_ASSERT(src->mpisize == 1 && dst->mpisize == 1, "the merge needs both forests whole on one rank");
+  std::vector<int> excess;
+  excess.reserve(static_cast<size_t>(dst->local_num_quadrants));
+  for (p4est_topidx_t t = dst->first_local_tree; t >= 0 && t <= dst->last_local_tree; ++t) {
+    sc_array_t* a = &p4est_tree_array_index(src->trees, t)->quadrants;
+    sc_array_t* b = &p4est_tree_array_index(dst->trees, t)->quadrants;
+    size_t i = 0;  // first source cell that can still overlap the current target cell
+    for (size_t k = 0; k < b->elem_count; ++k) {
+      const auto* q = p4est_quadrant_array_index(b, k);
+      const auto [f, l] = mortonRange(*q);
+      while (i < a->elem_count && mortonRange(*p4est_quadrant_array_index(a, i)).second < f) ++i;
+      SIGNORINI_ASSERT(i < a->elem_count, "target cell without an overlapping source cell");
+      int finest = 0;
+      for (size_t j = i; j < a->elem_count; ++j) {
+        const auto* c = p4est_quadrant_array_index(a, j);
+        if (mortonRange(*c).first > l) break;
+        finest = std::max(finest, static_cast<int>(c->level));
+      }
+      excess.push_back(finest - q->level);
+    }
+  }
+  return excess;
+}
 
 int maxLevelExcess(const Forest& neighbour, const Forest& target) {
   int local = -1000, global;
@@ -30,8 +79,9 @@ int maxLevelExcess(const Forest& neighbour, const Forest& target) {
 }
 
 int regulariseInTime(const Forest& neighbour, Forest& target) {
+  const bool oneRank = target.p4est()->mpisize == 1;
   for (int pass = 0;; ++pass) {
-    const auto excess = levelExcess(neighbour, target);
+    const auto excess = oneRank ? levelExcessByMerge(neighbour, target) : levelExcess(neighbour, target);
     std::vector<char> flags(excess.size());
     int any = 0, anyGlobal = 0;
     for (size_t e = 0; e < excess.size(); ++e) any |= (flags[e] = excess[e] > 1 ? 1 : 0);

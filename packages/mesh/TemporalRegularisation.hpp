@@ -25,7 +25,14 @@ void regulariseSequence(std::vector<Forest*>& meshes);
 /// steps with equal meshes share one forest again.
 void regulariseSteps(std::vector<std::shared_ptr<Forest>>& steps);
 
-/// Largest level difference (neighbour level - target level) over overlapping cells, all ranks.
+/// Largest level difference (neighbour level - target level) over overlapping cells, all ranks
+/// (through ForestOverlap on any partition).
 int maxLevelExcess(const Forest& neighbour, const Forest& target);
+
+/// Per cell of \p target (local order): the finest level of the overlapping cells of \p neighbour
+/// minus its own level, by one merge of the two cell sequences of each tree in curve order
+/// (O(cells), no overlap records; both forests whole on one rank). regulariseInTime uses it on one
+/// rank instead of ForestOverlap.
+std::vector<int> levelExcessByMerge(const Forest& neighbour, const Forest& target);
 
 }  // namespace signorini::mesh

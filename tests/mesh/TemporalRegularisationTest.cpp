@@ -7,6 +7,7 @@
 #include <p4est_lnodes.h>
 
 #include "../TestMesh.hpp"
+#include "ForestOverlap.hpp"
 #include "TemporalRegularisation.hpp"
 
 using namespace signorini;
@@ -56,6 +57,45 @@ TEST(TemporalRegularisation, NoCellIsMoreThanOneLevelCoarserThanItsNeighbourStep
   }
   // Regularising refines only: every step still contains its own refinement.
   EXPECT_GE(steps[1]->numGlobalCells(), a.forest->numGlobalCells());
+}
+
+// The one-rank merge that Algorithm 5.3 uses gives, cell by cell, the finest overlapping level
+// that ForestOverlap's common refinement gives, on forests of four trees refined differently
+// (either one may be the finer one in any place).
+TEST(TemporalRegularisation, LevelExcessByMergeEqualsTheOverlap) {
+  test::TestMesh a(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
+  if (a.forest->p4est()->mpisize != 1) GTEST_SKIP() << "the merge is the one-rank path";
+  auto scrambled = [](unsigned seed) {
+    return [seed](int tree, const p4est_quadrant_t& q) {
+      unsigned h = seed * 2654435761u ^ static_cast<unsigned>(tree * 97 + q.level * 31);
+      h ^= static_cast<unsigned>(q.x) * 40503u + static_cast<unsigned>(q.y) * 2246822519u;
+      h ^= h >> 13;
+      h *= 0x5bd1e995u;
+      h ^= h >> 15;
+      return q.level < 7 && h % 3 == 0;
+    };
+  };
+  mesh::Forest f(*a.forest), g(*a.forest);
+  for (int round = 0; round < 5; ++round) {
+    f.refineIf(scrambled(11 + round));
+    g.refineIf(scrambled(29 + round));
+  }
+  ASSERT_FALSE(f.sameCells(g));
+  for (auto [from, to] : {std::pair{&f, &g}, std::pair{&g, &f}, std::pair{&f, &f}}) {
+    const auto merged = mesh::levelExcessByMerge(*from, *to);
+    mesh::ForestOverlap overlap(*from, *to, {}, 0);
+    ASSERT_EQ(static_cast<int>(merged.size()), overlap.numTargetCells());
+    int positive = 0, negative = 0;
+    for (int e = 0; e < overlap.numTargetCells(); ++e) {
+      int finest = 0;
+      for (const auto& c : overlap.overlapping(e)) finest = std::max(finest, c.level);
+      ASSERT_EQ(merged[e], finest - overlap.target(e).level) << "cell " << e;
+      positive += merged[e] > 0;
+      negative += merged[e] < 0;
+    }
+    if (from != to) EXPECT_GT(positive, 0);
+    if (from != to) EXPECT_GT(negative, 0);
+  }
 }
 
 // Steps with equal meshes share one forest; a refinement that Algorithm 5.3 demands for one of
