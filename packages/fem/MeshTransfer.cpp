@@ -145,12 +145,14 @@ std::vector<RCP<Vector>> MeshTransfer::interpolate() const {
   std::vector<decltype(out[0]->getLocalViewHost(Tpetra::Access::ReadWrite))> views;
   for (auto& o : out) views.push_back(o->getLocalViewHost(Tpetra::Access::ReadWrite));
   const double tol = 1e-12;
-  for (int e = 0; e < overlap_->numTargetCells(); ++e) {
+  // A node shared by several cells takes its value from the last of them in cell order: visited
+  // backwards, the first visit sets it.
+  for (int e = overlap_->numTargetCells() - 1; e >= 0; --e) {
     const auto& K = overlap_->target(e);
     const auto cells = overlap_->overlapping(e);
-    for (int c = 0; c < 4; ++c) {
+    for (int c = 3; c >= 0; --c) {
       const LO d = D(e, c, 0);
-      if (D(e, c, 1) >= 0 || d >= owned) continue;  // hanging or not owned
+      if (D(e, c, 1) >= 0 || d >= owned || set[d]) continue;  // hanging, not owned or done
       const double s = K.s0 + ((c & 1) ? K.size : 0), r = K.r0 + ((c & 2) ? K.size : 0);
       for (const auto& Q : cells)
         if (s >= Q.s0 - tol && s <= Q.s0 + Q.size + tol && r >= Q.r0 - tol && r <= Q.r0 + Q.size + tol) {

@@ -82,9 +82,16 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
   for (int r = 0; r < size; ++r) sendOff[r + 1] = sendOff[r] + sendCounts[r];
   std::vector<double> sendBuf(static_cast<size_t>(sendOff[size]));
   std::vector<int> fill(sendOff.begin(), sendOff.end() - 1);
+  // On one rank the records are received as packed: their keys come from the quadrants directly.
+  std::vector<Key> keys;
+  if (size == 1) keys.reserve(static_cast<size_t>(sendOff[size] / record));
   forEachDestination([&](int r, p4est_topidx_t t, const p4est_quadrant_t& q, int e) {
     double* o = &sendBuf[static_cast<size_t>(fill[r])];
     fill[r] += record;
+    if (size == 1) {
+      const uint64_t f = firstId(q);
+      keys.push_back({static_cast<int>(t), f, f + span(q.level) - 1});
+    }
     o[0] = static_cast<double>(t);
     o[1] = q.x / root;
     o[2] = q.y / root;
@@ -104,18 +111,21 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
   // Sort by position (the records stay where they are; the payload pointers point into them).
   const size_t n = buffer_.size() / record;
   std::vector<size_t> order(n);
-  std::vector<Key> keys(n);
-  for (size_t i = 0; i < n; ++i) {
-    const double* rec = &buffer_[i * record];
-    p4est_quadrant_t q;
-    P4EST_QUADRANT_INIT(&q);
-    q.level = static_cast<int8_t>(rec[3]);
-    q.x = static_cast<p4est_qcoord_t>(std::llround(rec[1] * root));
-    q.y = static_cast<p4est_qcoord_t>(std::llround(rec[2] * root));
-    const uint64_t f = firstId(q);
-    keys[i] = {static_cast<int>(rec[0]), f, f + span(q.level) - 1};
-    order[i] = i;
+  for (size_t i = 0; i < n; ++i) order[i] = i;
+  if (size > 1) {
+    keys.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+      const double* rec = &buffer_[i * record];
+      p4est_quadrant_t q;
+      P4EST_QUADRANT_INIT(&q);
+      q.level = static_cast<int8_t>(rec[3]);
+      q.x = static_cast<p4est_qcoord_t>(std::llround(rec[1] * root));
+      q.y = static_cast<p4est_qcoord_t>(std::llround(rec[2] * root));
+      const uint64_t f = firstId(q);
+      keys[i] = {static_cast<int>(rec[0]), f, f + span(q.level) - 1};
+    }
   }
+  SIGNORINI_ASSERT(keys.size() == n, "one key per received cell");
   auto byPosition = [&](size_t a, size_t b) { return less(keys[a].tree, keys[a].first, keys[b].tree, keys[b].first); };
   // Usually sorted already: each rank sends its cells in curve order, and the ranks' parts follow the curve.
   if (!std::is_sorted(order.begin(), order.end(), byPosition)) std::sort(order.begin(), order.end(), byPosition);
