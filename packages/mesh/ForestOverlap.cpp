@@ -5,32 +5,13 @@
 #include <p4est_bits.h>
 
 #include "Error.hpp"
+#include "Morton.hpp"
 
 namespace signorini::mesh {
 namespace {
 
-constexpr int kMaxLevel = P4EST_QMAXLEVEL;
-
-/// Spreads the low 32 bits of v to the even bit positions of the result.
-uint64_t spreadBits(uint64_t v) {
-  v &= 0xffffffffULL;
-  v = (v | (v << 16)) & 0x0000ffff0000ffffULL;
-  v = (v | (v << 8)) & 0x00ff00ff00ff00ffULL;
-  v = (v | (v << 4)) & 0x0f0f0f0f0f0f0f0fULL;
-  v = (v | (v << 2)) & 0x3333333333333333ULL;
-  v = (v | (v << 1)) & 0x5555555555555555ULL;
-  return v;
-}
-
-/// Morton id of the first finest (level kMaxLevel) descendant of q: the same number as
-/// p4est_quadrant_linear_id(first descendant, kMaxLevel) (x bits even, y bits odd), without the
-/// bit-by-bit loop.
-uint64_t firstId(const p4est_quadrant_t& q) {
-  constexpr int shift = P4EST_MAXLEVEL - kMaxLevel;
-  return spreadBits(static_cast<uint64_t>(q.x) >> shift) | (spreadBits(static_cast<uint64_t>(q.y) >> shift) << 1);
-}
-
-uint64_t span(int level) { return uint64_t(1) << (2 * (kMaxLevel - level)); }
+using morton::firstId;
+using morton::span;
 
 bool less(int ta, uint64_t a, int tb, uint64_t b) { return ta < tb || (ta == tb && a < b); }
 
@@ -47,7 +28,7 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
   std::vector<std::pair<int, uint64_t>> marker(size + 1);
   for (int r = 0; r <= size; ++r) {
     const auto& g = dst->global_first_position[r];
-    marker[r] = {static_cast<int>(g.p.which_tree), r == size ? 0 : p4est_quadrant_linear_id(&g, kMaxLevel)};
+    marker[r] = {static_cast<int>(g.p.which_tree), r == size ? 0 : p4est_quadrant_linear_id(&g, P4EST_QMAXLEVEL)};
   }
   marker[size] = {static_cast<int>(src->connectivity->num_trees), 0};
 

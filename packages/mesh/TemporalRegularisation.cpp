@@ -8,6 +8,7 @@
 
 #include "Error.hpp"
 #include "ForestOverlap.hpp"
+#include "Morton.hpp"
 
 namespace signorini::mesh {
 namespace {
@@ -24,24 +25,6 @@ std::vector<int> levelExcess(const Forest& neighbour, const Forest& target) {
   return excess;
 }
 
-uint64_t spreadBits(uint64_t v) {
-  v &= 0xffffffffULL;
-  v = (v | (v << 16)) & 0x0000ffff0000ffffULL;
-  v = (v | (v << 8)) & 0x00ff00ff00ff00ffULL;
-  v = (v | (v << 4)) & 0x0f0f0f0f0f0f0f0fULL;
-  v = (v | (v << 2)) & 0x3333333333333333ULL;
-  v = (v | (v << 1)) & 0x5555555555555555ULL;
-  return v;
-}
-
-/// Morton range [first, last] of q's finest descendants within its tree.
-std::pair<uint64_t, uint64_t> mortonRange(const p4est_quadrant_t& q) {
-  constexpr int shift = P4EST_MAXLEVEL - P4EST_QMAXLEVEL;
-  const uint64_t first = spreadBits(static_cast<uint64_t>(q.x) >> shift) |
-                         (spreadBits(static_cast<uint64_t>(q.y) >> shift) << 1);
-  return {first, first + (uint64_t(1) << (2 * (P4EST_QMAXLEVEL - q.level))) - 1};
-}
-
 }  // namespace
 
 std::vector<int> levelExcessByMerge(const Forest& neighbour, const Forest& target) {
@@ -56,13 +39,13 @@ std::vector<int> levelExcessByMerge(const Forest& neighbour, const Forest& targe
     size_t i = 0;  // first source cell that can still overlap the current target cell
     for (size_t k = 0; k < b->elem_count; ++k) {
       const auto* q = p4est_quadrant_array_index(b, k);
-      const auto [f, l] = mortonRange(*q);
-      while (i < a->elem_count && mortonRange(*p4est_quadrant_array_index(a, i)).second < f) ++i;
+      const auto [f, l] = morton::range(*q);
+      while (i < a->elem_count && morton::range(*p4est_quadrant_array_index(a, i)).second < f) ++i;
       SIGNORINI_ASSERT(i < a->elem_count, "target cell without an overlapping source cell");
       int finest = 0;
       for (size_t j = i; j < a->elem_count; ++j) {
         const auto* c = p4est_quadrant_array_index(a, j);
-        if (mortonRange(*c).first > l) break;
+        if (morton::range(*c).first > l) break;
         finest = std::max(finest, static_cast<int>(c->level));
       }
       excess.push_back(finest - q->level);
