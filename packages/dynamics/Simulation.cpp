@@ -34,7 +34,6 @@
 #include "ResultWriter.hpp"
 
 namespace signorini::dynamics {
-
 namespace {
 /// For each point of \p to, the index of the nearest point of \p from (Euclidean distance, the
 /// lowest index among equally near ones; -1 when \p from is empty). Sorted along the coordinate

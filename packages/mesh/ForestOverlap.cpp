@@ -10,9 +10,6 @@
 namespace signorini::mesh {
 namespace {
 
-using morton::firstId;
-using morton::span;
-
 bool less(int ta, uint64_t a, int tb, uint64_t b) { return ta < tb || (ta == tb && a < b); }
 
 }  // namespace
@@ -42,7 +39,7 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
       p4est_tree_t* tree = p4est_tree_array_index(src->trees, t);
       for (size_t qi = 0; qi < tree->quadrants.elem_count; ++qi, ++e) {
         const auto* q = p4est_quadrant_array_index(&tree->quadrants, qi);
-        const uint64_t f = firstId(*q), l = f + span(q->level) - 1;
+        const auto [f, l] = morton::range(*q);
         // Target ranks r with marker[r] <= (t, l) and marker[r+1] > (t, f), skipping empty ranks.
         const auto pos = std::make_pair(static_cast<int>(t), f);
         int r = static_cast<int>(std::upper_bound(marker.begin(), marker.end(), pos,
@@ -70,8 +67,8 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
     double* o = &sendBuf[static_cast<size_t>(fill[r])];
     fill[r] += record;
     if (size == 1) {
-      const uint64_t f = firstId(q);
-      keys.push_back({static_cast<int>(t), f, f + span(q.level) - 1});
+      const auto [f, l] = morton::range(q);
+      keys.push_back({static_cast<int>(t), f, l});
     }
     o[0] = static_cast<double>(t);
     o[1] = q.x / root;
@@ -102,8 +99,8 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
       q.level = static_cast<int8_t>(rec[3]);
       q.x = static_cast<p4est_qcoord_t>(std::llround(rec[1] * root));
       q.y = static_cast<p4est_qcoord_t>(std::llround(rec[2] * root));
-      const uint64_t f = firstId(q);
-      keys[i] = {static_cast<int>(rec[0]), f, f + span(q.level) - 1};
+      const auto [f, l] = morton::range(q);
+      keys[i] = {static_cast<int>(rec[0]), f, l};
     }
   }
   SIGNORINI_ASSERT(keys.size() == n, "one key per received cell");
@@ -129,7 +126,7 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
     p4est_tree_t* tree = p4est_tree_array_index(dst->trees, t);
     for (size_t qi = 0; qi < tree->quadrants.elem_count; ++qi) {
       const auto* q = p4est_quadrant_array_index(&tree->quadrants, qi);
-      const uint64_t f = firstId(*q), l = f + span(q->level) - 1;
+      const auto [f, l] = morton::range(*q);
       // First received cell with last >= f in this tree: cells are disjoint and sorted, so search by first.
       auto it = std::upper_bound(searchFrom, received_.end(), std::make_pair(static_cast<int>(t), f),
                                  [](const auto& v, const Key& k) { return less(v.first, v.second, k.tree, k.first); });
