@@ -374,18 +374,24 @@ struct Simulation::Impl {
       }
       loads = t.projectionLoads(*scalar, nParts);
     }
-    const auto& solverParams = deck.sublist("Linear Solver");
+    std::vector<RCP<Vector>> rhs;
     for (int f = 0; f < nf; ++f) {
-      auto x = byField(interpolants, f);
-      to.assembler->zeroDirichlet(*x);
-      if (!interpolate) {  // M_rho x = rho int u_old phi by Jacobi CG (M is well conditioned: no Belos set-up per call)
-        auto b = byField(loads, f);
-        b->scale(problem->density);
-        to.assembler->zeroDirichlet(*b);
-        solvers::solveJacobiCG(*to.M, *b, *x, solverParams.get<double>("Relative Tolerance"),
-                               solverParams.get<int>("Maximum Iterations"));
+      fields[f] = byField(interpolants, f);
+      to.assembler->zeroDirichlet(*fields[f]);
+      if (!interpolate) {
+        rhs.push_back(byField(loads, f));
+        rhs.back()->scale(problem->density);
+        to.assembler->zeroDirichlet(*rhs.back());
       }
-      fields[f] = x;
+    }
+    if (!interpolate) {  // M_rho x = rho int u_old phi by Jacobi CG (M is well conditioned: no Belos set-up per
+                         // call), the fields side by side
+      const auto& solverParams = deck.sublist("Linear Solver");
+      std::vector<const Vector*> b;
+      std::vector<Vector*> x;
+      for (int f = 0; f < nf; ++f) b.push_back(rhs[f].get()), x.push_back(fields[f].get());
+      solvers::solveJacobiCG(*to.M, b, x, solverParams.get<double>("Relative Tolerance"),
+                             solverParams.get<int>("Maximum Iterations"));
     }
     if (from.coupling && to.coupling) {
       const auto nearest = nearestPoints(from.coupling->segmentMidpoint(), to.coupling->segmentMidpoint());

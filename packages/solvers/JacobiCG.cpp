@@ -1,10 +1,12 @@
 #include "JacobiCG.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "Error.hpp"
@@ -12,112 +14,250 @@
 namespace signorini::solvers {
 
 namespace {
-/// Sum over all ranks of n local partial sums.
-template <int n>
-void sumAll(const Comm& comm, double (&values)[n]) {
-  double global[n];
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, n, values, global);
-  for (int k = 0; k < n; ++k) values[k] = global[k];
+
+/// Fields solved together by one kernel sweep; more are solved in groups of this size.
+constexpr int kMaxFields = 3;
+
+/// Per-field flags and scalars of a group of NF fields, captured by value by the kernels (NF is a
+/// compile-time constant so that the loops over the fields unroll and the sums stay in registers).
+template <int NF>
+struct Fields {
+  bool active[NF] = {};
+  double value[NF] = {};
+};
+
+/// Local sums of body(i, sums) over i < n into 2 NF accumulators, in blocks whose partial sums stay
+/// in registers (a reduction into Kokkos' accumulators element by element went through memory and
+/// was as slow as the matrix apply). Within a field the additions come in the same order for any NF.
+template <int NF, class Body>
+struct BlockedSums {
+  using value_type = double[];
+  static constexpr LO kBlock = 256;
+  unsigned value_count;
+  LO n;
+  Body body;
+  KOKKOS_INLINE_FUNCTION void operator()(const LO block, value_type sums) const {
+    double local[2 * NF] = {};
+    const LO end = (block + 1) * kBlock < n ? (block + 1) * kBlock : n;
+    for (LO i = block * kBlock; i < end; ++i) body(i, local);
+    for (int k = 0; k < 2 * NF; ++k) sums[k] += local[k];
+  }
+};
+
+template <int NF, class Body>
+void blockedSums(const char* label, LO n, const Body& body, double (&sums)[2 * NF]) {
+  const BlockedSums<NF, Body> functor{2 * NF, n, body};
+  const LO blocks = (n + functor.kBlock - 1) / functor.kBlock;
+  Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryTraits<Kokkos::Unmanaged>> result(sums, 2 * NF);
+  Kokkos::parallel_reduce(label, Kokkos::RangePolicy<ExecSpace>(0, blocks), functor, result);
 }
 
-/// Local sums s0 += .., s1 += .. of body(i, a0, a1) over i < n, in blocks whose partial sums stay in
-/// registers (a reduction into Kokkos' accumulators element by element went through memory and was
-/// as slow as the matrix apply).
-template <class Body>
-void blockedSum(const char* label, LO n, const Body& body, double& s0, double& s1) {
-  constexpr LO kBlock = 256;
-  const LO blocks = (n + kBlock - 1) / kBlock;
-  Kokkos::parallel_reduce(
-      label, Kokkos::RangePolicy<ExecSpace>(0, blocks),
-      KOKKOS_LAMBDA(const LO block, double& a0, double& a1) {
-        double l0 = 0, l1 = 0;
-        const LO end = (block + 1) * kBlock < n ? (block + 1) * kBlock : n;
-        for (LO i = block * kBlock; i < end; ++i) body(i, l0, l1);
-        a0 += l0;
-        a1 += l1;
-      },
-      s0, s1);
+/// Sum over all ranks of the local partial sums.
+template <int N>
+void sumAll(const Comm& comm, double (&values)[N]) {
+  double global[N];
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, N, values, global);
+  for (int k = 0; k < N; ++k) values[k] = global[k];
 }
-}  // namespace
 
-int solveJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativeTolerance, int maxIterations) {
+/// Y(:, c) = A X(:, c) for the NC columns c in \p columns, one sweep over the local rows that reads
+/// each matrix entry once. The sums are ordered as in the serial spmv of KokkosKernels that Tpetra's
+/// apply uses (four partial sums over the entries of a row in groups of four, the rest into the
+/// first, added left to right), so on a serial build each column gets exactly the bits of Tpetra's
+/// apply. (Tpetra's own multi-vector apply orders differently.)
+template <int NC>
+void applyLocal(const CrsMatrix::local_matrix_device_type& matrix, const int (&columns)[NC], const MultiVector& X,
+                MultiVector& Y) {
+  auto xv = X.getLocalViewDevice(Tpetra::Access::ReadOnly);
+  auto yv = Y.getLocalViewDevice(Tpetra::Access::ReadWrite);
+  int col[NC];
+  for (int c = 0; c < NC; ++c) col[c] = columns[c];
+  Kokkos::parallel_for(
+      "signorini::jacobiCG::apply", Kokkos::RangePolicy<ExecSpace>(0, matrix.numRows()), KOKKOS_LAMBDA(const LO i) {
+        double s0[NC] = {}, s1[NC] = {}, s2[NC] = {}, s3[NC] = {};
+        const auto end = matrix.graph.row_map(i + 1);
+        auto k = matrix.graph.row_map(i);
+        for (; k + 4 <= end; k += 4) {
+          const LO j0 = matrix.graph.entries(k), j1 = matrix.graph.entries(k + 1), j2 = matrix.graph.entries(k + 2),
+                   j3 = matrix.graph.entries(k + 3);
+          for (int c = 0; c < NC; ++c) {
+            s0[c] += matrix.values(k) * xv(j0, col[c]);
+            s1[c] += matrix.values(k + 1) * xv(j1, col[c]);
+            s2[c] += matrix.values(k + 2) * xv(j2, col[c]);
+            s3[c] += matrix.values(k + 3) * xv(j3, col[c]);
+          }
+        }
+        for (; k < end; ++k)
+          for (int c = 0; c < NC; ++c) s0[c] += matrix.values(k) * xv(matrix.graph.entries(k), col[c]);
+        for (int c = 0; c < NC; ++c) yv(i, col[c]) = s0[c] + s1[c] + s2[c] + s3[c];
+      });
+}
+
+/// Y_f = A X_f for the active fields f: on one rank with the domain map as column map by
+/// applyLocal, otherwise by Tpetra's apply per field.
+template <int NF>
+void applyActive(const CrsMatrix& A, const Fields<NF>& fields, const MultiVector& X, MultiVector& Y) {
+  const bool local = A.getComm()->getSize() == 1 && A.getGraph()->getImporter().is_null() &&
+                     A.getGraph()->getExporter().is_null() && A.getColMap()->isSameAs(*A.getDomainMap());
+  int columns[NF], nc = 0;
+  for (int f = 0; f < NF; ++f)
+    if (fields.active[f]) columns[nc++] = f;
+  if (!local) {
+    for (int c = 0; c < nc; ++c) A.apply(*X.getVector(columns[c]), *Y.getVectorNonConst(columns[c]));
+    return;
+  }
+  const auto matrix = A.getLocalMatrixDevice();
+  if (nc == 1) applyLocal<1>(matrix, {columns[0]}, X, Y);
+  if constexpr (NF >= 2)
+    if (nc == 2) applyLocal<2>(matrix, {columns[0], columns[1]}, X, Y);
+  if constexpr (NF >= 3)
+    if (nc == 3) applyLocal<3>(matrix, {columns[0], columns[1], columns[2]}, X, Y);
+  static_assert(NF <= 3, "applyActive dispatches up to three fields");
+}
+
+template <int NF>
+std::vector<int> solveGroup(const CrsMatrix& A, const std::vector<const Vector*>& b, const std::vector<Vector*>& x,
+                            double relativeTolerance, int maxIterations) {
   const auto map = A.getRangeMap();
   const Comm& comm = *map->getComm();
   const LO n = static_cast<LO>(map->getNodeNumElements());
-  Vector inverseDiagonal(A.getRowMap()), r(map), p(map), q(map);
+  Vector inverseDiagonal(A.getRowMap());
+  MultiVector X(map, NF, false), B(map, NF, false), R(map, NF, false), P(map, NF, false), Q(map, NF, false);
+  for (int f = 0; f < NF; ++f) {
+    X.getVectorNonConst(f)->assign(*x[f]);
+    B.getVectorNonConst(f)->assign(*b[f]);
+  }
   A.getLocalDiagCopy(inverseDiagonal);
-  A.apply(x, q);
-  double start[2] = {0, 0};  // ||b||^2, r.z
+  Fields<NF> fields;
+  for (int f = 0; f < NF; ++f) fields.active[f] = true;
+  applyActive(A, fields, X, Q);
+  double start[2 * NF] = {};  // per field ||b||^2, r.z
   {
-    auto bv = b.getLocalViewDevice(Tpetra::Access::ReadOnly);
+    auto bv = B.getLocalViewDevice(Tpetra::Access::ReadOnly);
     auto dv = inverseDiagonal.getLocalViewDevice(Tpetra::Access::ReadWrite);
-    auto qv = q.getLocalViewDevice(Tpetra::Access::ReadOnly);
-    auto rv = r.getLocalViewDevice(Tpetra::Access::OverwriteAll);
-    auto pv = p.getLocalViewDevice(Tpetra::Access::OverwriteAll);
-    blockedSum(
+    auto qv = Q.getLocalViewDevice(Tpetra::Access::ReadOnly);
+    auto rv = R.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+    auto pv = P.getLocalViewDevice(Tpetra::Access::OverwriteAll);
+    blockedSums<NF>(
         "signorini::jacobiCG::start", n,
-        KOKKOS_LAMBDA(const LO i, double& bb, double& rz) {
-          dv(i, 0) = 1.0 / dv(i, 0);
-          const double ri = bv(i, 0) - qv(i, 0);
-          rv(i, 0) = ri;
-          pv(i, 0) = ri * dv(i, 0);
-          bb += bv(i, 0) * bv(i, 0);
-          rz += ri * pv(i, 0);
+        KOKKOS_LAMBDA(const LO i, double* s) {
+          const double d = 1.0 / dv(i, 0);
+          dv(i, 0) = d;
+          for (int f = 0; f < NF; ++f) {
+            const double ri = bv(i, f) - qv(i, f);
+            rv(i, f) = ri;
+            pv(i, f) = ri * d;
+            s[2 * f] += bv(i, f) * bv(i, f);
+            s[2 * f + 1] += ri * pv(i, f);
+          }
         },
-        start[0], start[1]);
+        start);
   }
   sumAll(comm, start);
-  if (start[0] == 0.0) {
-    x.putScalar(0.0);
-    return 0;
+  std::vector<int> iterations(NF, 0);
+  double target[NF] = {}, rz[NF] = {};
+  int active = 0;
+  for (int f = 0; f < NF; ++f) {
+    fields.active[f] = false;
+    if (start[2 * f] == 0.0) {
+      x[f]->putScalar(0.0);
+      continue;
+    }
+    target[f] = relativeTolerance * std::sqrt(start[2 * f]);
+    rz[f] = start[2 * f + 1];
+    if (R.getVector(f)->norm2() <= target[f]) continue;  // the initial residual may already be small enough
+    fields.active[f] = true;
+    ++active;
   }
-  const double target = relativeTolerance * std::sqrt(start[0]);
-  double rz = start[1];
-  if (r.norm2() <= target) return 0;  // the initial residual may already be small enough
   auto dv = inverseDiagonal.getLocalViewDevice(Tpetra::Access::ReadOnly);
-  for (int it = 1; it <= maxIterations; ++it) {
-    A.apply(p, q);
-    double pq[2] = {0, 0};
+  for (int it = 1; it <= maxIterations && active > 0; ++it) {
+    applyActive(A, fields, P, Q);
+    double pq[2 * NF] = {};
     {
-      auto pv = p.getLocalViewDevice(Tpetra::Access::ReadOnly);
-      auto qv = q.getLocalViewDevice(Tpetra::Access::ReadOnly);
-      blockedSum(
-          "signorini::jacobiCG::pq", n, KOKKOS_LAMBDA(const LO i, double& s, double&) { s += pv(i, 0) * qv(i, 0); },
-          pq[0], pq[1]);
+      auto pv = P.getLocalViewDevice(Tpetra::Access::ReadOnly);
+      auto qv = Q.getLocalViewDevice(Tpetra::Access::ReadOnly);
+      blockedSums<NF>(
+          "signorini::jacobiCG::pq", n,
+          KOKKOS_LAMBDA(const LO i, double* s) {
+            for (int f = 0; f < NF; ++f)
+              if (fields.active[f]) s[2 * f] += pv(i, f) * qv(i, f);
+          },
+          pq);
     }
     sumAll(comm, pq);
-    const double alpha = rz / pq[0];
-    double sums[2] = {0, 0};  // r.r, r.z after the update
+    Fields<NF> alpha = fields;
+    for (int f = 0; f < NF; ++f)
+      if (fields.active[f]) alpha.value[f] = rz[f] / pq[2 * f];
+    double sums[2 * NF] = {};  // per field r.r, r.z after the update
     {
-      auto pv = p.getLocalViewDevice(Tpetra::Access::ReadOnly);
-      auto qv = q.getLocalViewDevice(Tpetra::Access::ReadOnly);
-      auto xv = x.getLocalViewDevice(Tpetra::Access::ReadWrite);
-      auto rv = r.getLocalViewDevice(Tpetra::Access::ReadWrite);
-      blockedSum(
+      auto pv = P.getLocalViewDevice(Tpetra::Access::ReadOnly);
+      auto qv = Q.getLocalViewDevice(Tpetra::Access::ReadOnly);
+      auto xv = X.getLocalViewDevice(Tpetra::Access::ReadWrite);
+      auto rv = R.getLocalViewDevice(Tpetra::Access::ReadWrite);
+      blockedSums<NF>(
           "signorini::jacobiCG::update", n,
-          KOKKOS_LAMBDA(const LO i, double& rr, double& rzNew) {
-            xv(i, 0) += alpha * pv(i, 0);
-            const double ri = rv(i, 0) - alpha * qv(i, 0);
-            rv(i, 0) = ri;
-            rr += ri * ri;
-            rzNew += ri * ri * dv(i, 0);
+          KOKKOS_LAMBDA(const LO i, double* s) {
+            for (int f = 0; f < NF; ++f)
+              if (alpha.active[f]) {
+                xv(i, f) += alpha.value[f] * pv(i, f);
+                const double ri = rv(i, f) - alpha.value[f] * qv(i, f);
+                rv(i, f) = ri;
+                s[2 * f] += ri * ri;
+                s[2 * f + 1] += ri * ri * dv(i, 0);
+              }
           },
-          sums[0], sums[1]);
+          sums);
     }
     sumAll(comm, sums);
-    if (std::sqrt(sums[0]) <= target) return it;
-    const double beta = sums[1] / rz;
-    rz = sums[1];
-    {
-      auto rv = r.getLocalViewDevice(Tpetra::Access::ReadOnly);
-      auto pv = p.getLocalViewDevice(Tpetra::Access::ReadWrite);
-      Kokkos::parallel_for(
-          "signorini::jacobiCG::direction", Kokkos::RangePolicy<ExecSpace>(0, n),
-          KOKKOS_LAMBDA(const LO i) { pv(i, 0) = rv(i, 0) * dv(i, 0) + beta * pv(i, 0); });
+    Fields<NF> beta = fields;
+    for (int f = 0; f < NF; ++f) {
+      if (!fields.active[f]) continue;
+      if (std::sqrt(sums[2 * f]) <= target[f]) {
+        iterations[f] = it;
+        x[f]->assign(*X.getVector(f));
+        fields.active[f] = beta.active[f] = false;
+        --active;
+        continue;
+      }
+      beta.value[f] = sums[2 * f + 1] / rz[f];
+      rz[f] = sums[2 * f + 1];
     }
+    if (active == 0) break;
+    auto rv = R.getLocalViewDevice(Tpetra::Access::ReadOnly);
+    auto pv = P.getLocalViewDevice(Tpetra::Access::ReadWrite);
+    Kokkos::parallel_for(
+        "signorini::jacobiCG::direction", Kokkos::RangePolicy<ExecSpace>(0, n), KOKKOS_LAMBDA(const LO i) {
+          for (int f = 0; f < NF; ++f)
+            if (beta.active[f]) pv(i, f) = rv(i, f) * dv(i, 0) + beta.value[f] * pv(i, f);
+        });
   }
-  throw core::SolverError("Jacobi CG: no convergence to " + std::to_string(relativeTolerance) + " in " +
-                          std::to_string(maxIterations) + " iterations");
+  if (active > 0)
+    throw core::SolverError("Jacobi CG: no convergence to " + std::to_string(relativeTolerance) + " in " +
+                            std::to_string(maxIterations) + " iterations");
+  return iterations;
+}
+
+}  // namespace
+
+std::vector<int> solveJacobiCG(const CrsMatrix& A, const std::vector<const Vector*>& b, const std::vector<Vector*>& x,
+                               double relativeTolerance, int maxIterations) {
+  SIGNORINI_ASSERT(b.size() == x.size(), "one initial guess per right-hand side");
+  std::vector<int> iterations;
+  for (size_t first = 0; first < b.size(); first += kMaxFields) {
+    const size_t count = std::min<size_t>(b.size() - first, kMaxFields);
+    const std::vector<const Vector*> groupB(b.begin() + first, b.begin() + first + count);
+    const std::vector<Vector*> groupX(x.begin() + first, x.begin() + first + count);
+    std::vector<int> group;
+    if (count == 1) group = solveGroup<1>(A, groupB, groupX, relativeTolerance, maxIterations);
+    if (count == 2) group = solveGroup<2>(A, groupB, groupX, relativeTolerance, maxIterations);
+    if (count == 3) group = solveGroup<3>(A, groupB, groupX, relativeTolerance, maxIterations);
+    iterations.insert(iterations.end(), group.begin(), group.end());
+  }
+  return iterations;
+}
+
+int solveJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativeTolerance, int maxIterations) {
+  return solveJacobiCG(A, std::vector<const Vector*>{&b}, std::vector<Vector*>{&x}, relativeTolerance, maxIterations)[0];
 }
 
 }  // namespace signorini::solvers
