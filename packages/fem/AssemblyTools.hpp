@@ -28,7 +28,7 @@ inline Kokkos::View<int*, DeviceType> deviceFlags(const std::vector<char>& flags
 
 /// Node-to-node couplings of Q1 cells (hanging corners coupled through their constraints): the
 /// neighbours of overlap node n (itself included) are adjacent[offset[n] .. offset[n] + count[n]),
-/// sorted and distinct.
+/// sorted and distinct (here count[n] = offset[n + 1] - offset[n]).
 struct Q1NodeAdjacency {
   std::vector<size_t> offset, count;
   std::vector<LO> adjacent;
@@ -37,11 +37,11 @@ struct Q1NodeAdjacency {
 inline Q1NodeAdjacency q1NodeAdjacency(const mesh::Q1Mesh& mesh, size_t nNodes) {
   const auto& dofs = mesh.cornerDofsHost;
   const LO nc = mesh.numLocalCells();
-  // The distinct nodes of every cell (at most 8: 4 corners, each with up to 2 constraint nodes).
+  // The distinct nodes of every cell (at most 8: 4 corners, each with up to 2 constraint nodes),
+  // and the cells of every node.
   std::vector<LO> cellNodes(8 * static_cast<size_t>(nc));
   std::vector<unsigned char> cellCount(nc, 0);
-  Q1NodeAdjacency adj;
-  adj.offset.assign(nNodes + 1, 0);
+  std::vector<size_t> cellsAt(nNodes + 1, 0);
   for (LO e = 0; e < nc; ++e) {
     LO* nodes = &cellNodes[8 * static_cast<size_t>(e)];
     int count = 0;
@@ -51,23 +51,34 @@ inline Q1NodeAdjacency q1NodeAdjacency(const mesh::Q1Mesh& mesh, size_t nNodes) 
         if (n >= 0 && std::find(nodes, nodes + count, n) == nodes + count) nodes[count++] = n;
       }
     cellCount[e] = static_cast<unsigned char>(count);
-    for (int i = 0; i < count; ++i) adj.offset[nodes[i] + 1] += count;
+    for (int i = 0; i < count; ++i) ++cellsAt[nodes[i] + 1];
   }
-  for (size_t n = 0; n < nNodes; ++n) adj.offset[n + 1] += adj.offset[n];
-  // Node-to-node adjacency with repeats, then each node's neighbours sorted and made distinct.
-  adj.adjacent.resize(adj.offset[nNodes]);
-  std::vector<size_t> fill(adj.offset.begin(), adj.offset.end() - 1);
-  for (LO e = 0; e < nc; ++e) {
-    const LO* nodes = &cellNodes[8 * static_cast<size_t>(e)];
-    for (int i = 0; i < cellCount[e]; ++i)
-      for (int j = 0; j < cellCount[e]; ++j) adj.adjacent[fill[nodes[i]]++] = nodes[j];
+  for (size_t n = 0; n < nNodes; ++n) cellsAt[n + 1] += cellsAt[n];
+  std::vector<LO> cells(cellsAt[nNodes]);
+  {
+    std::vector<size_t> fill(cellsAt.begin(), cellsAt.end() - 1);
+    for (LO e = 0; e < nc; ++e)
+      for (int i = 0; i < cellCount[e]; ++i) cells[fill[cellNodes[8 * static_cast<size_t>(e) + i]]++] = e;
   }
-  adj.count.assign(nNodes, 0);
+  // Each node's neighbours: the nodes of its cells, each taken once (marked with the node), sorted.
+  Q1NodeAdjacency adj;
+  adj.offset.resize(nNodes + 1);
+  adj.count.resize(nNodes);
+  adj.adjacent.reserve(10 * nNodes);
+  std::vector<LO> seenBy(nNodes, -1);
   for (size_t n = 0; n < nNodes; ++n) {
-    auto first = adj.adjacent.begin() + adj.offset[n], last = adj.adjacent.begin() + adj.offset[n + 1];
-    std::sort(first, last);
-    adj.count[n] = std::unique(first, last) - first;
+    adj.offset[n] = adj.adjacent.size();
+    for (size_t c = cellsAt[n]; c < cellsAt[n + 1]; ++c) {
+      const LO e = cells[c];
+      for (int i = 0; i < cellCount[e]; ++i) {
+        const LO m = cellNodes[8 * static_cast<size_t>(e) + i];
+        if (seenBy[m] != static_cast<LO>(n)) seenBy[m] = static_cast<LO>(n), adj.adjacent.push_back(m);
+      }
+    }
+    std::sort(adj.adjacent.begin() + adj.offset[n], adj.adjacent.end());
+    adj.count[n] = adj.adjacent.size() - adj.offset[n];
   }
+  adj.offset[nNodes] = adj.adjacent.size();
   return adj;
 }
 
