@@ -93,12 +93,16 @@ void applyLocal(const CrsMatrix::local_matrix_device_type& matrix, const int (&c
       });
 }
 
-/// Y_f = A X_f for the active fields f: on one rank with the domain map as column map by
-/// applyLocal, otherwise by Tpetra's apply per field.
+/// Whether applyLocal can apply \p A: one rank, the domain map as column map.
+bool appliesLocally(const CrsMatrix& A) {
+  return A.getComm()->getSize() == 1 && A.getGraph()->getImporter().is_null() &&
+         A.getGraph()->getExporter().is_null() && A.getColMap()->isSameAs(*A.getDomainMap());
+}
+
+/// Y_f = A X_f for the active fields f: by applyLocal when \p local (appliesLocally(A)), otherwise
+/// by Tpetra's apply per field.
 template <int NF>
-void applyActive(const CrsMatrix& A, const Fields<NF>& fields, const MultiVector& X, MultiVector& Y) {
-  const bool local = A.getComm()->getSize() == 1 && A.getGraph()->getImporter().is_null() &&
-                     A.getGraph()->getExporter().is_null() && A.getColMap()->isSameAs(*A.getDomainMap());
+void applyActive(const CrsMatrix& A, bool local, const Fields<NF>& fields, const MultiVector& X, MultiVector& Y) {
   int columns[NF], nc = 0;
   for (int f = 0; f < NF; ++f)
     if (fields.active[f]) columns[nc++] = f;
@@ -128,9 +132,10 @@ std::vector<int> solveGroup(const CrsMatrix& A, const std::vector<const Vector*>
     B.getVectorNonConst(f)->assign(*b[f]);
   }
   A.getLocalDiagCopy(inverseDiagonal);
+  const bool local = appliesLocally(A);
   Fields<NF> fields;
   for (int f = 0; f < NF; ++f) fields.active[f] = true;
-  applyActive(A, fields, X, Q);
+  applyActive(A, local, fields, X, Q);
   double start[2 * NF] = {};  // per field ||b||^2, r.z
   {
     auto bv = B.getLocalViewDevice(Tpetra::Access::ReadOnly);
@@ -171,7 +176,7 @@ std::vector<int> solveGroup(const CrsMatrix& A, const std::vector<const Vector*>
   }
   auto dv = inverseDiagonal.getLocalViewDevice(Tpetra::Access::ReadOnly);
   for (int it = 1; it <= maxIterations && active > 0; ++it) {
-    applyActive(A, fields, P, Q);
+    applyActive(A, local, fields, P, Q);
     double pq[2 * NF] = {};
     {
       auto pv = P.getLocalViewDevice(Tpetra::Access::ReadOnly);
