@@ -2,7 +2,8 @@
 """Compares an adaptive run with its uniform comparison from their <base>.cycles.csv files:
 the total unknowns the adaptive run needs to reach the estimate of the finest uniform cycle
 (log-log interpolation between the adaptive cycles around the first one at or below it; also the
-unknowns of that cycle itself, with no interpolation) and the ratio of wall times.
+unknowns of that cycle itself, with no interpolation) and the ratio of wall times; then the same factor
+for the estimate of every uniform cycle, to show how it changes with the level of the comparison.
 Usage: tools/compare_runs.py ADAPTIVE_BASE UNIFORM_BASE [--require-factor F]
 With --require-factor the exit status is 1 unless the interpolated factor is at least F."""
 import argparse
@@ -22,8 +23,27 @@ target, n_uniform, t_uniform = un["eta"][-1], un["total_dofs"][-1], un["wall_sec
 print(f"{a.adaptive} against {a.uniform}")
 print("adaptive cycles: " + "; ".join(f"{int(d)} unknowns, eta {e:.4g}" for d, e in zip(ad["total_dofs"], ad["eta"])))
 print("uniform cycles:  " + "; ".join(f"{int(d)} unknowns, eta {e:.4g}" for d, e in zip(un["total_dofs"], un["eta"])))
-reached = np.nonzero(ad["eta"] <= target)[0]
-if len(reached) == 0:
+
+
+def adaptive_unknowns_for(eta):
+    """(interpolated total unknowns, first cycle at or below eta) of the adaptive run, or None."""
+    below = np.nonzero(ad["eta"] <= eta)[0]
+    if len(below) == 0:
+        return None
+    j = below[0]
+    if j == 0:
+        return float(ad["total_dofs"][0]), 0
+    x0, x1 = np.log(ad["total_dofs"][j - 1]), np.log(ad["total_dofs"][j])
+    y0, y1 = np.log(ad["eta"][j - 1]), np.log(ad["eta"][j])
+    return float(np.exp(x0 + (np.log(eta) - y0) * (x1 - x0) / (y1 - y0))), j
+
+
+for j in range(1, len(un)):
+    found = adaptive_unknowns_for(un["eta"][j])
+    head = f"uniform cycle {j} (eta {un['eta'][j]:.4g}, {int(un['total_dofs'][j])} unknowns): "
+    print(head + ("not reached by the adaptive run" if found is None else
+                  f"adaptive about {int(found[0])} (cycle {found[1]}): factor {un['total_dofs'][j] / found[0]:.2f}"))
+if adaptive_unknowns_for(target) is None:
     print(f"the adaptive run does not reach the finest uniform estimate {target:.4g}")
     # The other way round: the unknowns the uniform run needs for the adaptive run's last estimate
     # (log-log interpolation between the two uniform cycles around it).
@@ -41,14 +61,8 @@ if len(reached) == 0:
         print(f"wall time: adaptive {t_last:.1f} s (all cycles), uniform {t_uniform_needed:.1f} s (all cycles up "
               f"to the one that reaches it): factor {t_uniform_needed / t_last:.2f}")
     sys.exit(1 if a.require_factor > 0 else 0)
-i = reached[0]
+n_needed, i = adaptive_unknowns_for(target)
 n_cycle, t_needed = ad["total_dofs"][i], ad["wall_seconds"][: i + 1].sum()
-if i == 0:
-    n_needed = n_cycle
-else:  # log-log interpolation between cycles i-1 and i
-    x0, x1 = np.log(ad["total_dofs"][i - 1]), np.log(ad["total_dofs"][i])
-    y0, y1 = np.log(ad["eta"][i - 1]), np.log(ad["eta"][i])
-    n_needed = float(np.exp(x0 + (np.log(target) - y0) * (x1 - x0) / (y1 - y0)))
 factor = n_uniform / n_needed
 print(f"finest uniform estimate {target:.4g} with {int(n_uniform)} total unknowns ({t_uniform:.1f} s over all cycles)")
 print(f"adaptive reaches it with about {int(n_needed)} total unknowns (interpolated): factor {factor:.2f} fewer unknowns")

@@ -180,10 +180,15 @@ def main():
     ap.add_argument("--steps", default="20,60,100,200,300,400", help="steps whose meshes are drawn")
     ap.add_argument("--time-step", type=float, default=0.0025)
     ap.add_argument("--multiplier-time", type=float, default=0.5)
+    ap.add_argument("--eta-only", action="store_true",
+                    help="draw only eta_vs_unknowns.png (runs without Exodus output, e.g. the finer study)")
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out)
+    if a.eta_only:
+        print("wrote", os.path.join(a.out, "eta_vs_unknowns.png"))
+        return
     plot_contributions(a.adaptive, a.out)
     plot_energy_and_probe(a.adaptive, a.uniform, a.out)
     plot_meshes(a.adaptive, [int(s) for s in a.steps.split(",")], a.time_step, a.out)

@@ -90,7 +90,8 @@ ContactQP::~ContactQP() = default;
 namespace {
 constexpr int kMaxStripLayers = 40;
 int stripLayers(const core::ParameterList& p, double courant) {
-  return static_cast<int>(std::ceil(p.get<double>("Strip Width") * courant));
+  // The tolerance keeps an integral width from gaining a layer through rounding of courant.
+  return static_cast<int>(std::ceil(p.get<double>("Strip Width") * courant - 1e-9));
 }
 }  // namespace
 
@@ -109,7 +110,14 @@ void ContactQP::setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupli
   const std::string method = params_.get<std::string>("Newton Step Solver");
   cachedColumns_ = method == "cached columns" || (method == "auto" && usesCoarseCorrection(courant));
   if (preconditioner_ == "strip" || preconditioner_ == "strip + coarse" || preconditioner_ == "auto") {
-    const int layers = std::clamp(stripLayers(params_, courant), 2, kMaxStripLayers);
+    // The finest segments get the layers of the mesh's Courant number, a segment of h_j (its edge
+    // length) the same physical width: courant * h_min / h_j with h_min the finest segment's h.
+    std::vector<double> h(static_cast<size_t>(m));
+    for (int j = 0; j < m; ++j) h[j] = segLen_[j] / coupling.segmentEdges()[j];
+    const double hFinest = m > 0 ? *std::min_element(h.begin(), h.end()) : 1.0;
+    std::vector<int> layers(static_cast<size_t>(m));
+    for (int j = 0; j < m; ++j)
+      layers[j] = std::clamp(stripLayers(params_, courant * (hFinest / h[j])), 2, kMaxStripLayers);
     strip_ = std::make_unique<StripSchurApproximation>(A, coupling, layers);
     approxQ_ = strip_->matrix();
     if (usesCoarseCorrection(courant)) {

@@ -38,22 +38,39 @@ std::vector<T> gatherToRoot(MPI_Comm comm, const std::vector<T>& mine) {
 }  // namespace
 
 StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::ContactCoupling& B, int layers)
+    : StripSchurApproximation(A, B, std::vector<int>(static_cast<size_t>(B.numSegments()), layers)) {}
+
+StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::ContactCoupling& B,
+                                                 const std::vector<int>& layers)
     : impl_(std::make_unique<Impl>()) {
-  SIGNORINI_ASSERT(layers >= 1, "strip needs at least one layer");
+  const int m = B.numSegments();
+  SIGNORINI_ASSERT(static_cast<int>(layers.size()) == m, "one layer count per segment");
+  SIGNORINI_ASSERT(m == 0 || *std::min_element(layers.begin(), layers.end()) >= 1, "strip needs at least one layer");
   const auto rowMap = A.getRowMap();
   const auto colMap = A.getColMap();
   const auto comm = rowMap->getComm();
   const MPI_Comm raw = core::rawMpiComm(*comm);
   const LO nOwned = static_cast<LO>(rowMap->getNodeNumElements());
-  const int m = B.numSegments();
   impl_->m = m;
   const auto Al = A.getLocalMatrixHost();
   const auto Bm = B.matrix();
   const auto Bl = Bm->getLocalMatrixHost();
+  const auto bcol = Bm->getColMap();
 
-  // Strip nodes: graph distance <= layers from a node with a non-zero row of B.
-  std::vector<char> inStrip(nOwned, 0);
-  for (LO i = 0; i < nOwned; ++i) inStrip[i] = Bl.graph.row_map(i + 1) > Bl.graph.row_map(i);
+  // Strip nodes: graph distance <= layers_j from a node of segment j (a non-zero in column j of B).
+  // reach[i]: the most layers left at node i over all segments (-1: not in the strip).
+  std::vector<int> reach(nOwned, -1);
+  int maxLayers = 0;
+  for (LO i = 0; i < nOwned; ++i)
+    for (auto k = Bl.graph.row_map(i); k < Bl.graph.row_map(i + 1); ++k) {
+      const int l = layers[static_cast<size_t>(bcol->getGlobalElement(Bl.graph.entries(k)))];
+      reach[i] = std::max(reach[i], l);
+      maxLayers = std::max(maxLayers, l);
+    }
+  {
+    const int mine = maxLayers;  // the sweeps below are collective
+    MPI_Allreduce(&mine, &maxLayers, 1, MPI_INT, MPI_MAX, raw);
+  }
   const auto importer = A.getGraph()->getImporter();
   Vector owned(rowMap), cols(colMap);
   auto toColumns = [&](const auto& value) {  // a value per owned node -> the same on A's column map
@@ -67,33 +84,33 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
       cols.doImport(owned, *importer, Tpetra::INSERT);
   };
   if (importer.is_null()) {
-    // One rank: column and row ids coincide, so the layers grow breadth-first from the contact nodes.
-    std::vector<LO> front;
+    // One rank: column and row ids coincide, so the strip grows breadth-first from the contact
+    // nodes, the nodes with the most layers left first (a bucket per count).
+    std::vector<std::vector<LO>> bucket(static_cast<size_t>(maxLayers) + 1);
     for (LO i = 0; i < nOwned; ++i)
-      if (inStrip[i]) front.push_back(i);
-    for (int layer = 0; layer < layers; ++layer) {
-      std::vector<LO> grown;
-      for (LO i : front)
-        for (auto k = Al.graph.row_map(i); k < Al.graph.row_map(i + 1); ++k)
-          if (!inStrip[Al.graph.entries(k)]) inStrip[Al.graph.entries(k)] = 1, grown.push_back(Al.graph.entries(k));
-      front.swap(grown);
-    }
-  } else {
-    for (int layer = 0; layer < layers; ++layer) {
-      toColumns([&](LO i) { return static_cast<double>(inStrip[i]); });
-      auto c = cols.getLocalViewHost(Tpetra::Access::ReadOnly);
-      std::vector<char> next = inStrip;
-      for (LO i = 0; i < nOwned; ++i) {
-        if (inStrip[i]) continue;
-        for (auto k = Al.graph.row_map(i); k < Al.graph.row_map(i + 1); ++k)
-          if (c(Al.graph.entries(k), 0) > 0) {
-            next[i] = 1;
-            break;
+      if (reach[i] > 0) bucket[static_cast<size_t>(reach[i])].push_back(i);
+    for (int left = maxLayers; left > 0; --left)
+      for (LO i : bucket[static_cast<size_t>(left)]) {
+        if (reach[i] != left) continue;  // reached again with more layers left
+        for (auto k = Al.graph.row_map(i); k < Al.graph.row_map(i + 1); ++k) {
+          const LO j = Al.graph.entries(k);
+          if (reach[j] < left - 1) {
+            reach[j] = left - 1;
+            if (left > 1) bucket[static_cast<size_t>(left - 1)].push_back(j);
           }
+        }
       }
-      inStrip.swap(next);
+  } else {
+    for (int layer = 0; layer < maxLayers; ++layer) {
+      toColumns([&](LO i) { return static_cast<double>(reach[i]); });
+      auto c = cols.getLocalViewHost(Tpetra::Access::ReadOnly);
+      for (LO i = 0; i < nOwned; ++i)
+        for (auto k = Al.graph.row_map(i); k < Al.graph.row_map(i + 1); ++k)
+          reach[i] = std::max(reach[i], static_cast<int>(c(Al.graph.entries(k), 0)) - 1);
     }
   }
+  std::vector<char> inStrip(nOwned, 0);
+  for (LO i = 0; i < nOwned; ++i) inStrip[i] = reach[i] >= 0;
 
   // The strip matrix: rows and columns of A on strip nodes only, numbered contiguously in rank
   // order; gathered with B_s on rank 0, which factors it alone (EnvelopeCholesky is serial; the
@@ -119,7 +136,6 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
   std::vector<double> stripVals, Bs(static_cast<size_t>(nStrip) * m, 0.0);
   {
     auto c = cols.getLocalViewHost(Tpetra::Access::ReadOnly);
-    const auto bcol = Bm->getColMap();
     for (LO s = 0; s < nStrip; ++s) {
       const LO i = impl_->stripToOwned[s];
       for (auto k = Al.graph.row_map(i); k < Al.graph.row_map(i + 1); ++k) {

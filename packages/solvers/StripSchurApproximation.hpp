@@ -17,6 +17,9 @@ class StripSchurApproximation {
  public:
   /// \param layers number of node layers of the strip (>= 1) counted from the contact nodes.
   StripSchurApproximation(const CrsMatrix& A, const fem::ContactCoupling& B, int layers);
+  /// A strip whose width follows the segments: nodes within layers[j] (>= 1) node layers of a node
+  /// of segment E_j, for some j (graded meshes: fewer layers along coarse parts of Gamma_C).
+  StripSchurApproximation(const CrsMatrix& A, const fem::ContactCoupling& B, const std::vector<int>& layers);
   ~StripSchurApproximation();
 
   /// B^T A_s^{-1} B, row-major m x m, identical on all ranks.

@@ -108,6 +108,43 @@ TEST(StripSchurApproximation, IsExactWhenTheStripCoversTheDomain) {
   for (int j = 0; j < ns; ++j) EXPECT_GT(narrow.matrix()[j * ns + j], 0.0);
 }
 
+TEST(StripSchurApproximation, WidthFollowsEachSegment) {
+  // On a uniform grid the Q1 graph distance between nodes is the grid's Chebyshev distance, so the
+  // strip is known in closed form: the nodes within layers[j] of a node of segment j, for some j.
+  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 2, 2, 2);  // 8 x 8 cells, h = 1/8
+  const auto& m = tm.build();
+  const auto dir = m.nodesOnSegments(kLeft);
+  fem::Q1Assembler asmb(m, dir);
+  auto A = asmb.assembleOperator(1.0, 0.02, 1.0, 1.0);
+  fem::ContactCoupling B(m, kRight, fem::ContactCoupling::SegmentSize::TwoEdges, dir);
+  ASSERT_EQ(B.numSegments(), 4);
+  const std::vector<int> layers{3, 1, 1, 2};
+  solvers::StripSchurApproximation strip(*A, B, layers);
+  long long expected = 0;
+  for (int i = 0; i <= 8; ++i)
+    for (int j = 0; j <= 8; ++j) {
+      bool in = false;
+      for (int s = 0; s < 4; ++s) {
+        const double y0 = B.segmentMidpoint()[s][1] - 0.5 * B.segmentLength()[s];
+        for (int jj = static_cast<int>(std::lround(8 * y0)); jj <= std::lround(8 * y0) + 2; ++jj)
+          in = in || std::max(8 - i, std::abs(j - jj)) <= layers[s];
+      }
+      expected += in;
+    }
+  EXPECT_EQ(expected, 9 + 9 + 9 + 6);  // by hand: columns x = 1, 7/8, 6/8 whole, x = 5/8 for y <= 5/8
+  EXPECT_EQ(strip.stripSize(), expected);
+  // Equal layers give the uniform strip, matrix and all.
+  solvers::StripSchurApproximation uniform(*A, B, 2), perSegment(*A, B, std::vector<int>(4, 2));
+  EXPECT_EQ(perSegment.stripSize(), uniform.stripSize());
+  EXPECT_EQ(perSegment.matrix(), uniform.matrix());
+  // A wider strip along one segment brings its Schur block closer to the exact one.
+  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()), m.comm());
+  solver.setOperator(A, 1.0);
+  const auto Q = denseSchurComplement(solver, B, *m.ownedMap());
+  solvers::StripSchurApproximation wideFirst(*A, B, std::vector<int>{6, 1, 1, 1}), narrow(*A, B, 1);
+  EXPECT_LT(std::abs(wideFirst.matrix()[0] - Q[0]), 0.5 * std::abs(narrow.matrix()[0] - Q[0]));
+}
+
 /// Dense reference: solves the QP by enumerating active sets (m small).
 std::vector<double> bruteForce(const std::vector<double>& Q, const std::vector<double>& q, int m) {
   // KKT: lambda_I = 0, (Q lambda - q)_A = 0 (G_A = 0), lambda_A <= 0, G = q - Q lambda >= 0 on I.
