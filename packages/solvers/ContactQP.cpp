@@ -75,7 +75,8 @@ core::ParameterList ContactQP::getValidParameters() {
                   "the lumped B^T diag(A)^{-1} B; or none",
                   {"auto", "strip", "strip + coarse", "lumped", "none"});
   core::addDouble(p, "Strip Width", 6.0,
-                  "Width of the strip in units of c k (wave speed times time step; Q decays like exp(-1.4 d/k))",
+                  "Width of the strip in units of c k (wave speed times time step; Q decays like exp(-1.4 d/k)): "
+                  "segment j gets ceil(width c k / h_j) node layers (h_j its edge length; at least 2, at most 40)",
                   0.1, 1000.0);
   return p;
 }

@@ -41,7 +41,8 @@ class ContactQP {
 
   ~ContactQP();
   /// Prepares for a new step matrix or contact coupling (the Schur preconditioner).
-  /// \p courant = c k / h_min sets the strip width in node layers ("Strip Width" times it).
+  /// \p courant = c k / h_min sets the strip width in node layers ("Strip Width" times it) along the
+  /// finest segments; a segment of edge length h_j gets those of courant h_f / h_j (h_f the finest).
   /// \p coarseQ: the far-field part B^T P A_c^{-1} P^T B (CoarseSchurCorrection), required when
   /// usesCoarseCorrection(courant).
   void setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupling, double courant,
