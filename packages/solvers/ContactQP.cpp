@@ -112,7 +112,7 @@ void ContactQP::setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupli
   cachedColumns_ = method == "cached columns" || (method == "auto" && usesCoarseCorrection(courant));
   if (preconditioner_ == "strip" || preconditioner_ == "strip + coarse" || preconditioner_ == "auto") {
     // The finest segments get the layers of the mesh's Courant number, a segment of h_j (its edge
-    // length) the same physical width: courant * h_min / h_j with h_min the finest segment's h.
+    // length) the same physical width: courant * hFinest / h_j.
     std::vector<double> h(static_cast<size_t>(m));
     for (int j = 0; j < m; ++j) h[j] = segLen_[j] / coupling.segmentEdges()[j];
     const double hFinest = m > 0 ? *std::min_element(h.begin(), h.end()) : 1.0;

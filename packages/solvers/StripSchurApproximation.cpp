@@ -109,14 +109,12 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
           reach[i] = std::max(reach[i], static_cast<int>(c(Al.graph.entries(k), 0)) - 1);
     }
   }
-  std::vector<char> inStrip(nOwned, 0);
-  for (LO i = 0; i < nOwned; ++i) inStrip[i] = reach[i] >= 0;
 
   // The strip matrix: rows and columns of A on strip nodes only, numbered contiguously in rank
   // order; gathered with B_s on rank 0, which factors it alone (EnvelopeCholesky is serial; the
   // strip is thin, so its envelope is narrow).
   for (LO i = 0; i < nOwned; ++i)
-    if (inStrip[i]) impl_->stripToOwned.push_back(i);
+    if (reach[i] >= 0) impl_->stripToOwned.push_back(i);
   const LO nStrip = static_cast<LO>(impl_->stripToOwned.size());
   long long first = 0, mine = nStrip;
   MPI_Exscan(&mine, &first, 1, MPI_LONG_LONG, MPI_SUM, raw);
