@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <set>
 
@@ -14,10 +16,45 @@
 #include "Marking.hpp"
 #include "PhaseTimers.hpp"
 #include "ElasticityEstimator.hpp"
+#include "ExodusMesh.hpp"
 #include "ResidualEstimator.hpp"
 #include "TemporalRegularisation.hpp"
 
 namespace signorini::adapt {
+namespace {
+
+bool isExodusFile(const std::string& path) {
+  return (path.size() > 2 && path.compare(path.size() - 2, 2, ".e") == 0) || path.find(".e-s.") != std::string::npos;
+}
+
+/// The files of the cycle that turned out to be the last (a stopping criterion other than the
+/// number of cycles), written as "<cycleBase>.<rest>", renamed to "<finalBase>.<rest>" like the
+/// files of a run that ends after its planned cycles. Each rename replaces its target at once; the
+/// tail of an older series under the final name is removed first so ParaView does not mix it in.
+/// The files live on the writing rank; a failure there is reported on every rank of \p comm.
+std::vector<std::string> promoteToFinalName(const std::vector<std::string>& files, const std::string& cycleBase,
+                                            const std::string& finalBase, MPI_Comm comm) {
+  std::vector<std::string> renamed;
+  std::string error;
+  if (std::any_of(files.begin(), files.end(), isExodusFile)) io::removeExodusSeriesTail(finalBase);
+  for (const auto& f : files) {
+    if (f.compare(0, cycleBase.size() + 1, cycleBase + ".") != 0) {
+      renamed.push_back(f);
+      continue;
+    }
+    const std::string target = finalBase + f.substr(cycleBase.size());
+    std::error_code ec;
+    std::filesystem::rename(f, target, ec);
+    if (ec && error.empty()) error = "cannot rename '" + f + "' to '" + target + "': " + ec.message();
+    renamed.push_back(target);
+  }
+  int failed = error.empty() ? 0 : 1, anyFailed = 0;
+  MPI_Allreduce(&failed, &anyFailed, 1, MPI_INT, MPI_MAX, comm);
+  if (anyFailed) SIGNORINI_USER_ERROR("Output/Directory: " << (error.empty() ? "the final cycle's files could not be renamed on another rank" : error));
+  return renamed;
+}
+
+}  // namespace
 
 core::ParameterList AdaptiveSimulation::getValidParameters() {
   auto p = dynamics::Simulation::getValidParameters();
@@ -62,6 +99,11 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   MPI_Comm raw = sim_->initialForest()->comm();
   const int nSteps = sim_->numSteps();
   const int cycles = ap.get<int>("Cycles");
+  const double maxDofs = ap.get<double>("Maximum Total Unknowns"), tol = ap.get<double>("Tolerance");
+  // With these criteria any cycle may be the last: each is written in full under its cycle name,
+  // and the one that ends the run gets the final names.
+  const bool mayStopEarly = maxDofs > 0 || tol > 0;
+  const bool writeAll = ap.get<bool>("Write All Cycles");
   const int maxLevel = ap.get<int>("Maximum Level");
   const int baseLevel = deck_.sublist("Mesh").get<int>("Refinement Level");
   const double fraction = ap.get<double>("Refinement Fraction");
@@ -142,7 +184,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       dynamics::PassOptions options;
       const std::string& outBase = sim_->outputBase();
       options.basename = lastPlanned ? "" : outBase.substr(outBase.find_last_of('/') + 1) + ".cycle" + std::to_string(l);
-      options.writeExodus = lastPlanned || ap.get<bool>("Write All Cycles");
+      options.writeExodus = lastPlanned || writeAll || mayStopEarly;
       options.extraColumns = {"eta_star", "s0", "s1", "eta"};
       options.cellFieldName = "indicator";
       options.interpolateTransfer = ap.get<std::string>("Transfer") == "interpolation";
@@ -164,7 +206,6 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         return it == last.phaseSeconds.end() ? 0.0 : it->second;
       };
       const auto tr0 = std::chrono::steady_clock::now();
-      const double maxDofs = ap.get<double>("Maximum Total Unknowns"), tol = ap.get<double>("Tolerance");
       const bool stop = (maxDofs > 0 && last.totalDofs >= maxDofs) || (tol > 0 && etaMax <= tol) || l + 1 == cycles;
       if (!stop) {  // Algorithm 5.3, then the next cycle's meshes.
         mesh::regulariseSteps(next);
@@ -178,7 +219,13 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       core::rootOut(rank) << std::scientific << std::setprecision(4) << "signorini: cycle " << l
                           << ": total unknowns " << last.totalDofs << ", eta " << etaMax << std::fixed
                           << ", " << wall << " s" << std::endl;
-      if (stop) break;
+      if (stop) {
+        if (!lastPlanned) last.files = promoteToFinalName(last.files, base + ".cycle" + std::to_string(l), base, raw);
+        break;
+      }
+      if (mayStopEarly && !writeAll && !lastPlanned)  // written in case it was the last: it was not
+        for (const auto& f : last.files)
+          if (isExodusFile(f)) std::remove(f.c_str());
     }
   } catch (...) {
     if (cyclesCsv) cyclesCsv->abandon();

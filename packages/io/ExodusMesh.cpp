@@ -228,6 +228,24 @@ QuadMesh readExodusQuadMesh(const std::string& path) {
 // Writing
 // ---------------------------------------------------------------------------------------------
 
+void removeExodusSeriesTail(const std::string& basePath) {
+  const fs::path base(basePath);
+  const fs::path directory = base.has_parent_path() ? base.parent_path() : fs::path(".");
+  const std::string stem = base.filename().string() + ".e-s.";
+  std::error_code ec;
+  fs::directory_iterator it(directory, ec), end;
+  std::vector<fs::path> stale;
+  for (; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() > stem.size() && name.compare(0, stem.size(), stem) == 0 &&
+        std::all_of(name.begin() + static_cast<long>(stem.size()), name.end(),
+                    [](unsigned char c) { return std::isdigit(c) != 0; })) {
+      stale.push_back(it->path());
+    }
+  }
+  for (const auto& file : stale) fs::remove(file, ec);
+}
+
 namespace {
 
 /// Pointers to the characters of \p names, for the Exodus calls that take `char*[]`.
@@ -271,30 +289,11 @@ struct ExodusSeriesWriter::Impl {
     return basePath + suffix;
   }
 
-  /// Removes "<base>.e-s.<digits>" files that an earlier run with the same base left behind.
-  void removeStaleSeriesFiles() const {
-    const fs::path base(basePath);
-    const fs::path directory = base.has_parent_path() ? base.parent_path() : fs::path(".");
-    const std::string stem = base.filename().string() + ".e-s.";
-    std::error_code ec;
-    fs::directory_iterator it(directory, ec), end;
-    std::vector<fs::path> stale;
-    for (; !ec && it != end; it.increment(ec)) {
-      const std::string name = it->path().filename().string();
-      if (name.size() > stem.size() && name.compare(0, stem.size(), stem) == 0 &&
-          std::all_of(name.begin() + static_cast<long>(stem.size()), name.end(),
-                      [](unsigned char c) { return std::isdigit(c) != 0; })) {
-        stale.push_back(it->path());
-      }
-    }
-    for (const auto& file : stale) fs::remove(file, ec);
-  }
-
   void check(int status, const char* call) const { checkExodus(status, call, partPath); }
 
   /// Creates the next file of the series and writes its mesh and variable definitions.
   void startFile(long id, const QuadMesh& mesh) {
-    if (filesStarted == 0) removeStaleSeriesFiles();
+    if (filesStarted == 0) removeExodusSeriesTail(basePath);
     finalPath = seriesFileName(filesStarted);
     partPath = finalPath + ".part";
     ++filesStarted;

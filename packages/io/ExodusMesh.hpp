@@ -27,6 +27,10 @@ struct QuadMesh {
 /// a 3D mesh, a mesh without elements, a zero-area quad or an invalid side-set entry.
 QuadMesh readExodusQuadMesh(const std::string& path);
 
+/// Removes the files "<basePath>.e-s.<digits>" (the tail of a series written earlier with this
+/// base), so that ParaView does not group them with a new series; missing files are no error.
+void removeExodusSeriesTail(const std::string& basePath);
+
 /// Writes a time series of results in Exodus II that ParaView opens as one series even
 /// though the mesh changes: one file per distinct mesh, named so that ParaView groups them.
 /// Each file is written under a temporary name and renamed when complete, so an interrupted

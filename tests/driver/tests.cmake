@@ -52,6 +52,26 @@ signorini_add_driver_test(good_exodus_deck EXIT 0
   REGEX "good-exodus[.]xml done: 4 steps"
   FILES good-exodus.steps.csv good-exodus.e)
 
+# Adaptive runs that stop on total unknowns or on the tolerance before their planned cycles: the
+# cycle that ends the run is written under the final names like the last planned cycle (Exodus
+# included), the earlier cycles' Exodus files only on request. Uniform refinement of the 4 x 4
+# deck: 9 x 9 nodes in each of the 4 steps of cycle 1 = 324 >= 300; any estimate is below 1e30.
+signorini_add_driver_test(adaptive_stop_on_total_unknowns EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Maximum Total Unknowns=300"
+       ${decks}/good.xml
+  REGEX "cycle 1: total unknowns 324," "good[.]xml done: 4 steps, 81 unknowns per step"
+  FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
+signorini_add_driver_test(adaptive_stop_on_total_unknowns_all_cycles EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Maximum Total Unknowns=300"
+       --set "Adaptivity/Write All Cycles=true" ${decks}/good.xml
+  REGEX "cycle 1: total unknowns 324,"
+  FILES good.cycle0.steps.csv good.cycle0.e good.steps.csv good.e good.cycles.csv)
+signorini_add_driver_test(adaptive_stop_on_tolerance EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Tolerance=1e30"
+       --set "Adaptivity/Write All Cycles=true" ${decks}/good.xml
+  REGEX "cycle 0: total unknowns 100," "good[.]xml done: 4 steps, 25 unknowns per step"
+  FILES good.steps.csv good.e good.cycles.csv)
+
 # Reading the deck.
 signorini_add_bad_deck_test(malformed_xml ${decks}/malformed.xml
   "malformed[.]xml: malformed XML deck"
