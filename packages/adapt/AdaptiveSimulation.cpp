@@ -50,7 +50,9 @@ std::vector<std::string> promoteToFinalName(const std::vector<std::string>& file
   }
   int failed = error.empty() ? 0 : 1, anyFailed = 0;
   MPI_Allreduce(&failed, &anyFailed, 1, MPI_INT, MPI_MAX, comm);
-  if (anyFailed) SIGNORINI_USER_ERROR("Output/Directory: " << (error.empty() ? "the final cycle's files could not be renamed on another rank" : error));
+  if (anyFailed)
+    SIGNORINI_USER_ERROR("Output/Directory: "
+                         << (error.empty() ? "the final cycle's files could not be renamed on another rank" : error));
   return renamed;
 }
 
