@@ -3,7 +3,10 @@
 the total unknowns the adaptive run needs to reach the estimate of the finest uniform cycle
 (log-log interpolation between the adaptive cycles around the first one at or below it; also the
 unknowns of that cycle itself, with no interpolation) and the ratio of wall times; then the same factor
-for the estimate of every uniform cycle, to show how it changes with the level of the comparison.
+for the estimate of every uniform cycle, to show how it changes with the level of the comparison;
+then both runs cycle by cycle: with no coarsening the adaptive cycle c refines no cell beyond level c,
+so its meshes lie inside the uniform cycle c's; while its estimate stays above that cycle's, the
+factor against uniform cycle c cannot exceed the ratio of the two cycles' unknowns.
 Usage: tools/compare_runs.py ADAPTIVE_BASE UNIFORM_BASE [--require-factor F]
 With --require-factor the exit status is 1 unless the interpolated factor is at least F."""
 import argparse
@@ -43,6 +46,13 @@ for j in range(1, len(un)):
     head = f"uniform cycle {j} (eta {un['eta'][j]:.4g}, {int(un['total_dofs'][j])} unknowns): "
     print(head + ("not reached by the adaptive run" if found is None else
                   f"adaptive about {int(found[0])} (cycle {found[1]}): factor {un['total_dofs'][j] / found[0]:.2f}"))
+# Cycle by cycle (the cycles both runs have): the factor an adaptive run keeping pace with uniform
+# refinement would reach, and whether it does keep pace.
+for c in range(1, min(len(ad), len(un))):
+    ratio, lead = un["total_dofs"][c] / ad["total_dofs"][c], ad["eta"][c] / un["eta"][c]
+    print(f"cycle {c}: uniform/adaptive unknowns {ratio:.2f}, adaptive/uniform estimate {lead:.2f} "
+          + ("(adaptive ahead: the factor can exceed the ratio)" if lead < 1 else
+             f"(adaptive behind: factor against uniform cycle {c} at most {ratio:.2f})"))
 if adaptive_unknowns_for(target) is None:
     print(f"the adaptive run does not reach the finest uniform estimate {target:.4g}")
     # The other way round: the unknowns the uniform run needs for the adaptive run's last estimate
