@@ -71,6 +71,11 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
                   "Share of cells with the smallest indicators coarsened (families of four; never below the deck's "
                   "level); the paper used none",
                   0.0, 1.0);
+  core::addDouble(a, "Tie Tolerance", 1e-8,
+                  "Cell indicators of a step closer than this times its largest indicator count as equal when "
+                  "marking: all of a tied group are refined (or kept), so rounding, e.g. another number of ranks, "
+                  "cannot choose between equal cells; 0: exact comparison",
+                  0.0, 0.01);
   core::addInt(a, "Cycles", 5, "Number of passes over [0, T] (each pass is one cycle of Algorithm 5.1)", 1, 100);
   core::addDouble(a, "Maximum Total Unknowns", 0.0,
                   "Stop after the cycle whose total unknowns (sum over steps) reach this number; 0: no limit", 0.0);
@@ -110,6 +115,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   const int baseLevel = deck_.sublist("Mesh").get<int>("Refinement Level");
   const double fraction = ap.get<double>("Refinement Fraction");
   const double coarsen = ap.get<double>("Coarsening Fraction");
+  const double ties = ap.get<double>("Tie Tolerance");
   estimate::ResidualEstimator estimator(deck_.sublist("Estimator"));
   estimate::ElasticityEstimator elasticityEstimator(deck_.sublist("Estimator"));
   const std::string base = sim_->outputBase();
@@ -164,14 +170,14 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         if (strategy == "uniform")
           flags.assign(r.cellIndicator.size(), 1);
         else if (strategy == "bulk")
-          flags = markBulk(r.cellIndicator, fraction, raw);
+          flags = markBulk(r.cellIndicator, fraction, ties, raw);
         else
-          flags = markFixedFraction(r.cellIndicator, fraction, raw);
+          flags = markFixedFraction(r.cellIndicator, fraction, ties, raw);
         for (size_t e = 0; e < flags.size(); ++e)
           if (s.mesh.cellLevel()[e] >= maxLevel) flags[e] = 0;
         auto refined = std::make_shared<mesh::Forest>(s.forest);
         if (coarsen > 0 && strategy != "uniform") {
-          std::vector<char> small = markSmallest(r.cellIndicator, coarsen, raw);
+          std::vector<char> small = markSmallest(r.cellIndicator, coarsen, ties, raw);
           for (size_t e = 0; e < small.size(); ++e) small[e] = small[e] && !flags[e];
           refined->refineAndCoarsen(flags, small, baseLevel);
           refined->balance();

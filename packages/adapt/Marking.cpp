@@ -52,6 +52,29 @@ long long globalCount(const std::vector<uint64_t>& sorted, uint64_t threshold, b
   return global;
 }
 
+double fromKey(uint64_t k) {
+  double x;
+  std::memcpy(&x, &k, sizeof x);
+  return x;
+}
+
+/// tieTolerance times the largest indicator of all ranks: the distance below which two indicators tie.
+double tieWidth(const std::vector<double>& v, double tieTolerance, MPI_Comm comm) {
+  SIGNORINI_ASSERT(tieTolerance >= 0 && tieTolerance < 1, "tie tolerance in [0, 1)");
+  double local = 0, global = 0;
+  for (double x : v) local = std::max(local, x);
+  MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MAX, comm);
+  return tieTolerance * global;
+}
+
+/// Flags the cells whose indicator is at least the value of key t less the tie width.
+std::vector<char> flagFrom(const std::vector<double>& v, uint64_t t, double width) {
+  const uint64_t lowest = key(std::max(0.0, fromKey(t) - width));
+  std::vector<char> flags(v.size(), 0);
+  for (size_t i = 0; i < v.size(); ++i) flags[i] = key(v[i]) >= lowest;
+  return flags;
+}
+
 long long globalSize(const std::vector<double>& v, MPI_Comm comm) {
   long long local = static_cast<long long>(v.size()), global = 0;
   MPI_Allreduce(&local, &global, 1, MPI_LONG_LONG, MPI_SUM, comm);
@@ -60,22 +83,23 @@ long long globalSize(const std::vector<double>& v, MPI_Comm comm) {
 
 }  // namespace
 
-std::vector<char> markFixedFraction(const std::vector<double>& indicators, double fraction, MPI_Comm comm) {
+std::vector<char> markFixedFraction(const std::vector<double>& indicators, double fraction, double tieTolerance,
+                                    MPI_Comm comm) {
   const long long wanted = static_cast<long long>(std::ceil(fraction * globalSize(indicators, comm)));
-  std::vector<char> flags(indicators.size(), 0);
-  if (wanted <= 0) return flags;
+  if (wanted <= 0) return std::vector<char>(indicators.size(), 0);
+  const double width = tieWidth(indicators, tieTolerance, comm);
   const auto sorted = sortedKeys(indicators);
   const uint64_t t = bisect([&](uint64_t th) { return globalCount(sorted, th, true, comm) >= wanted; });
-  for (size_t i = 0; i < flags.size(); ++i) flags[i] = key(indicators[i]) >= t;
-  return flags;
+  return flagFrom(indicators, t, width);
 }
 
-std::vector<char> markBulk(const std::vector<double>& indicators, double fraction, MPI_Comm comm) {
+std::vector<char> markBulk(const std::vector<double>& indicators, double fraction, double tieTolerance,
+                           MPI_Comm comm) {
   double local = 0, total = 0;
   for (double x : indicators) local += x;
   MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, comm);
-  std::vector<char> flags(indicators.size(), 0);
-  if (!(total > 0) || fraction <= 0) return flags;
+  if (!(total > 0) || fraction <= 0) return std::vector<char>(indicators.size(), 0);
+  const double width = tieWidth(indicators, tieTolerance, comm);
   const uint64_t t = bisect([&](uint64_t th) {
     double s = 0, g = 0;
     for (double x : indicators)
@@ -83,14 +107,15 @@ std::vector<char> markBulk(const std::vector<double>& indicators, double fractio
     MPI_Allreduce(&s, &g, 1, MPI_DOUBLE, MPI_SUM, comm);
     return g >= fraction * total;
   });
-  for (size_t i = 0; i < flags.size(); ++i) flags[i] = key(indicators[i]) >= t;
-  return flags;
+  return flagFrom(indicators, t, width);
 }
 
-std::vector<char> markSmallest(const std::vector<double>& indicators, double fraction, MPI_Comm comm) {
+std::vector<char> markSmallest(const std::vector<double>& indicators, double fraction, double tieTolerance,
+                               MPI_Comm comm) {
   const long long allowed = static_cast<long long>(std::floor(fraction * globalSize(indicators, comm)));
   std::vector<char> flags(indicators.size(), 0);
   if (allowed <= 0) return flags;
+  const double width = tieWidth(indicators, tieTolerance, comm);
   // The largest threshold with at most `allowed` cells at or below it.
   const auto sorted = sortedKeys(indicators);
   uint64_t lo = 0, hi = key(std::numeric_limits<double>::max());
@@ -102,7 +127,12 @@ std::vector<char> markSmallest(const std::vector<double>& indicators, double fra
     else
       hi = mid - 1;
   }
-  for (size_t i = 0; i < flags.size(); ++i) flags[i] = key(indicators[i]) <= lo;
+  // Cells that tie with the smallest indicator left out are left out too.
+  const auto above = std::upper_bound(sorted.begin(), sorted.end(), lo);
+  double firstKept = above == sorted.end() ? std::numeric_limits<double>::infinity() : fromKey(*above);
+  MPI_Allreduce(MPI_IN_PLACE, &firstKept, 1, MPI_DOUBLE, MPI_MIN, comm);
+  for (size_t i = 0; i < flags.size(); ++i)
+    flags[i] = key(indicators[i]) <= lo && indicators[i] < firstKept - width;
   return flags;
 }
 

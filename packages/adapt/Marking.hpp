@@ -3,6 +3,11 @@
 /// Marking strategies on cell indicators (DESIGN 1.3), global over all MPI ranks and
 /// independent of the partition: thresholds are found by bisection on the bit patterns of the
 /// (non-negative) indicators with one reduction per bisection step.
+///
+/// Ties: indicators closer than `tieTolerance` times the largest indicator of all ranks count as
+/// equal. A cell that ties with a marked cell is marked too (one that ties with a cell kept from
+/// coarsening is kept), so rounding (another number of ranks, another order of summation) cannot
+/// decide which of two equal cells is refined. 0 compares the values exactly.
 #include <vector>
 
 #include <mpi.h>
@@ -10,14 +15,18 @@
 namespace signorini::adapt {
 
 /// Flags the cells with the largest indicators: at least ceil(fraction * N) cells of the N cells
-/// of all ranks (more only when indicators tie at the threshold). The paper's strategy (50%).
-std::vector<char> markFixedFraction(const std::vector<double>& indicators, double fraction, MPI_Comm comm);
+/// of all ranks (more only when indicators tie with the threshold). The paper's strategy (50%).
+std::vector<char> markFixedFraction(const std::vector<double>& indicators, double fraction, double tieTolerance,
+                                    MPI_Comm comm);
 
 /// Doerfler/bulk marking: the cells with the largest indicators whose sum reaches
 /// fraction * (sum of all indicators); indicators are squared cell contributions eta_K^2.
-std::vector<char> markBulk(const std::vector<double>& indicators, double fraction, MPI_Comm comm);
+std::vector<char> markBulk(const std::vector<double>& indicators, double fraction, double tieTolerance,
+                           MPI_Comm comm);
 
-/// Flags the cells with the smallest indicators: at most floor(fraction * N) cells (for coarsening).
-std::vector<char> markSmallest(const std::vector<double>& indicators, double fraction, MPI_Comm comm);
+/// Flags the cells with the smallest indicators: at most floor(fraction * N) cells (for coarsening),
+/// fewer when indicators tie at the threshold.
+std::vector<char> markSmallest(const std::vector<double>& indicators, double fraction, double tieTolerance,
+                               MPI_Comm comm);
 
 }  // namespace signorini::adapt

@@ -39,7 +39,7 @@ TEST(Marking, FixedFractionMarksTheLargestFractionOfCells) {
   size_t offset;
   const auto mine = localPart(all, comm->getRank(), comm->getSize(), offset);
   for (double fraction : {0.0, 0.1, 0.5, 1.0}) {
-    const auto flags = gather(adapt::markFixedFraction(mine, fraction, raw), raw);
+    const auto flags = gather(adapt::markFixedFraction(mine, fraction, 0.0, raw), raw);
     const long long wanted = static_cast<long long>(std::ceil(fraction * all.size()));
     const long long marked = std::count(flags.begin(), flags.end(), 1);
     EXPECT_GE(marked, wanted);
@@ -62,7 +62,7 @@ TEST(Marking, BulkMarksTheFewestLargestCellsReachingTheFraction) {
   const auto mine = localPart(all, comm->getRank(), comm->getSize(), offset);
   const double total = std::accumulate(all.begin(), all.end(), 0.0);
   for (double fraction : {0.2, 0.5, 0.9}) {
-    const auto flags = gather(adapt::markBulk(mine, fraction, raw), raw);
+    const auto flags = gather(adapt::markBulk(mine, fraction, 0.0, raw), raw);
     double sum = 0, minMarked = 1e300, maxUnmarked = -1;
     for (size_t i = 0; i < all.size(); ++i) {
       if (flags[i]) sum += all[i], minMarked = std::min(minMarked, all[i]);
@@ -80,7 +80,7 @@ TEST(Marking, SmallestMarksAtMostTheFraction) {
   const auto all = globalIndicators();
   size_t offset;
   const auto mine = localPart(all, comm->getRank(), comm->getSize(), offset);
-  const auto flags = gather(adapt::markSmallest(mine, 0.25, raw), raw);
+  const auto flags = gather(adapt::markSmallest(mine, 0.25, 0.0, raw), raw);
   const long long marked = std::count(flags.begin(), flags.end(), 1);
   EXPECT_LE(marked, static_cast<long long>(0.25 * all.size()));
   EXPECT_GE(marked, static_cast<long long>(0.25 * all.size()) - 2);  // ties at the threshold
@@ -88,6 +88,65 @@ TEST(Marking, SmallestMarksAtMostTheFraction) {
   for (size_t i = 0; i < all.size(); ++i)
     (flags[i] ? maxMarked = std::max(maxMarked, all[i]) : minUnmarked = std::min(minUnmarked, all[i]));
   EXPECT_LT(maxMarked, minUnmarked);
+}
+
+/// The global indicators with the ten cells of a tied group (value 5) perturbed at the level of rounding,
+/// upwards for odd and downwards for even cells (\p sign = 1) or the other way round (-1).
+std::vector<double> nearTies(double sign) {
+  std::vector<double> v;
+  for (int i = 0; i < 40; ++i) v.push_back(1.1 + i * 0.25);  // 1.1 .. 10.85: 16 below 5, 24 above
+  for (int j = 0; j < 10; ++j) v.push_back(5.0 * (1 + sign * (j % 2 ? 1 : -1) * (j + 1) * 1e-15));
+  return v;
+}
+
+/// Flags of all ranks for both perturbations of the tied group.
+template <class Mark>
+std::pair<std::vector<char>, std::vector<char>> markBothWays(Mark mark) {
+  auto comm = Tpetra::getDefaultComm();
+  MPI_Comm raw = core::rawMpiComm(*comm);
+  size_t offset;
+  std::pair<std::vector<char>, std::vector<char>> flags;
+  flags.first = gather(mark(localPart(nearTies(1), comm->getRank(), comm->getSize(), offset), raw), raw);
+  flags.second = gather(mark(localPart(nearTies(-1), comm->getRank(), comm->getSize(), offset), raw), raw);
+  return flags;
+}
+
+long long countGroup(const std::vector<char>& flags) { return std::count(flags.begin() + 40, flags.end(), 1); }
+
+TEST(Marking, NearTiesAreMarkedAlikeWhateverTheRounding) {
+  // 50 cells, 25 wanted: the 24 values above 5 and one of the ten cells at 5. The tied group is marked
+  // (fixed fraction, bulk) or kept (coarsening) as a whole, the same for both perturbations.
+  for (double tolerance : {1e-12, 1e-8}) {
+    const auto fixed = markBothWays([&](const std::vector<double>& v, MPI_Comm c) {
+      return adapt::markFixedFraction(v, 0.5, tolerance, c);
+    });
+    EXPECT_EQ(fixed.first, fixed.second);
+    EXPECT_EQ(countGroup(fixed.first), 10);
+    EXPECT_EQ(std::count(fixed.first.begin(), fixed.first.end(), 1), 24 + 10);
+    // bulk: a fraction of the sum that needs the values above 5 and two of the group
+    double total = 0, upTo = 0;
+    for (double x : nearTies(0)) total += x;
+    for (double x : nearTies(0)) upTo += x > 5 ? x : 0;
+    const double share = (upTo + 1.5 * 5.0) / total;
+    const auto bulk = markBothWays([&](const std::vector<double>& v, MPI_Comm c) {
+      return adapt::markBulk(v, share, tolerance, c);
+    });
+    EXPECT_EQ(bulk.first, bulk.second);
+    EXPECT_EQ(countGroup(bulk.first), 10);
+    // coarsening 24 of 50: the 16 values below 5 and none of the group
+    const auto small = markBothWays([&](const std::vector<double>& v, MPI_Comm c) {
+      return adapt::markSmallest(v, 0.48, tolerance, c);
+    });
+    EXPECT_EQ(small.first, small.second);
+    EXPECT_EQ(countGroup(small.first), 0);
+    EXPECT_EQ(std::count(small.first.begin(), small.first.end(), 1), 16);
+  }
+  // Compared exactly, the rounding decides: a different part of the group each way.
+  const auto exact = markBothWays([](const std::vector<double>& v, MPI_Comm c) {
+    return adapt::markFixedFraction(v, 0.5, 0.0, c);
+  });
+  EXPECT_NE(exact.first, exact.second);
+  EXPECT_EQ(std::count(exact.first.begin(), exact.first.end(), 1), 25);
 }
 
 }  // namespace
