@@ -5,7 +5,6 @@
 #include <BelosLinearProblem.hpp>
 #include <BelosSolverFactory.hpp>
 #include <BelosTpetraAdapter.hpp>
-#include <Ifpack2_Factory.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
@@ -15,6 +14,38 @@
 namespace signorini::solvers {
 
 using BelosSolver = Belos::SolverManager<Scalar, MultiVector, Operator>;
+
+namespace {
+/// Y = D^{-1} X with D the diagonal of A (one Jacobi sweep from zero, as Ifpack2's RELAXATION
+/// computes it, without Ifpack2's parameter validation and set-up on every new mesh).
+class JacobiPreconditioner : public Operator {
+ public:
+  explicit JacobiPreconditioner(const CrsMatrix& A) : inverseDiagonal_(A.getRowMap()) {
+    A.getLocalDiagCopy(inverseDiagonal_);
+    auto d = inverseDiagonal_.getLocalViewDevice(Tpetra::Access::ReadWrite);
+    int zeroLocal = 0;
+    Kokkos::parallel_reduce(
+        "signorini::jacobi::invert", Kokkos::RangePolicy<ExecSpace>(0, d.extent(0)),
+        KOKKOS_LAMBDA(const size_t i, int& zero) {
+          if (d(i, 0) == 0.0) ++zero;
+          d(i, 0) = 1.0 / d(i, 0);
+        },
+        zeroLocal);
+    int zero = 0;
+    Teuchos::reduceAll(*A.getComm(), Teuchos::REDUCE_SUM, zeroLocal, Teuchos::outArg(zero));
+    SIGNORINI_ASSERT(!zero, "Jacobi preconditioner: the matrix has a zero diagonal entry");
+  }
+  RCP<const Map> getDomainMap() const override { return inverseDiagonal_.getMap(); }
+  RCP<const Map> getRangeMap() const override { return inverseDiagonal_.getMap(); }
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp = Teuchos::NO_TRANS, Scalar alpha = 1.0,
+             Scalar beta = 0.0) const override {
+    Y.elementWiseMultiply(alpha, inverseDiagonal_, X, beta);
+  }
+
+ private:
+  Vector inverseDiagonal_;
+};
+}  // namespace
 
 struct LinearSolver::Impl {
   core::ParameterList params;
@@ -82,15 +113,7 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
     RCP<Operator> op = Teuchos::rcp(new CrsMatrix(*A, Teuchos::Copy));
     I.prec = MueLu::CreateTpetraPreconditioner(op, mueluParams);
   } else if (choice == "Jacobi") {
-    using RowMatrix = Tpetra::RowMatrix<Scalar, LO, GO, Node>;
-    auto jac = Ifpack2::Factory::create<RowMatrix>("RELAXATION", Teuchos::rcp_implicit_cast<const RowMatrix>(A));
-    Teuchos::ParameterList jp;
-    jp.set("relaxation: type", "Jacobi");
-    jp.set("relaxation: sweeps", 1);
-    jac->setParameters(jp);
-    jac->initialize();
-    jac->compute();
-    I.prec = jac;
+    I.prec = Teuchos::rcp(new JacobiPreconditioner(*A));
   }
   auto belosParams = Teuchos::rcp(new Teuchos::ParameterList(I.params.sublist("Belos")));
   belosParams->set("Convergence Tolerance", I.params.get<double>("Relative Tolerance"));

@@ -1,7 +1,7 @@
 #pragma once
 /// \file LinearSolver.hpp
 /// A^{-1} for the step matrix A = M + beta k^2 K: a Belos Krylov solver (CG by default) with a
-/// MueLu (smoothed aggregation) or Jacobi (Ifpack2) preconditioner, configured from the deck's
+/// MueLu (smoothed aggregation) or Jacobi (diagonal) preconditioner, configured from the deck's
 /// "Linear Solver" sublist; "Belos" and "MueLu" sublists are passed through unchanged.
 /// Belos and MueLu headers stay in LinearSolver.cpp (compile time).
 #include <memory>
