@@ -1,0 +1,33 @@
+#!/usr/bin/python3
+"""Compares the step tables of run-rank-sensitivity.sh: for each scheme, 2 ranks against 1 rank and a
+1e-12 perturbation of the initial velocity against the unperturbed run (1 rank), in cycles 0 and 1
+(the two-cycle runs write both): the energy relative to its initial value, the probe u(1, 0.5) and
+eta^n relative to its maximum. Usage: compare_sensitivity.py DIR"""
+import sys
+
+import numpy as np
+
+out = sys.argv[1]
+steps = [25, 50, 100, 150, 200, 250, 300, 350, 400]
+
+
+def table(base, cycle=1):
+    return np.genfromtxt(f"{out}/{base}{'.cycle0' if cycle == 0 else ''}.steps.csv", delimiter=",", names=True)
+
+
+for scheme in ["paper", "stabilised"]:
+    ref = table(f"{scheme}.np1")
+    print(f"{scheme} scheme, cycle 1: relative difference of the energy at steps " + " ".join(map(str, steps)))
+    for other, label in [("np2", "2 ranks against 1      "), ("perturbed", "v0 * (1 + 1e-12), 1 rank")]:
+        t = table(f"{scheme}.{other}")
+        same = np.array_equal(ref["dofs"], t["dofs"])
+        energy = np.abs(ref["energy"] - t["energy"]) / ref["energy"][0]
+        probe = np.abs(ref["probecorner"] - t["probecorner"])
+        eta = np.abs(ref["eta"] - t["eta"]) / ref["eta"].max()
+        print(f"  {label}: " + " ".join(f"{energy[n]:.0e}" for n in steps)
+              + f"   largest: energy {energy.max():.0e}, probe u(1, 0.5) {probe.max():.0e}, eta^n {eta.max():.0e} of max eta"
+              + ("" if same else "   (unknowns differ!)"))
+        r0, t0 = table(f"{scheme}.np1", 0), table(f"{scheme}.{other}", 0)
+        print(f"  {'':24}  cycle 0 (uniform h = 1/16): largest: energy "
+              f"{(np.abs(r0['energy'] - t0['energy']) / r0['energy'][0]).max():.0e}, probe u(1, 0.5) "
+              f"{np.abs(r0['probecorner'] - t0['probecorner']).max():.0e}")
