@@ -139,7 +139,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       dynamics::StepHook hook = [&](const dynamics::StepView& s) {
         // Every CG iterate is an extension of the boundary data, so its norm bounds s1 from above and
         // decreases to s1 (Estimator/S1 Relative Tolerance; s1 is not used for marking, so the meshes
-        // do not depend on it). The lean Jacobi CG runs the iteration of Belos CG with Ifpack2 Jacobi,
+        // do not depend on it). The lean Jacobi CG runs the iteration of Belos CG with Jacobi,
         // without their set-up per call. (MueLu here, set up once per mesh, broke down on the
         // membrane deck's second cycle: non-positive p^T A p in Belos CG.)
         auto solveSPD = [&](const RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
