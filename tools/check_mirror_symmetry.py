@@ -1,0 +1,41 @@
+#!/usr/bin/python3
+"""Checks the meshes of an Exodus series (<base>.e, <base>.e-s.NNNN) for mirror symmetry about the
+line x2 = c (default 0.5): a mesh is symmetric when the mirror image of every cell (centre and size)
+is a cell. Prints the time of the first asymmetric mesh and, over the asymmetric meshes, how many
+cells have no mirror image and how far they reach from x1 = 1 (Gamma_C of the membrane decks).
+Usage: check_mirror_symmetry.py BASE [c]"""
+import glob
+import sys
+
+import netCDF4
+import numpy as np
+
+base = sys.argv[1]
+axis = float(sys.argv[2]) if len(sys.argv) > 2 else 0.5
+files = sorted(glob.glob(base + ".e") + glob.glob(base + ".e-s.*"),
+               key=lambda f: int(f.rsplit(".", 1)[1]) if ".e-s." in f else 0)
+if not files:
+    sys.exit(f"no Exodus files {base}.e*")
+scale = 2.0**30  # cell centres and sizes of dyadic meshes are exact in this unit
+first, counts, reach = None, [], 0.0
+for f in files:
+    with netCDF4.Dataset(f) as d:
+        x, y, conn = d["coordx"][:], d["coordy"][:], d["connect1"][:] - 1
+        t = float(d["time_whole"][0])
+    cx, cy = x[conn].mean(1), y[conn].mean(1)
+    h = x[conn].max(1) - x[conn].min(1)
+
+    def cells(yy):
+        return set(zip(*(np.round(v * scale).astype(np.int64) for v in (cx, yy, h))))
+
+    alone = cells(cy) - cells(2 * axis - cy)
+    if alone:
+        first = t if first is None else first
+        counts.append(len(alone))
+        reach = max(reach, max(1.0 - c[0] / scale for c in alone))
+print(f"{len(files)} meshes, {len(counts)} asymmetric about x2 = {axis}", end="")
+if counts:
+    print(f"; the first at t = {first:.4g}; cells without a mirror image: {min(counts)}-{max(counts)}, "
+          f"median {int(np.median(counts))}; they reach {reach:.3f} from x1 = 1")
+else:
+    print()
