@@ -27,17 +27,20 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
     : comm_(mesh.comm()), unknowns_(unknowns) {
   const auto& bedges = mesh.boundaryEdges();
   std::vector<double> mine;
+  std::vector<long long> myPlaces;
   std::vector<int> localIds;
   for (size_t i = 0; i < bedges.size(); ++i)
     if (bedges[i].segments & contactMask) {
       localIds.push_back(static_cast<int>(i));
       for (int k = 0; k < 2; ++k) mine.push_back(bedges[i].x[k][0]), mine.push_back(bedges[i].x[k][1]);
+      myPlaces.insert(myPlaces.end(), {bedges[i].tree, bedges[i].face, bedges[i].quadrantLevel, bedges[i].faceIndex});
     }
   // Offset of this rank's edges in the gathered list.
   int myCount = static_cast<int>(localIds.size()), myOffset = 0;
   MPI_Exscan(&myCount, &myOffset, 1, MPI_INT, MPI_SUM, core::rawMpiComm(*comm_));
   if (comm_->getRank() == 0) myOffset = 0;
   const std::vector<double> all = core::allGatherv(core::rawMpiComm(*comm_), mine);
+  const std::vector<long long> places = core::allGatherv(core::rawMpiComm(*comm_), myPlaces);
   const int ne = static_cast<int>(all.size() / 4);
   edges_.resize(ne);
   for (int e = 0; e < ne; ++e) edges_[e] = {all[4 * e], all[4 * e + 1], all[4 * e + 2], all[4 * e + 3]};
@@ -91,45 +94,75 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
     walk(key(edges_[first][0], edges_[first][1]));
   }
 
-  // Segments follow the local mesh size: consecutive edges of equal length are paired (a run of
-  // odd length ends in a segment of three edges); a lone edge between two size changes joins the
-  // previous segment of its chain (or the next one at the chain's start).
+  // Segments follow the local mesh size and the tree's dyadic hierarchy, so that a mesh and its
+  // mirror image get mirrored segments: two sibling edges (the halves of one parent edge) form a
+  // segment; a lone edge, whose sibling half is refined further, joins the segment of the edge next
+  // to it inside that half (which lies inside the lone edge's parent, too). Edges without a parent
+  // edge in the contact set (unrefined trees, a contact boundary ending inside a parent edge) join
+  // the neighbouring segment of their chain.
   edgeSegment_.assign(ne, -1);
   auto edgeLength = [&](int e) { return std::hypot(edges_[e][2] - edges_[e][0], edges_[e][3] - edges_[e][1]); };
-  for (const auto& chain : chains) {
-    const int n = static_cast<int>(chain.size());
-    std::vector<std::vector<int>> groups;
-    std::vector<char> orphan;
-    for (int i = 0; i < n;) {
-      int j = i + 1;  // [i, j): a run of equal edge lengths
-      while (j < n && std::abs(edgeLength(chain[j]) - edgeLength(chain[i])) <= 1e-8 * edgeLength(chain[i])) ++j;
-      const int run = j - i;
-      if (size == SegmentSize::OneEdge) {
-        for (int k = i; k < j; ++k) groups.push_back({chain[k]}), orphan.push_back(0);
-      } else if (run == 1) {
-        groups.push_back({chain[i]});
-        orphan.push_back(1);
-      } else {
-        for (int k = i; k < j;) {
-          const int take = (j - k == 3) ? 3 : 2;
-          groups.emplace_back(chain.begin() + k, chain.begin() + k + take);
-          orphan.push_back(0);
-          k += take;
-        }
-      }
-      i = j;
+  using Place = std::array<long long, 4>;  // tree, face, p4est level, index along the face
+  std::map<Place, int> edgeAt;
+  long long finestLevel = 0;
+  for (int e = 0; e < ne; ++e) {
+    edgeAt[{places[4 * e], places[4 * e + 1], places[4 * e + 2], places[4 * e + 3]}] = e;
+    finestLevel = std::max(finestLevel, places[4 * e + 2]);
+  }
+  constexpr int kNoPartner = -1;
+  // partner[e]: the edge whose segment e joins (e itself for the even one of a sibling pair).
+  std::vector<int> partner(ne, kNoPartner);
+  for (int e = 0; e < ne && size == SegmentSize::TwoEdges; ++e) {
+    const long long tree = places[4 * e], face = places[4 * e + 1], level = places[4 * e + 2], i = places[4 * e + 3];
+    if (level == 0) continue;
+    const auto sibling = edgeAt.find({tree, face, level, i ^ 1});
+    if (sibling != edgeAt.end()) {
+      partner[e] = (i % 2 == 0) ? e : sibling->second;
+      continue;
     }
+    // The edge of the sibling half that touches e, on the finer levels.
+    const long long s = i ^ 1;
+    for (long long d = 1; level + d <= finestLevel && partner[e] == kNoPartner; ++d) {
+      const long long j = (i % 2 == 1) ? ((s + 1) << d) - 1 : (s << d);
+      const auto next = edgeAt.find({tree, face, level + d, j});
+      if (next != edgeAt.end()) partner[e] = next->second;
+    }
+  }
+  auto rootOf = [&](int e) {  // follows partners: lone edges point to strictly finer edges
+    while (partner[e] != kNoPartner && partner[e] != e) e = partner[e];
+    return partner[e] == kNoPartner ? -1 : e;
+  };
+  for (auto chain : chains) {
+    const int n = static_cast<int>(chain.size());
+    std::vector<int> root(n);
+    for (int k = 0; k < n; ++k) root[k] = partner[chain[k]] == kNoPartner ? -1 : rootOf(chain[k]);
+    // A closed loop starts where a segment starts.
+    for (int shift = 0; shift < n && root[0] >= 0 && root[0] == root[n - 1]; ++shift) {
+      std::rotate(chain.begin(), chain.begin() + 1, chain.end());
+      std::rotate(root.begin(), root.begin() + 1, root.end());
+    }
+    // Edges left without a segment join the previous segment of their chain (the next one at the
+    // chain's start); a chain without any sibling pair is paired from its start (an odd count ends
+    // in a segment of three edges).
     std::vector<std::vector<int>> merged;
-    for (size_t g = 0; g < groups.size(); ++g) {
-      if (orphan[g] && groups.size() > 1) {
-        if (!merged.empty()) {
-          merged.back().insert(merged.back().end(), groups[g].begin(), groups[g].end());
-        } else {
-          groups[g + 1].insert(groups[g + 1].begin(), groups[g].begin(), groups[g].end());
-        }
+    std::vector<int> leading;
+    for (int k = 0; k < n; ++k) {
+      if (root[k] < 0) {
+        (merged.empty() ? leading : merged.back()).push_back(chain[k]);
         continue;
       }
-      merged.push_back(groups[g]);
+      if (k == 0 || root[k] != root[k - 1]) {
+        merged.emplace_back();
+        if (merged.size() == 1) merged.back().swap(leading);
+      }
+      merged.back().push_back(chain[k]);
+    }
+    if (merged.empty()) {
+      for (int k = 0; k < n;) {
+        const int take = (size == SegmentSize::OneEdge) ? 1 : (n - k <= 3 ? n - k : 2);
+        merged.emplace_back(chain.begin() + k, chain.begin() + k + take);
+        k += take;
+      }
     }
     for (const auto& group : merged) {
       const int seg = static_cast<int>(length_.size());

@@ -1,9 +1,10 @@
 #pragma once
 /// \file ContactCoupling.hpp
-/// The contact boundary Gamma_C split into multiplier segments E_j (paper Sec. 3.2): each segment
-/// the union of consecutive fine boundary edges of equal length, two at a time (H = 2h, following
-/// the local mesh size on graded meshes; odd runs end in a segment of three edges, a lone edge
-/// between size changes joins its neighbouring segment), or one edge each (H = h). Provides B_ij = int_{E_j} phi_i ds (3.7)-(3.8)
+/// The contact boundary Gamma_C split into multiplier segments E_j (paper Sec. 3.2): H = 2h
+/// following the local mesh size on graded meshes, each segment two sibling fine edges (the halves
+/// of one edge of the parent cells); a lone edge, whose sibling half is refined further, joins the
+/// segment next to it inside that half, so a segment is at most its edges' parent edge and a mesh
+/// and its mirror image get mirrored segments. Or one edge each (H = h). Provides B_ij = int_{E_j} phi_i ds (3.7)-(3.8)
 /// as a Tpetra matrix, its products with replicated multiplier vectors, and the weighted
 /// obstacle gbar_j = int_{E_j} g ds. The segment data (a few hundred numbers) are replicated
 /// on every rank in the same order, independent of the number of ranks.

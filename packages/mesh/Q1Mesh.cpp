@@ -188,6 +188,9 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
         be.cell = e;
         be.face = f;
         be.level = q->level - coarse.levelOffset();
+        be.tree = static_cast<int>(t);
+        be.quadrantLevel = q->level;
+        be.faceIndex = (f < 2 ? q->y : q->x) / len;
         for (int k = 0; k < 2; ++k) {
           const int c = p4est_face_corners[f][k];
           SIGNORINI_ASSERT(cornerDofsHost(e, c, 1) < 0, "boundary corner is hanging");

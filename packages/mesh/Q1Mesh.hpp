@@ -24,6 +24,11 @@ struct BoundaryEdge {
   LO node[2];              ///< overlap-map local ids of the end points (p4est_face_corners order)
   double x[2][2];          ///< end point coordinates [point][dim]
   int level;               ///< refinement level of the cell
+  /// Place of the edge in its tree's dyadic hierarchy: tree, p4est level of the cell and index
+  /// of the edge along the tree face at that level (the edge's parent has index faceIndex / 2).
+  int tree;
+  int quadrantLevel;
+  long long faceIndex;
   double length() const;
 };
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
 
 #include <Teuchos_SerialDenseMatrix.hpp>
 #include <Teuchos_SerialDenseSolver.hpp>
@@ -56,6 +57,45 @@ TEST(ContactCoupling, ColumnsSumToSegmentLengths) {
     // Segments are ordered along the boundary.
     for (int j = 1; j < B.numSegments(); ++j) EXPECT_GT(B.segmentMidpoint()[j][0], B.segmentMidpoint()[j - 1][0]);
   }
+}
+
+TEST(ContactCoupling, SegmentsAreParentEdgesAndMirrorInvariant) {
+  // Unit square, one tree, h = 1/8, refined three times around x = 0.3 and x = 0.7 of the bottom
+  // side and 2:1 balanced: a graded contact boundary, mirror-symmetric about x = 0.5, with runs of
+  // equal edges of odd length and lone edges between size changes.
+  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 1, 1, 3);
+  test::refineAt(*tm.forest, 0.3, 0.0, 3);
+  test::refineAt(*tm.forest, 0.7, 0.0, 3);
+  tm.forest->balance();
+  tm.forest->partition();
+  const auto& m = tm.build();
+  fem::ContactCoupling B(m, kBottom, fem::ContactCoupling::SegmentSize::TwoEdges,
+                         std::vector<char>(m.overlapMap()->getNodeNumElements(), 0));
+  const int ns = B.numSegments();
+  // Longest edge of each segment and shortest contact edge, over all ranks.
+  std::vector<double> longest(ns, 0.0), globalLongest(ns);
+  double shortest = 1.0, globalShortest = 0.0;
+  for (size_t i = 0; i < m.boundaryEdges().size(); ++i)
+    if (const int j = B.localEdgeSegment()[i]; j >= 0) {
+      longest[j] = std::max(longest[j], m.boundaryEdges()[i].length());
+      shortest = std::min(shortest, m.boundaryEdges()[i].length());
+    }
+  Teuchos::reduceAll(*m.comm(), Teuchos::REDUCE_MAX, ns, longest.data(), globalLongest.data());
+  Teuchos::reduceAll(*m.comm(), Teuchos::REDUCE_MIN, shortest, Teuchos::outArg(globalShortest));
+  EXPECT_NEAR(globalShortest, 1.0 / 64, 1e-15);  // graded
+  std::set<std::pair<long long, long long>> intervals;  // in units of the finest edge, 1/64
+  for (int j = 0; j < ns; ++j) {
+    EXPECT_GE(B.segmentEdges()[j], 2) << j;
+    // Each segment is exactly the parent edge of its longest edges (dyadic: starts at a multiple
+    // of its length), so it follows the local mesh size.
+    const double a = B.segmentMidpoint()[j][0] - 0.5 * B.segmentLength()[j], len = B.segmentLength()[j];
+    EXPECT_NEAR(len, 2 * globalLongest[j], 1e-14) << j;
+    EXPECT_NEAR(a / len, std::round(a / len), 1e-12) << j;
+    intervals.insert({std::llround(64 * a), std::llround(64 * (a + len))});
+  }
+  EXPECT_GT(*std::max_element(B.segmentEdges().begin(), B.segmentEdges().end()), 2);  // lone edges joined
+  // The mirror image x -> 1 - x of every segment is a segment.
+  for (const auto& [a, b] : intervals) EXPECT_EQ(intervals.count({64 - b, 64 - a}), 1u) << a << " " << b;
 }
 
 /// Q = B^T A^{-1} B formed column by column (one A-solve per segment), row-major.
