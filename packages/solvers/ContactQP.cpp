@@ -47,8 +47,9 @@ void choleskySolve(const std::vector<double>& L, int n, std::vector<double>& x) 
 core::ParameterList ContactQP::getValidParameters() {
   core::ParameterList p("Contact");
   core::addChoice(p, "Multiplier Segments", "H = 2h",
-                  "Piecewise constant multipliers on segments of two fine edges (stable, the paper's choice) or "
-                  "of one edge (unstable, paper Fig. 3.1)",
+                  "Piecewise constant multipliers on segments of two sibling fine edges, the halves of a coarser "
+                  "edge (stable, the paper's choice; a lone edge beside finer ones joins them) or of one edge "
+                  "(unstable, paper Fig. 3.1)",
                   {"H = 2h", "H = h"});
   core::addDouble(p, "KKT Tolerance", 1e-9,
                   "Tolerance of the KKT conditions relative to the domain diameter: mean gap G_j/|E_j| >= -tol*L, "
