@@ -3,15 +3,20 @@
 line x2 = c (default 0.5): a mesh is symmetric when the mirror image of every cell (centre and size)
 is a cell. Prints the time of the first asymmetric mesh and, over the asymmetric meshes, how many
 cells have no mirror image and how far they reach from x1 = 1 (Gamma_C of the membrane decks).
-Usage: check_mirror_symmetry.py BASE [c]"""
+Usage: check_mirror_symmetry.py BASE [c] [--require-symmetric] (exit status 1 if a mesh is not)"""
+import argparse
 import glob
 import sys
 
 import netCDF4
 import numpy as np
 
-base = sys.argv[1]
-axis = float(sys.argv[2]) if len(sys.argv) > 2 else 0.5
+parser = argparse.ArgumentParser()
+parser.add_argument("base")
+parser.add_argument("axis", nargs="?", type=float, default=0.5)
+parser.add_argument("--require-symmetric", action="store_true")
+args = parser.parse_args()
+base, axis = args.base, args.axis
 files = sorted(glob.glob(base + ".e") + glob.glob(base + ".e-s.*"),
                key=lambda f: int(f.rsplit(".", 1)[1]) if ".e-s." in f else 0)
 if not files:
@@ -39,3 +44,5 @@ if counts:
           f"median {int(np.median(counts))}; they reach {reach:.3f} from x1 = 1")
 else:
     print()
+if counts and args.require_symmetric:
+    sys.exit(1)
