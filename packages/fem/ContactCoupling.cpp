@@ -128,14 +128,15 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
       if (next != edgeAt.end()) partner[e] = next->second;
     }
   }
-  auto rootOf = [&](int e) {  // follows partners: lone edges point to strictly finer edges
+  // The segment's representative edge of e (-1: none, e joins its chain neighbour's segment).
+  auto rootOf = [&](int e) {  // lone edges point to strictly finer edges, so this ends
     while (partner[e] != kNoPartner && partner[e] != e) e = partner[e];
     return partner[e] == kNoPartner ? -1 : e;
   };
   for (auto chain : chains) {
     const int n = static_cast<int>(chain.size());
     std::vector<int> root(n);
-    for (int k = 0; k < n; ++k) root[k] = partner[chain[k]] == kNoPartner ? -1 : rootOf(chain[k]);
+    for (int k = 0; k < n; ++k) root[k] = rootOf(chain[k]);
     // A closed loop starts where a segment starts.
     for (int shift = 0; shift < n && root[0] >= 0 && root[0] == root[n - 1]; ++shift) {
       std::rotate(chain.begin(), chain.begin() + 1, chain.end());
