@@ -27,6 +27,7 @@ struct Run {
   int cycles = 3;
   bool stabilised = false;
   bool tightS1 = true;  ///< s1 solved to 1e-10 (else the deck's tolerance: eta compared to 1e-5 only)
+  std::string initialVelocity;  ///< replaces Problem/Initial Velocity when not empty
 };
 
 /// \p run.cycles cycles of inputs/<deckName> up to \p run.finalTime.
@@ -36,6 +37,7 @@ Result runAdaptive(RCP<const Comm> comm, const std::string& name, const Run& run
                                        Teuchos::outArg(deck));
   deck.sublist("Time Integration").set("Final Time", run.finalTime);
   if (run.stabilised) deck.sublist("Time Integration").set("Contact Stabilisation", "predictor projection");
+  if (!run.initialVelocity.empty()) deck.sublist("Problem").set("Initial Velocity", run.initialVelocity);
   deck.sublist("Adaptivity").set("Cycles", run.cycles);
   // s1 is an iterate stopped at a relative residual (1e-2 by default: within 0.22% of s1 from
   // above); on another partition it stops at a slightly different iterate (7e-7 relative measured at 1e-3).
@@ -66,7 +68,7 @@ void expectAgreement(const Run& run, const std::string& name) {
   ASSERT_EQ(world->getSize(), 2) << "run this test with mpirun -np 2";
   const auto two = runAdaptive(world, name + "-np2", run);
   auto self = world->split(world->getRank() == 0 ? 0 : 1, 0);
-  if (world->getRank() == 0) {
+  if (world->getRank() == 0) [&] {  // a failed ASSERT leaves the lambda: rank 1 still gets its barrier
     const auto one = runAdaptive(self, name + "-np1", run);
     const size_t cycles = static_cast<size_t>(run.cycles);
     ASSERT_EQ(one.cycles.rows.size(), cycles);
@@ -99,7 +101,7 @@ void expectAgreement(const Run& run, const std::string& name) {
       EXPECT_NEAR(a[one.steps.column("s0")], b[two.steps.column("s0")], 1e-9 * scale[1]) << n;
     }
     EXPECT_GT(contactSteps, 0);  // the compared interval includes contact
-  }
+  }();
   world->barrier();
 }
 
@@ -117,6 +119,53 @@ TEST(AdaptiveAgreement, TheBarOnTwoRanksGivesTheSameMeshesAndEstimatesAsOne) {
 // the partitions' meshes equal from cycle 3 on.
 TEST(AdaptiveAgreement, ThePaperDeckStabilisedGivesTheSameMeshesInAllCycles) {
   expectAgreement({"membrane.xml", 1.0, 5, true, false}, "membrane-stabilised");
+}
+
+// The paper's scheme over the whole interval [0, 1]: 2 ranks cannot give the same late steps as 1
+// rank, because the chattering contact amplifies rounding (README "Known behaviour"). What can be
+// asserted is that the partition changes the solution no more than the problem's own conditioning
+// does: on cycle 1's graded meshes (the same in all runs), the energy of the 2-rank run differs from
+// the 1-rank run at every step by at most a small multiple of what a relative perturbation of 1e-12
+// of the initial velocity causes by that step on 1 rank. A parallel defect (a missing ghost value, a
+// wrong sum over the ranks' parts) would show from the first steps at the size of the discretisation
+// error, where the perturbation is still at rounding level.
+TEST(AdaptiveAgreement, ThePaperSchemeOnTwoRanksDiffersOnlyAsMuchAsRoundingIsAmplified) {
+  auto world = Tpetra::getDefaultComm();
+  ASSERT_EQ(world->getSize(), 2) << "run this test with mpirun -np 2";
+  const ::Run paper{"membrane.xml", 1.0, 2, false, false};
+  ::Run perturbed = paper;
+  perturbed.initialVelocity = "-(1 + 1e-12)*sin(pi*x/2)";  // the deck's v0 times 1 + 1e-12
+  const auto two = runAdaptive(world, "sensitivity-np2", paper);
+  auto self = world->split(world->getRank() == 0 ? 0 : 1, 0);
+  if (world->getRank() == 0) [&] {
+    const auto one = runAdaptive(self, "sensitivity-np1", paper);
+    const auto other = runAdaptive(self, "sensitivity-perturbed", perturbed);
+    const size_t steps = one.steps.rows.size() / 2;  // cycle 0, then cycle 1
+    ASSERT_EQ(steps * 2, one.steps.rows.size());
+    ASSERT_EQ(two.steps.rows.size(), one.steps.rows.size());
+    ASSERT_EQ(other.steps.rows.size(), one.steps.rows.size());
+    const size_t dofs = one.steps.column("dofs"), energy = one.steps.column("energy");
+    const double e0 = one.steps.rows[steps][energy];
+    double perturbation = 0, largestPartition = 0, largestPerturbation = 0;
+    size_t graded = 0;
+    for (size_t n = steps; n < 2 * steps; ++n) {
+      const auto &a = one.steps.rows[n], &b = two.steps.rows[n], &c = other.steps.rows[n];
+      ASSERT_EQ(a[dofs], b[dofs]) << "step " << n - steps << ": the compared meshes differ";
+      ASSERT_EQ(a[dofs], c[dofs]) << "step " << n - steps << ": the compared meshes differ";
+      graded += a[dofs] != one.steps.rows[n - steps][dofs];
+      const double partition = std::abs(b[energy] - a[energy]) / e0;
+      perturbation = std::max(perturbation, std::abs(c[energy] - a[energy]) / e0);  // largest so far
+      // measured (2 ranks; perturbed, largest so far): 2e-13, 3e-10 at step 100; 5e-10, 4e-8 at 150;
+      // 6e-3, 1.6e-2 at 400; the largest ratio 0.83 (step 356)
+      EXPECT_LE(partition, 10 * perturbation + 1e-12) << "step " << n - steps;
+      largestPartition = std::max(largestPartition, partition);
+      largestPerturbation = perturbation;
+    }
+    EXPECT_GT(graded, steps / 2);  // cycle 1 is adaptive: its meshes are not cycle 0's
+    // The scheme amplifies a perturbation at rounding level far beyond it (why 1 and 2 ranks cannot agree).
+    EXPECT_GT(largestPerturbation, 1e-6);
+  }();
+  world->barrier();
 }
 
 }  // namespace

@@ -164,6 +164,28 @@ TEST_P(ElasticityExact, LinearFieldWithConsistentTractionsHasZeroEstimate) {
   w.interpolate(fx, fy, *w.pred);
   w.lambda = std::vector<double>(w.lambda.size(), w.bk2() * syy);
   EXPECT_GT(w.run().etaStar, 0.1 * s.bk2() * syy);
+
+  // Inertia and body force: the predictor u_h + delta (delta linear, per component) and
+  // f = -rho delta / (beta k^2) cancel in the cell residual; f of the other sign leaves 2 rho delta.
+  entries["Neumann Segments"] = c.contact ? "left, right, top" : "left, right, bottom, top";
+  const double rho = 2.0;  // the Case's density
+  double etaWithForce[2];
+  for (int sign : {1, -1}) {
+    Case v(2, c.hanging);
+    std::ostringstream f;
+    f.precision(17);
+    f << -sign * rho / v.bk2();
+    auto withForce = entries;
+    withForce["Body Force"] = f.str() + " * (0.2 + 0.1*x), " + f.str() + " * (-0.3 + 0.2*y)";
+    v.finish(withForce);
+    v.interpolate(fx, fy, *v.u);
+    v.interpolate([&](double x, double y) { return fx(x, y) + 0.2 + 0.1 * x; },
+                  [&](double x, double y) { return fy(x, y) - 0.3 + 0.2 * y; }, *v.pred);
+    v.lambda = std::vector<double>(v.lambda.size(), v.bk2() * syy);
+    etaWithForce[sign > 0 ? 0 : 1] = v.run().etaStar;
+  }
+  EXPECT_GT(etaWithForce[1], 1e-3 * rho);  // h ||2 rho delta||: far from rounding
+  EXPECT_LT(etaWithForce[0], 1e-11 * etaWithForce[1]);
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, ElasticityExact,

@@ -188,13 +188,31 @@ TEST_P(ExactSolutionTest, FieldInTheSpaceWithConsistentDataHasZeroEstimate) {
 
   // Control: the same field with a wrong Neumann datum is detected (R = beta k^2 kappa du/dn on the right side).
   if (!c.contact) {
-    entries["Neumann Segments"] = "left, bottom, top";
+    auto wrong = entries;
+    wrong["Neumann Segments"] = "left, bottom, top";
     auto w = exactCaseMesh(c);
-    w->finish(entries, rho, kappa);
+    w->finish(wrong, rho, kappa);
     w->interpolate(field, *w->u);
     w->interpolate(field, *w->pred);
     EXPECT_GT(w->run().etaStar, 0.1 * scale);
   }
+
+  // Inertia and body force: with the predictor u_h + delta (delta affine, in the space on every
+  // mesh) and f = -rho delta / (beta k^2), the two cancel in r = beta k^2 f + rho (predictor - u_h)
+  // + beta k^2 kappa Laplace(u_h), so eta_* stays zero; f of the other sign leaves r = 2 rho delta.
+  double etaWithForce[2];
+  for (int sign : {1, -1}) {
+    auto w = exactCaseMesh(c);
+    auto withForce = entries;
+    withForce["Body Force"] = num(-sign * rho / w->bk2()) + " * (0.3 + 0.2*x - 0.1*y)";
+    w->finish(withForce, rho, kappa);
+    w->interpolate(field, *w->u);
+    w->interpolate([&](double x, double y) { return field(x, y) + 0.3 + 0.2 * x - 0.1 * y; }, *w->pred);
+    for (auto& l : w->lambda) l = -w->bk2() * kappa * b;
+    etaWithForce[sign > 0 ? 0 : 1] = w->run().etaStar;
+  }
+  EXPECT_GT(etaWithForce[1], 1e-3 * rho);  // h ||2 rho delta||: far from rounding
+  EXPECT_LT(etaWithForce[0], 1e-11 * etaWithForce[1]);
 }
 
 INSTANTIATE_TEST_SUITE_P(
