@@ -124,7 +124,8 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   if (rank == 0)
     cyclesCsv = std::make_unique<io::CsvWriter>(
         base + ".cycles.csv",
-        std::vector<std::string>{"cycle", "total_dofs", "eta", "wall_seconds", "total_cells", "bytes_per_cell",
+        std::vector<std::string>{"cycle", "total_dofs", "eta", "wall_seconds", "total_cells", "stored_meshes", "stored_cells",
+                                 "bytes_per_cell", "mesh_rebuilds",
                                  "time_remesh_transfer", "time_assembly", "time_preconditioner", "time_contact",
                                  "time_estimate_mark", "time_output", "time_regularise"});
   std::vector<std::shared_ptr<mesh::Forest>> meshes(nSteps, sim_->initialForest());
@@ -197,18 +198,23 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       options.cellFieldName = "indicator";
       options.interpolateTransfer = ap.get<std::string>("Transfer") == "interpolation";
       last = sim_->runPass(meshes, hook, options);
-      // Memory of the stored meshes of this cycle.
+      // Memory of the stored meshes of this cycle (steps with equal meshes share one forest).
       std::set<const mesh::Forest*> unique;
-      long long cells = 0;
+      long long cells = 0, storedCells = 0;
       double bytes = 0;
       for (const auto& m : meshes) {
         cells += m->numGlobalCells();
-        if (unique.insert(m.get()).second) bytes += static_cast<double>(m->bytes());
+        if (unique.insert(m.get()).second) {
+          bytes += static_cast<double>(m->bytes());
+          storedCells += m->numGlobalCells();
+        }
       }
       double bytesGlobal = 0;
       MPI_Allreduce(&bytes, &bytesGlobal, 1, MPI_DOUBLE, MPI_SUM, raw);
+      const double bytesPerCell = bytesGlobal / static_cast<double>(storedCells);
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      cycles_.push_back({l, last.totalDofs, etaMax, wall, cells, bytesGlobal / static_cast<double>(cells)});
+      cycles_.push_back({l, last.totalDofs, etaMax, wall, cells, static_cast<long long>(unique.size()), storedCells,
+                         bytesPerCell, last.meshChanges});
       auto phase = [&](const char* name) {
         const auto it = last.phaseSeconds.find(name);
         return it == last.phaseSeconds.end() ? 0.0 : it->second;
@@ -222,7 +228,8 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       const double regularise = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr0).count();
       if (cyclesCsv)
         cyclesCsv->row({double(l), double(last.totalDofs), etaMax, wall + regularise, double(cells),
-                        bytesGlobal / cells, phase("mesh") + phase("transfer"), phase("assembly"),
+                        double(unique.size()), double(storedCells), bytesPerCell, double(last.meshChanges),
+                        phase("mesh") + phase("transfer"), phase("assembly"),
                         phase("preconditioner"), phase("contact"), phase("estimator"), phase("output"), regularise});
       core::rootOut(rank) << std::scientific << std::setprecision(4) << "signorini: cycle " << l
                           << ": total unknowns " << last.totalDofs << ", eta " << etaMax << std::fixed

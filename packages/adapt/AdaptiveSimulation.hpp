@@ -18,8 +18,11 @@ struct CycleSummary {
   long long totalDofs;   ///< sum over the steps of the unknowns of T^n
   double eta;            ///< max_n eta^n
   double wallSeconds;
-  long long cells;       ///< sum over the steps of the cells of T^n
-  double bytesPerCell;   ///< memory of the stored step meshes per cell
+  long long cells;         ///< sum over the steps of the cells of T^n
+  long long storedMeshes;  ///< distinct forests stored for the cycle (equal consecutive meshes share one)
+  long long storedCells;   ///< cells of the distinct forests
+  double bytesPerCell;     ///< memory of the stored forests (p4est's own storage) per stored cell [bytes]
+  long meshRebuilds;       ///< steps whose mesh differed from the previous step's (operators rebuilt)
 };
 
 class AdaptiveSimulation {

@@ -490,7 +490,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                       "linear_solves", "linear_iterations", "energy", "newmark_energy",
                                       "contact_force", "max_lambda", "min_gap", "max_complementarity",
                                       "time_assembly", "time_contact", "time_output", "time_unconstrained",
-                                      "time_remesh", "time_estimate"};
+                                      "time_remesh", "time_estimate", "cells"};
   const int nc = I.problem->components();
   for (const auto& p : I.probes)
     for (int c = 0; c < nc; ++c) columns.push_back("probe:" + p.first + (nc == 1 ? "" : c == 0 ? ":x" : ":y"));
@@ -563,7 +563,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),
                                energy, I.newmarkEnergy(*d, energy, *a), force,
                                toPhysical * qr.maxLambda, qr.minGap, toPhysical * qr.maxComplementarity, tAssembly,
-                               tContact, 0.0, tFree, tRemesh, tEstimate};
+                               tContact, 0.0, tFree, tRemesh, tEstimate, double(d->forest->numGlobalCells())};
     for (const auto& p : I.probes)
       for (int c = 0; c < nc; ++c) row.push_back(d->assembler->evaluateComponent(uOverlap, p.second[0], p.second[1], c));
     if (I.problem->exactSolution) {

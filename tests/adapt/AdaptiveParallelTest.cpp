@@ -62,6 +62,37 @@ Result runAdaptive(RCP<const Comm> comm, const std::string& name, const Run& run
   return {io::readCsv(dir + "/" + name + ".cycles.csv"), all};
 }
 
+/// The cycle table against the step tables: total_dofs and total_cells are the sums over the steps
+/// 1..N, eta the largest eta^n; the operators are rebuilt at least where the unknowns change and at
+/// most where the stored mesh changes, never in cycle 0 (one mesh for all steps).
+void expectCycleTotalsMatchSteps(const Result& r) {
+  const size_t step = r.steps.column("step"), dofs = r.steps.column("dofs"), cells = r.steps.column("cells"),
+               eta = r.steps.column("eta");
+  size_t row = 0;
+  for (size_t l = 0; l < r.cycles.rows.size(); ++l) {
+    const auto& c = r.cycles.rows[l];
+    ASSERT_LT(row, r.steps.rows.size());
+    ASSERT_EQ(r.steps.rows[row][step], 0.0);
+    double sumDofs = 0, sumCells = 0, etaMax = 0;
+    long dofChanges = 0;
+    for (++row; row < r.steps.rows.size() && r.steps.rows[row][step] > 0; ++row) {
+      const auto& s = r.steps.rows[row];
+      sumDofs += s[dofs], sumCells += s[cells], etaMax = std::max(etaMax, s[eta]);
+      dofChanges += s[step] > 1 && s[dofs] != r.steps.rows[row - 1][dofs];
+    }
+    EXPECT_EQ(c[r.cycles.column("total_dofs")], sumDofs) << "cycle " << l;
+    EXPECT_EQ(c[r.cycles.column("total_cells")], sumCells) << "cycle " << l;
+    EXPECT_EQ(c[r.cycles.column("eta")], etaMax) << "cycle " << l;
+    const double rebuilds = c[r.cycles.column("mesh_rebuilds")], stored = c[r.cycles.column("stored_meshes")];
+    EXPECT_GE(rebuilds, dofChanges) << "cycle " << l;
+    EXPECT_LE(rebuilds, stored - 1) << "cycle " << l;
+    if (l == 0) EXPECT_EQ(rebuilds, 0.0);
+    if (l == 0) EXPECT_EQ(stored, 1.0);
+    EXPECT_GT(c[r.cycles.column("bytes_per_cell")], 8.0) << "a quadrant holds at least its coordinates";
+  }
+  EXPECT_EQ(row, r.steps.rows.size());
+}
+
 /// Runs the deck on the world (2 ranks) and on rank 0 alone and compares cycles and steps (every cycle).
 void expectAgreement(const Run& run, const std::string& name) {
   auto world = Tpetra::getDefaultComm();
@@ -92,6 +123,7 @@ void expectAgreement(const Run& run, const std::string& name) {
     for (size_t n = 0; n < one.steps.rows.size(); ++n) {
       const auto &a = one.steps.rows[n], &b = two.steps.rows[n];
       EXPECT_EQ(a[one.steps.column("dofs")], b[two.steps.column("dofs")]) << n;
+      EXPECT_EQ(a[one.steps.column("cells")], b[two.steps.column("cells")]) << n;
       EXPECT_EQ(a[one.steps.column("active")], b[two.steps.column("active")]) << n;
       contactSteps += a[one.steps.column("active")] > 0;
       const double e1 = a[one.steps.column("eta")], e2 = b[two.steps.column("eta")];
@@ -101,6 +133,7 @@ void expectAgreement(const Run& run, const std::string& name) {
       EXPECT_NEAR(a[one.steps.column("s0")], b[two.steps.column("s0")], 1e-9 * scale[1]) << n;
     }
     EXPECT_GT(contactSteps, 0);  // the compared interval includes contact
+    expectCycleTotalsMatchSteps(one);
   }();
   world->barrier();
 }
