@@ -12,6 +12,7 @@
 
 #include "CsvWriter.hpp"
 #include "Error.hpp"
+#include "MpiComm.hpp"
 #include "JacobiCG.hpp"
 #include "Marking.hpp"
 #include "PhaseTimers.hpp"
@@ -121,15 +122,17 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   const std::string base = sim_->outputBase();
 
   std::unique_ptr<io::CsvWriter> cyclesCsv;
-  if (rank == 0)
+  core::onRootCollectively(*comm, [&] {
     cyclesCsv = std::make_unique<io::CsvWriter>(
         base + ".cycles.csv",
-        std::vector<std::string>{"cycle", "total_dofs", "eta", "wall_seconds", "total_cells", "stored_meshes", "stored_cells",
-                                 "bytes_per_cell", "mesh_rebuilds",
-                                 "time_remesh_transfer", "time_assembly", "time_preconditioner", "time_contact",
-                                 "time_estimate_mark", "time_output", "time_regularise"});
+        std::vector<std::string>{"cycle", "total_dofs", "eta", "wall_seconds", "total_cells", "stored_meshes",
+                                 "stored_cells", "bytes_per_cell", "mesh_rebuilds", "time_remesh_transfer",
+                                 "time_assembly", "time_preconditioner", "time_contact", "time_estimate_mark",
+                                 "time_output", "time_regularise"});
+  });
   std::vector<std::shared_ptr<mesh::Forest>> meshes(nSteps, sim_->initialForest());
   dynamics::RunSummary last;
+  std::vector<std::string> written;  // rank 0: the files of the finished cycles, removed if a later one fails
   try {
     for (int l = 0; l < cycles; ++l) {
       const auto start = std::chrono::steady_clock::now();
@@ -198,6 +201,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       options.cellFieldName = "indicator";
       options.interpolateTransfer = ap.get<std::string>("Transfer") == "interpolation";
       last = sim_->runPass(meshes, hook, options);
+      written.insert(written.end(), last.files.begin(), last.files.end());
       // Memory of the stored meshes of this cycle (steps with equal meshes share one forest).
       std::set<const mesh::Forest*> unique;
       long long cells = 0, storedCells = 0;
@@ -236,20 +240,22 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                           << ", " << wall << " s" << std::endl;
       if (stop) {
         if (!lastPlanned) last.files = promoteToFinalName(last.files, base + ".cycle" + std::to_string(l), base, raw);
+        written.insert(written.end(), last.files.begin(), last.files.end());
         break;
       }
       if (mayStopEarly && !writeAll && !lastPlanned)  // written in case it was the last: it was not
         for (const auto& f : last.files)
           if (isExodusFile(f)) std::remove(f.c_str());
     }
+    core::onRootCollectively(*comm, [&] {
+      if (cyclesCsv) cyclesCsv->commit();
+    });
   } catch (...) {
-    if (cyclesCsv) cyclesCsv->abandon();
+    if (cyclesCsv) cyclesCsv->remove();
+    for (const auto& f : written) std::remove(f.c_str());
     throw;
   }
-  if (cyclesCsv) {
-    cyclesCsv->commit();
-    last.files.push_back(cyclesCsv->path());
-  }
+  if (cyclesCsv) last.files.push_back(cyclesCsv->path());
   return last;
 }
 

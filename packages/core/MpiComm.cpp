@@ -1,5 +1,7 @@
 #include "MpiComm.hpp"
 
+#include <string>
+
 #include <Teuchos_DefaultMpiComm.hpp>
 
 #include "Error.hpp"
@@ -10,6 +12,31 @@ MPI_Comm rawMpiComm(const Comm& comm) {
   const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
   SIGNORINI_ASSERT(mpi != nullptr, "signorini needs an MPI communicator");
   return *mpi->getRawMpiComm();
+}
+
+void onRootCollectively(const Comm& comm, const std::function<void()>& action) {
+  MPI_Comm c = rawMpiComm(comm);
+  int rank = 0;
+  MPI_Comm_rank(c, &rank);
+  int kind = 0;  // 0: done, 1: user error, 2: another exception
+  std::string message;
+  if (rank == 0) {
+    try {
+      action();
+    } catch (const UserError& e) {
+      kind = 1, message = e.what();
+    } catch (const std::exception& e) {
+      kind = 2, message = e.what();
+    }
+  }
+  MPI_Bcast(&kind, 1, MPI_INT, 0, c);
+  if (kind == 0) return;
+  int length = static_cast<int>(message.size());
+  MPI_Bcast(&length, 1, MPI_INT, 0, c);
+  message.resize(static_cast<size_t>(length));
+  MPI_Bcast(message.data(), length, MPI_CHAR, 0, c);
+  if (kind == 1) throw UserError(message);
+  throw std::runtime_error(message);
 }
 
 }  // namespace signorini::core

@@ -1,6 +1,7 @@
 #pragma once
 /// \file MpiComm.hpp
 /// The raw MPI communicator behind a Teuchos communicator (p4est and a few collectives need it).
+#include <functional>
 #include <vector>
 
 #include <mpi.h>
@@ -11,6 +12,11 @@ namespace signorini::core {
 
 /// Throws std::logic_error if \p comm is not an MPI communicator.
 MPI_Comm rawMpiComm(const Comm& comm);
+
+/// Runs \p action on rank 0 only (output files are written there) and makes its failure every
+/// rank's: a core::UserError thrown by \p action is rethrown on every rank with rank 0's message,
+/// any other std::exception as std::runtime_error. Collective: call it on every rank.
+void onRootCollectively(const Comm& comm, const std::function<void()>& action);
 
 /// The MPI datatype of T (int, long long, double, char).
 template <class T>

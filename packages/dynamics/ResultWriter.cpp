@@ -90,55 +90,62 @@ void ResultWriter::write(long meshId, const mesh::Q1Mesh& mesh, double time, con
   std::vector<int> edgeCounts;
   const auto allEdges = gatherToRoot(*comm_, edgeInfo, MPI_LONG_LONG, &edgeCounts);
   const auto allEdgeValues = gatherToRoot(*comm_, edgeValues, MPI_DOUBLE);
-  if (comm_->getRank() != 0) return;
-
-  io::QuadMesh out;
-  const size_t totalCells = allKeys.size() / 4;
-  // Nodes numbered in the order of first appearance: regular nodes through a table indexed by their
-  // global number, hanging nodes (few) through a hash map.
-  std::vector<int> regularId(numGlobal, -1);
-  std::unordered_map<long long, int> hangingId;
-  std::vector<std::vector<double>> nodalOut(numNodal_);
-  for (auto& f : nodalOut) f.reserve(totalCells + 64);
-  out.x.reserve(totalCells + 64);
-  out.y.reserve(totalCells + 64);
-  out.quads.reserve(totalCells);
-  static const int zToCcw[4] = {0, 1, 3, 2};
-  for (size_t e = 0; e < totalCells; ++e) {
-    std::array<int, 4> quad;
-    for (int k = 0; k < 4; ++k) {
-      const int c = zToCcw[k];
-      const size_t i = 4 * e + c;
-      const int fresh = static_cast<int>(out.x.size());
-      int& id = allKeys[i] >= 0 ? regularId[allKeys[i]] : hangingId.try_emplace(allKeys[i], -1).first->second;
-      if (id < 0) {
-        id = fresh;
-        out.x.push_back(allCoords[2 * i]);
-        out.y.push_back(allCoords[2 * i + 1]);
-        for (size_t f = 0; f < numNodal_; ++f) nodalOut[f].push_back(allValues[numNodal_ * i + f]);
+  // Rank 0 writes; a failure there (file not creatable, disk full) ends the run on every rank.
+  core::onRootCollectively(*comm_, [&] {
+    io::QuadMesh out;
+    const size_t totalCells = allKeys.size() / 4;
+    // Nodes numbered in the order of first appearance: regular nodes through a table indexed by their
+    // global number, hanging nodes (few) through a hash map.
+    std::vector<int> regularId(numGlobal, -1);
+    std::unordered_map<long long, int> hangingId;
+    std::vector<std::vector<double>> nodalOut(numNodal_);
+    for (auto& f : nodalOut) f.reserve(totalCells + 64);
+    out.x.reserve(totalCells + 64);
+    out.y.reserve(totalCells + 64);
+    out.quads.reserve(totalCells);
+    static const int zToCcw[4] = {0, 1, 3, 2};
+    for (size_t e = 0; e < totalCells; ++e) {
+      std::array<int, 4> quad;
+      for (int k = 0; k < 4; ++k) {
+        const int c = zToCcw[k];
+        const size_t i = 4 * e + c;
+        const int fresh = static_cast<int>(out.x.size());
+        int& id = allKeys[i] >= 0 ? regularId[allKeys[i]] : hangingId.try_emplace(allKeys[i], -1).first->second;
+        if (id < 0) {
+          id = fresh;
+          out.x.push_back(allCoords[2 * i]);
+          out.y.push_back(allCoords[2 * i + 1]);
+          for (size_t f = 0; f < numNodal_; ++f) nodalOut[f].push_back(allValues[numNodal_ * i + f]);
+        }
+        quad[k] = id;
       }
-      quad[k] = id;
+      out.quads.push_back(quad);
     }
-    out.quads.push_back(quad);
-  }
-  std::vector<std::vector<double>> cellOut(numCell_, std::vector<double>(totalCells));
-  for (size_t e = 0; e < totalCells; ++e)
-    for (size_t f = 0; f < numCell_; ++f) cellOut[f][e] = allCell[numCell_ * e + f];
-  // Local cell numbers become global through the ranks' cell offsets.
-  std::vector<long long> cellOffset(cellCounts.size(), 0);
-  for (size_t r = 1; r < cellCounts.size(); ++r) cellOffset[r] = cellOffset[r - 1] + cellCounts[r - 1] / 8;
-  std::vector<std::vector<double>> sideOut(numContact_);
-  auto& sides = out.sideSets["contact"];
-  size_t pos = 0;
-  for (size_t r = 0; r < edgeCounts.size(); ++r)
-    for (int k = 0; k < edgeCounts[r] / 2; ++k, ++pos) {
-      sides.push_back({static_cast<int>(cellOffset[r] + allEdges[2 * pos]), static_cast<int>(allEdges[2 * pos + 1])});
-      for (size_t f = 0; f < numContact_; ++f) sideOut[f].push_back(allEdgeValues[numContact_ * pos + f]);
-    }
-  writer_->write(meshId, out, time, nodalOut, cellOut, sideOut);
+    std::vector<std::vector<double>> cellOut(numCell_, std::vector<double>(totalCells));
+    for (size_t e = 0; e < totalCells; ++e)
+      for (size_t f = 0; f < numCell_; ++f) cellOut[f][e] = allCell[numCell_ * e + f];
+    // Local cell numbers become global through the ranks' cell offsets.
+    std::vector<long long> cellOffset(cellCounts.size(), 0);
+    for (size_t r = 1; r < cellCounts.size(); ++r) cellOffset[r] = cellOffset[r - 1] + cellCounts[r - 1] / 8;
+    std::vector<std::vector<double>> sideOut(numContact_);
+    auto& sides = out.sideSets["contact"];
+    size_t pos = 0;
+    for (size_t r = 0; r < edgeCounts.size(); ++r)
+      for (int k = 0; k < edgeCounts[r] / 2; ++k, ++pos) {
+        sides.push_back({static_cast<int>(cellOffset[r] + allEdges[2 * pos]), static_cast<int>(allEdges[2 * pos + 1])});
+        for (size_t f = 0; f < numContact_; ++f) sideOut[f].push_back(allEdgeValues[numContact_ * pos + f]);
+      }
+    writer_->write(meshId, out, time, nodalOut, cellOut, sideOut);
+  });
 }
 
-std::vector<std::string> ResultWriter::close() { return writer_ ? writer_->close() : std::vector<std::string>{}; }
+std::vector<std::string> ResultWriter::close() {
+  std::vector<std::string> files;
+  core::onRootCollectively(*comm_, [&] {
+    if (writer_) files = writer_->close();
+  });
+  return files;
+}
 
 void ResultWriter::abandon() {
   if (writer_) writer_->abandon();

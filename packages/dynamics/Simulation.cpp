@@ -500,18 +500,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   }
   columns.insert(columns.end(), options.extraColumns.begin(), options.extraColumns.end());
   std::unique_ptr<io::CsvWriter> csv;
-  int csvOk = 1;
-  std::string csvError;
-  if (rank == 0 && options.writeCsv) {
-    try {
-      csv = std::make_unique<io::CsvWriter>(base + ".steps.csv", columns);
-    } catch (core::UserError& e) {
-      csvOk = 0;
-      csvError = e.what();
-    }
-  }
-  Teuchos::broadcast(*I.comm, 0, 1, &csvOk);
-  if (!csvOk) SIGNORINI_USER_ERROR((rank == 0 ? csvError : std::string("cannot create the CSV output")));
+  if (options.writeCsv)
+    core::onRootCollectively(*I.comm, [&] { csv = std::make_unique<io::CsvWriter>(base + ".steps.csv", columns); });
   std::unique_ptr<ResultWriter> exodus;
   std::vector<std::string> cellNames = {"level"};
   if (!options.cellFieldName.empty()) cellNames.push_back(options.cellFieldName);
@@ -691,17 +681,17 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                             << elapsed / n * (nSteps - n) << " s" << std::endl;
       }
     }
+    // Inside the try: if either fails (on rank 0), every rank throws and neither output is left.
+    core::onRootCollectively(*I.comm, [&] {
+      if (csv) csv->commit();
+    });
+    if (exodus) summary.files = exodus->close();
+    if (csv) summary.files.insert(summary.files.begin(), csv->path());
   } catch (...) {
-    if (csv) csv->abandon();
+    if (csv) csv->remove();
     if (exodus) exodus->abandon();
     throw;
   }
-  if (csv) {
-    csv->commit();
-    summary.files.push_back(csv->path());
-  }
-  if (exodus)
-    for (const auto& f : exodus->close()) summary.files.push_back(f);
   summary.steps = nSteps;
   summary.dofsPerStep = static_cast<long long>(d->assembler->ownedMap()->getGlobalNumElements());
   summary.phaseSeconds = I.timers.all();

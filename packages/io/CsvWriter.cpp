@@ -34,7 +34,12 @@ void CsvWriter::commit() {
   out_.close();
   if (std::rename((path_ + ".part").c_str(), path_.c_str()) != 0)
     SIGNORINI_USER_ERROR("cannot rename '" << path_ << ".part' to '" << path_ << "'");
-  done_ = true;
+  done_ = committed_ = true;
+}
+
+void CsvWriter::remove() {
+  if (committed_) std::remove(path_.c_str());
+  abandon();
 }
 
 void CsvWriter::abandon() {

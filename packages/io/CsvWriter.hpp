@@ -23,6 +23,8 @@ class CsvWriter {
   void commit();
   /// Removes the temporary file.
   void abandon();
+  /// Removes the file, committed or not (a later failure of the run it belongs to).
+  void remove();
   const std::vector<std::string>& columns() const { return columns_; }
   const std::string& path() const { return path_; }
 
@@ -31,6 +33,7 @@ class CsvWriter {
   std::vector<std::string> columns_;
   std::ofstream out_;
   bool done_ = false;
+  bool committed_ = false;
 };
 
 /// Reads a CSV file written by CsvWriter: header names and rows of numbers.

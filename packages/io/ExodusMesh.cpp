@@ -387,13 +387,12 @@ struct ExodusSeriesWriter::Impl {
     writtenFiles.push_back(finalPath);
   }
 
-  /// Closes the current file and deletes it.
+  /// Closes the current file and deletes it, also when closing or renaming it failed.
   void dropFile() {
-    if (exoid < 0) return;
-    ex_close(exoid);
+    if (exoid >= 0) ex_close(exoid);
     exoid = -1;
     std::error_code ec;
-    fs::remove(partPath, ec);
+    if (!partPath.empty() && fs::is_regular_file(partPath, ec)) fs::remove(partPath, ec);
   }
 
   /// Throws std::logic_error unless the data fit \p mesh and the declared variables.
@@ -524,6 +523,9 @@ void ExodusSeriesWriter::abandon() {
   impl_->finished = true;
   silenceExodus();
   impl_->dropFile();
+  std::error_code ec;
+  for (const auto& f : impl_->writtenFiles) fs::remove(f, ec);
+  impl_->writtenFiles.clear();
 }
 
 }  // namespace signorini::io

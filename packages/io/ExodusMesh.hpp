@@ -76,7 +76,7 @@ class ExodusSeriesWriter {
   /// Finalises the current file (idempotent). Returns the final file names written so far.
   std::vector<std::string> close();
 
-  /// Drops the file being written (for a failed run): its temporary file is removed.
+  /// Drops the series (for a failed run): the temporary file and the finished files of the series are removed.
   void abandon();
 
  private:

@@ -7,17 +7,19 @@ set(SIGNORINI_DRIVER_TEST_DIR ${CMAKE_CURRENT_LIST_DIR})
 set(SIGNORINI_DRIVER_DECKS ${CMAKE_CURRENT_LIST_DIR}/decks)
 
 # signorini_add_driver_test(NAME EXIT <status>|nonzero ARGS <signorini args>...
-#                           [REGEX <re>...] [FILES <file>...] [NP n])
+#                           [REGEX <re>...] [FILES <file>...] [BLOCK <name>...] [NP n])
 # ARGS may use {OUT} for the test's fresh output directory. Every REGEX must match stdout+stderr;
-# FILES are the only files allowed (and required) in the output directory afterwards.
+# FILES are the only files allowed (and required) in the output directory afterwards; BLOCK names
+# directories made there before the run, so that writing an output of that name fails.
 function(signorini_add_driver_test name)
-  cmake_parse_arguments(D "" "EXIT;NP" "ARGS;REGEX;FILES" ${ARGN})
+  cmake_parse_arguments(D "" "EXIT;NP" "ARGS;REGEX;FILES;BLOCK" ${ARGN})
   if(NOT D_NP)
     set(D_NP 2)
   endif()
   string(REPLACE ";" "|" args "${D_ARGS}")
   string(REPLACE ";" "<AND>" regex "${D_REGEX}")
   string(REPLACE ";" "|" files "${D_FILES}")
+  string(REPLACE ";" "|" block "${D_BLOCK}")
   add_test(NAME driver_${name}
     COMMAND ${CMAKE_COMMAND}
       "-DSIGNORINI=$<TARGET_FILE:signorini>"
@@ -29,6 +31,7 @@ function(signorini_add_driver_test name)
       "-DEXPECT_EXIT=${D_EXIT}"
       "-DEXPECT_REGEX=${regex}"
       "-DEXPECT_FILES=${files}"
+      "-DBLOCK=${block}"
       -DTIMEOUT=50
       -P ${SIGNORINI_DRIVER_TEST_DIR}/run_bad_deck.cmake)
   set_tests_properties(driver_${name} PROPERTIES TIMEOUT 60 PROCESSORS ${D_NP} LABELS driver)
@@ -178,3 +181,19 @@ signorini_add_driver_test(print_parameters EXIT 0
   REGEX "Time Integration/Time Step : double = 0[.]0025"
         "Mesh/Boundary Segments/  [(]sublist[)]"
         "Output/Write Exodus : bool")
+
+# An output that cannot be written (its name taken by a directory) is an error on every rank, at
+# whatever point of the run it happens (rank 0 writes; the others used to wait for it), and the
+# files the run had already finished (earlier cycles, the step table) are removed.
+signorini_add_driver_test(output_exodus_not_creatable EXIT 1
+  ARGS --output-dir {OUT} ${decks}/good.xml
+  REGEX "cannot create Exodus II output file" BLOCK good.e.part)
+signorini_add_driver_test(output_steps_not_renamable EXIT 1
+  ARGS --output-dir {OUT} ${decks}/good.xml
+  REGEX "cannot rename '.*good[.]steps[.]csv[.]part'" BLOCK good.steps.csv)
+signorini_add_driver_test(adaptive_cycles_table_not_renamable EXIT 1
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=2" ${decks}/good.xml
+  REGEX "cannot rename '.*good[.]cycles[.]csv[.]part'" BLOCK good.cycles.csv)
+signorini_add_driver_test(adaptive_second_cycle_not_writable EXIT 1
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=3" ${decks}/good.xml
+  REGEX "cannot create output file '.*good[.]cycle1[.]steps[.]csv[.]part'" BLOCK good.cycle1.steps.csv.part)
