@@ -63,6 +63,10 @@ int main(int argc, char** argv) {
         return 2;
       }
       (arg == "--set" ? overrides.emplace_back(argv[++i]) : outputDir = argv[++i]);
+      if (arg == "--output-dir" && outputDir.empty()) {
+        if (rank == 0) std::cerr << "signorini: --output-dir needs a directory (\".\" for the working directory)\n";
+        return 2;
+      }
     } else if (arg.rfind("--", 0) == 0) {
       if (rank == 0) std::cerr << "signorini: unknown option " << arg << "\n" << kUsage;
       return 2;

@@ -455,7 +455,14 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   }
   I.initialDiscretisation = std::move(d);
   I.outDir = outputDir.empty() ? out.get<std::string>("Directory") : outputDir;
-  I.basename = out.get<std::string>("Basename").empty() ? stemOf(deckPath) : out.get<std::string>("Basename");
+  if (I.outDir.empty()) SIGNORINI_USER_ERROR("Output/Directory: empty (\".\" is the working directory)");
+  const std::string& basename = out.get<std::string>("Basename");
+  if (basename.find('/') != std::string::npos || basename == "." || basename == ".." ||
+      (!basename.empty() && basename.find_first_not_of(" \t") == std::string::npos))
+    SIGNORINI_USER_ERROR("Output/Basename '" << basename
+                                             << "': must be a plain file name (no '/', not '.', '..' or blank); "
+                                                "Output/Directory or --output-dir chooses the folder");
+  I.basename = basename.empty() ? stemOf(deckPath) : basename;
   I.outputBase = I.outDir + "/" + I.basename;
   ensureWritableDirectory(I.outDir, *comm);
 }

@@ -321,8 +321,14 @@ std::vector<double> ContactCoupling::weightedObstacle(const core::Expression& g,
   auto gqh = Kokkos::create_mirror_view(gq);
   for (int e = 0; e < ne; ++e) {
     const auto& x = edges_[e];
-    for (int q = 0; q < 3; ++q)
-      gqh(e, q) = g(x[0] + kGauss3Point[q] * (x[2] - x[0]), x[1] + kGauss3Point[q] * (x[3] - x[1]), t);
+    for (int q = 0; q < 3; ++q) {
+      const double px = x[0] + kGauss3Point[q] * (x[2] - x[0]), py = x[1] + kGauss3Point[q] * (x[3] - x[1]);
+      gqh(e, q) = g(px, py, t);
+      // The edges are the same on every rank, so every rank stops here alike.
+      if (!std::isfinite(gqh(e, q)))
+        SIGNORINI_USER_ERROR("Problem/Obstacle: evaluates to " << gqh(e, q) << " at (" << px << ", " << py
+                                                               << ") on the contact boundary, t = " << t);
+    }
   }
   Kokkos::deep_copy(gq, gqh);
   Kokkos::View<double*, DeviceType> gbar("gbar", m);

@@ -197,3 +197,19 @@ signorini_add_driver_test(adaptive_cycles_table_not_renamable EXIT 1
 signorini_add_driver_test(adaptive_second_cycle_not_writable EXIT 1
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=3" ${decks}/good.xml
   REGEX "cannot create output file '.*good[.]cycle1[.]steps[.]csv[.]part'" BLOCK good.cycle1.steps.csv.part)
+
+# Output names that would leave the output directory or hide the files, an empty directory (was
+# the file system root), and an obstacle that is not a number on Gamma_C (contact was dropped
+# silently: every comparison with NaN is false).
+signorini_add_driver_test(bad_basename_with_folder EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Basename=sub/x" ${decks}/good.xml
+  REGEX "Output/Basename 'sub/x': must be a plain file name")
+signorini_add_driver_test(bad_basename_dot EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Basename=.." ${decks}/good.xml
+  REGEX "Output/Basename '[.][.]': must be a plain file name")
+signorini_add_driver_test(bad_empty_output_directory EXIT 1
+  ARGS --set "Output/Directory=" ${decks}/good.xml
+  REGEX "Output/Directory: empty")
+signorini_add_driver_test(bad_obstacle_not_a_number EXIT 1
+  ARGS --output-dir {OUT} --set "Problem/Obstacle=sqrt(y - 2)" ${decks}/good.xml
+  REGEX "Problem/Obstacle: evaluates to -?nan at [(]")
