@@ -3,6 +3,12 @@
 obstacle, in the written Exodus series of a membrane run from t = 0.0375 to one output after the
 first contact (first step with active > 0 in <base>.steps.csv); the step mesh's finest level for
 comparison. Usage: contact_zone_levels.py OUT/BASENAME (e.g. out/membrane)"""
+import glob
+import sys
+
+import netCDF4
+import numpy as np
+
 base=sys.argv[1]
 steps=np.genfromtxt(base+'.steps.csv',delimiter=',',names=True)
 first=steps['t'][np.argmax(steps['active']>0)]
