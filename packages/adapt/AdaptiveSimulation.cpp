@@ -32,28 +32,26 @@ bool isExodusFile(const std::string& path) {
 /// number of cycles), written as "<cycleBase>.<rest>", renamed to "<finalBase>.<rest>" like the
 /// files of a run that ends after its planned cycles. Each rename replaces its target at once; the
 /// tail of an older series under the final name is removed first so ParaView does not mix it in.
-/// The files live on the writing rank; a failure there is reported on every rank of \p comm.
+/// The files live on rank 0 (the writing rank); a failure there is reported on every rank of \p comm.
 std::vector<std::string> promoteToFinalName(const std::vector<std::string>& files, const std::string& cycleBase,
-                                            const std::string& finalBase, MPI_Comm comm) {
+                                            const std::string& finalBase, const Comm& comm) {
   std::vector<std::string> renamed;
-  std::string error;
-  if (std::any_of(files.begin(), files.end(), isExodusFile)) io::removeExodusSeriesTail(finalBase);
-  for (const auto& f : files) {
-    if (f.compare(0, cycleBase.size() + 1, cycleBase + ".") != 0) {
-      renamed.push_back(f);
-      continue;
+  core::onRootCollectively(comm, [&] {
+    std::string error;
+    if (std::any_of(files.begin(), files.end(), isExodusFile)) io::removeExodusSeriesTail(finalBase);
+    for (const auto& f : files) {
+      if (f.compare(0, cycleBase.size() + 1, cycleBase + ".") != 0) {
+        renamed.push_back(f);
+        continue;
+      }
+      const std::string target = finalBase + f.substr(cycleBase.size());
+      std::error_code ec;
+      std::filesystem::rename(f, target, ec);
+      if (ec && error.empty()) error = "cannot rename '" + f + "' to '" + target + "': " + ec.message();
+      renamed.push_back(target);
     }
-    const std::string target = finalBase + f.substr(cycleBase.size());
-    std::error_code ec;
-    std::filesystem::rename(f, target, ec);
-    if (ec && error.empty()) error = "cannot rename '" + f + "' to '" + target + "': " + ec.message();
-    renamed.push_back(target);
-  }
-  int failed = error.empty() ? 0 : 1, anyFailed = 0;
-  MPI_Allreduce(&failed, &anyFailed, 1, MPI_INT, MPI_MAX, comm);
-  if (anyFailed)
-    SIGNORINI_USER_ERROR("Output/Directory: "
-                         << (error.empty() ? "the final cycle's files could not be renamed on another rank" : error));
+    if (!error.empty()) SIGNORINI_USER_ERROR("Output/Directory: " << error);
+  });
   return renamed;
 }
 
@@ -239,7 +237,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                           << ": total unknowns " << last.totalDofs << ", eta " << etaMax << std::fixed
                           << ", " << wall << " s" << std::endl;
       if (stop) {
-        if (!lastPlanned) last.files = promoteToFinalName(last.files, base + ".cycle" + std::to_string(l), base, raw);
+        if (!lastPlanned) last.files = promoteToFinalName(last.files, base + ".cycle" + std::to_string(l), base, *comm);
         written.insert(written.end(), last.files.begin(), last.files.end());
         break;
       }

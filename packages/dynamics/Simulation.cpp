@@ -98,9 +98,7 @@ std::string stemOf(const std::string& path) {
 /// Creates \p dir (and parents) on rank 0 and checks that a file can be written there; the
 /// verdict is shared so every rank fails together.
 void ensureWritableDirectory(const std::string& dir, const Comm& comm) {
-  int ok = 1;
-  std::string why;
-  if (comm.getRank() == 0) {
+  core::onRootCollectively(comm, [&] {
     std::string partial;
     std::stringstream ss(dir);
     if (!dir.empty() && dir[0] == '/') partial = "/";
@@ -111,15 +109,10 @@ void ensureWritableDirectory(const std::string& dir, const Comm& comm) {
     }
     const std::string probe = dir + "/.signorini-write-test";
     FILE* f = std::fopen(probe.c_str(), "w");
-    if (!f) {
-      ok = 0;
-    } else {
-      std::fclose(f);
-      std::remove(probe.c_str());
-    }
-  }
-  Teuchos::broadcast(comm, 0, 1, &ok);
-  if (!ok) SIGNORINI_USER_ERROR("Output/Directory: cannot write to '" << dir << "'");
+    if (!f) SIGNORINI_USER_ERROR("Output/Directory: cannot write to '" << dir << "'");
+    std::fclose(f);
+    std::remove(probe.c_str());
+  });
 }
 
 /// Component c of a vector with nc unknowns per node, as a vector on the node map \p nodes (owned
