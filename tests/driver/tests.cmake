@@ -213,3 +213,8 @@ signorini_add_driver_test(bad_empty_output_directory EXIT 1
 signorini_add_driver_test(bad_obstacle_not_a_number EXIT 1
   ARGS --output-dir {OUT} --set "Problem/Obstacle=sqrt(y - 2)" ${decks}/good.xml
   REGEX "Problem/Obstacle: evaluates to -?nan at [(]")
+# The Exodus file cannot take its final name after the step table was committed: the committed
+# table goes too.
+signorini_add_driver_test(output_exodus_not_renamable EXIT 1
+  ARGS --output-dir {OUT} ${decks}/good.xml
+  REGEX "cannot rename Exodus II output file '.*good[.]e[.]part'" BLOCK good.e)
