@@ -78,7 +78,7 @@ def plot_contributions(adaptive, out):
 
 def plot_energy_and_probe(adaptive, uniform, out):
     """Energy per step across mesh changes, and the probe value, adaptive against uniform cycles."""
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    fig, axes = plt.subplots(1, 3, figsize=(16, 4))
     runs = []
     if uniform:
         runs += [(f, "uniform " + f.split(".")[-3], "-") for f in sorted(glob.glob(uniform + ".cycle*.steps.csv"))]
@@ -92,6 +92,17 @@ def plot_energy_and_probe(adaptive, uniform, out):
         probes = [n for n in s.dtype.names if n.startswith("probe")]
         if probes:
             axes[1].plot(s["t"], s[probes[0]], style, label=label, lw=1)
+    # The transfer's own effect: energy of (I_h u^{n-1}, I_h v^{n-1}) on step n's mesh minus that of
+    # step n-1 on its own mesh (columns written with Adaptivity/Report Transfer Energy).
+    s = read_csv(adaptive + ".steps.csv") if os.path.exists(adaptive + ".steps.csv") else None
+    if s is not None and "energy_transferred" in s.dtype.names:
+        e0 = s["energy"][0]
+        for col, before, label, style in [("energy_transferred", "energy", "kinetic + strain", "k-"),
+                                          ("kinetic_energy_transferred", "kinetic_energy", "kinetic", "r-")]:
+            axes[2].plot(s["t"][1:], (s[col][1:] - s[before][:-1]) / e0, style, label=label, lw=0.8)
+    axes[2].set_xlabel("t")
+    axes[2].set_ylabel("change / E(0)")
+    axes[2].set_title("energy change by the transfer to step n's mesh\n(adaptive, last cycle)")
     axes[0].set_xlabel("t")
     axes[0].set_ylabel("kinetic + strain energy")
     axes[0].set_title("energy per step (mesh changes every step in adaptive runs)")

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
+#include <iostream>
 #include <set>
 
 #include <Tpetra_Vector.hpp>
@@ -82,6 +83,10 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
   core::addInt(a, "Maximum Level", 14, "Cells are not refined beyond this level", 0, 25);
   core::addChoice(a, "Transfer", "L2 projection", "I_h between step meshes (paper Sec. 3.2)",
                   {"L2 projection", "interpolation"});
+  core::addBool(a, "Report Transfer Energy", true,
+                "Step tables gain kinetic_energy, energy_transferred and kinetic_energy_transferred: the energies of "
+                "I_h u^{n-1}, I_h v^{n-1} on the mesh of step n (the transfer's effect; costs one more projected "
+                "field, I_h v (I_h a when Alpha = 1), per mesh change)");
   core::addBool(a, "Write All Cycles", false,
                 "Write Exodus results for every cycle (<basename>.cycle<l>.e); else only for the last cycle");
   p.set("Adaptivity", a, "Algorithm 5.1: cycles, marking, stopping");
@@ -89,9 +94,60 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
   return p;
 }
 
+namespace {
+
+/// Settings that are valid one by one but cannot work together: user errors naming the keys. With
+/// Strategy = none the Adaptivity keys the deck sets have no effect: a warning lists them.
+void checkAdaptivitySettings(const core::ParameterList& deck, const std::string& deckPath, const Comm& comm) {
+  const auto& a = deck.sublist("Adaptivity");
+  const std::string strategy = a.get<std::string>("Strategy");
+  if (strategy == "none") {
+    // Compared with the defaults (Teuchos' isDefault flag is not set when validation adds the whole sublist).
+    const auto defaults = AdaptiveSimulation::getValidParameters().sublist("Adaptivity");
+    std::string ignored;
+    for (auto it = a.begin(); it != a.end(); ++it)
+      if (a.name(it) != "Strategy" && !(a.entry(it).getAny() == defaults.getEntry(a.name(it)).getAny()))
+        ignored += (ignored.empty() ? "" : ", ") + a.name(it);
+    if (!ignored.empty() && comm.getRank() == 0)
+      std::cerr << "signorini: warning: " << deckPath
+                << ": Adaptivity/Strategy = none runs one pass on the deck's mesh; without effect: Adaptivity/"
+                << ignored << std::endl;
+    return;
+  }
+  const int cycles = a.get<int>("Cycles");
+  const double fraction = a.get<double>("Refinement Fraction"), coarsen = a.get<double>("Coarsening Fraction");
+  const int maxLevel = a.get<int>("Maximum Level"), baseLevel = deck.sublist("Mesh").get<int>("Refinement Level");
+  if (a.get<bool>("Write All Cycles") && !deck.sublist("Output").get<bool>("Write Exodus"))
+    SIGNORINI_USER_ERROR("Adaptivity/Write All Cycles = true needs Output/Write Exodus = true");
+  if (cycles < 2) return;  // nothing is refined
+  if (maxLevel <= baseLevel)
+    SIGNORINI_USER_ERROR("Adaptivity/Maximum Level = " << maxLevel << " is not above Mesh/Refinement Level = "
+                                                         << baseLevel << ": no cell could be refined");
+  if (strategy != "uniform" && fraction == 0)
+    SIGNORINI_USER_ERROR("Adaptivity/Refinement Fraction = 0 refines no cell with Strategy = " << strategy
+                                                                                            << ": every cycle would repeat the first");
+  if (strategy == "fixed fraction" && fraction + coarsen > 1)
+    SIGNORINI_USER_ERROR("Adaptivity/Coarsening Fraction = " << coarsen << " with Refinement Fraction = " << fraction
+                                                              << ": together more than all cells");
+}
+
+}  // namespace
+
 AdaptiveSimulation::AdaptiveSimulation(const core::ParameterList& deck, const std::string& deckPath,
                                        const std::string& outputDir, RCP<const Comm> comm)
-    : deck_(deck), sim_(std::make_unique<dynamics::Simulation>(deck, deckPath, outputDir, comm)) {}
+    : deck_(deck) {
+  checkAdaptivitySettings(deck, deckPath, *comm);
+  sim_ = std::make_unique<dynamics::Simulation>(deck, deckPath, outputDir, comm);
+  const auto& a = deck.sublist("Adaptivity");
+  // Uniform refinement: the last cycle's mesh is known in advance (unless a criterion stops earlier).
+  if (a.get<std::string>("Strategy") == "uniform" && a.get<double>("Maximum Total Unknowns") == 0 &&
+      a.get<double>("Tolerance") == 0) {
+    const int refinements = std::min(a.get<int>("Cycles") - 1,
+                                     a.get<int>("Maximum Level") - deck.sublist("Mesh").get<int>("Refinement Level"));
+    sim_->checkMeshFits(static_cast<double>(sim_->initialForest()->numGlobalCells()) * std::pow(4.0, std::max(refinements, 0)),
+                        "Adaptivity/Cycles = " + std::to_string(a.get<int>("Cycles")) + " with Strategy = uniform");
+  }
+}
 
 AdaptiveSimulation::~AdaptiveSimulation() = default;
 
@@ -133,6 +189,19 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   std::vector<std::string> written;  // rank 0: the files of the finished cycles, removed if a later one fails
   try {
     for (int l = 0; l < cycles; ++l) {
+      {  // the largest step mesh of this cycle and the forests of all its steps
+        long long largest = 0;
+        double stored = 0;
+        std::set<const mesh::Forest*> distinct;
+        for (const auto& m : meshes) {
+          largest = std::max(largest, m->numGlobalCells());
+          if (distinct.insert(m.get()).second) stored += static_cast<double>(m->numGlobalCells());
+        }
+        sim_->checkMeshFits(static_cast<double>(largest),
+                            "Adaptivity: cycle " + std::to_string(l) +
+                                " (Cycles, Maximum Total Unknowns or Tolerance stop earlier)",
+                            stored);
+      }
       const auto start = std::chrono::steady_clock::now();
       std::vector<std::shared_ptr<mesh::Forest>> next(nSteps);
       const bool lastPlanned = l == cycles - 1;  // no next cycle: nothing to mark or refine
@@ -198,6 +267,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       options.extraColumns = {"eta_star", "s0", "s1", "eta"};
       options.cellFieldName = "indicator";
       options.interpolateTransfer = ap.get<std::string>("Transfer") == "interpolation";
+      options.reportTransferEnergy = ap.get<bool>("Report Transfer Energy");
       last = sim_->runPass(meshes, hook, options);
       written.insert(written.end(), last.files.begin(), last.files.end());
       // Memory of the stored meshes of this cycle (steps with equal meshes share one forest).

@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include <unistd.h>
+
 #include <Teuchos_DefaultMpiComm.hpp>
 
 #include "Error.hpp"
@@ -12,6 +14,16 @@ MPI_Comm rawMpiComm(const Comm& comm) {
   const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
   SIGNORINI_ASSERT(mpi != nullptr, "signorini needs an MPI communicator");
   return *mpi->getRawMpiComm();
+}
+
+double memoryPerRank(const Comm& comm) {
+  MPI_Comm node;
+  MPI_Comm_split_type(rawMpiComm(comm), MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+  int ranksOnNode = 1;
+  MPI_Comm_size(node, &ranksOnNode);
+  MPI_Comm_free(&node);
+  const double bytes = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+  return bytes / ranksOnNode;
 }
 
 void onRootCollectively(const Comm& comm, const std::function<void()>& action) {

@@ -18,6 +18,10 @@ MPI_Comm rawMpiComm(const Comm& comm);
 /// any other std::exception as std::runtime_error. Collective: call it on every rank.
 void onRootCollectively(const Comm& comm, const std::function<void()>& action);
 
+/// The physical memory of this node [bytes] divided by the ranks of \p comm on it
+/// (MPI_COMM_TYPE_SHARED): what one rank can use. Collective.
+double memoryPerRank(const Comm& comm);
+
 /// The MPI datatype of T (int, long long, double, char).
 template <class T>
 MPI_Datatype mpiType();

@@ -57,5 +57,22 @@ void Newmark::update(const Vector& predictor, const Vector& velocityPredictor, c
   v.update(1.0, velocityPredictor, alpha * k, a, 0.0);
 }
 
+const Vector& Newmark::recoveryField(const Vector& v, const Vector& a) const { return alpha < 1 ? v : a; }
+
+void Newmark::stateFromPredictors(const Vector& predictor, const Vector& velocityPredictor, const Vector& recovery,
+                                  Vector& u, Vector& v) const {
+  const double k = timeStep;
+  if (alpha < 1) {  // v given; k^2 (1/2 - beta) a = k (1/2 - beta) / (1 - alpha) (velocityPredictor - v)
+    v.assign(recovery);
+    const double c = k * (0.5 - beta) / (1 - alpha);
+    u.update(1.0, predictor, -c, velocityPredictor, 0.0);
+    u.update(c - k, v, 1.0);
+  } else {  // a given; the velocity predictor is v itself
+    v.assign(velocityPredictor);
+    u.update(1.0, predictor, -k, v, 0.0);
+    u.update(-(0.5 - beta) * k * k, recovery, 1.0);
+  }
+}
+
 
 }  // namespace signorini::dynamics

@@ -29,6 +29,15 @@ struct Newmark {
   /// With a predictor projected onto the admissible set (contact stabilisation) the projection's
   /// correction is not counted as acceleration.
   void update(const Vector& predictor, const Vector& velocityPredictor, const Vector& uNew, Vector& v, Vector& a) const;
+  /// The field that, moved to another mesh with the two predictors, determines the moved state
+  /// (stateFromPredictors): \p v when alpha < 1 (as smooth as the velocity predictor, so its
+  /// projection costs no more iterations), else \p a.
+  const Vector& recoveryField(const Vector& v, const Vector& a) const;
+  /// Inverts predictor() and velocityPredictor(): overwrites (u, v) with the state that has these
+  /// predictors and whose recoveryField() is \p recovery (e.g. I_h u, I_h v from the projected
+  /// predictors and the projected recovery field; I_h is linear).
+  void stateFromPredictors(const Vector& predictor, const Vector& velocityPredictor, const Vector& recovery, Vector& u,
+                           Vector& v) const;
 };
 
 }  // namespace signorini::dynamics

@@ -180,6 +180,7 @@ struct Simulation::Impl {
   core::ParameterList deck;
   std::string deckPath, outDir, basename, outputBase;
   std::shared_ptr<mesh::CoarseMesh> coarse;
+  int components = 1;  // unknowns per node (1 scalar wave, 2 elasticity)
   std::unique_ptr<mesh::BoundarySegments> segments;
   std::unique_ptr<fem::ProblemData> problem;
   std::unique_ptr<Newmark> newmark;
@@ -316,12 +317,17 @@ struct Simulation::Impl {
       }
   }
 
-  double energy(const Discretisation& d, const Vector& u, const Vector& v) const {
+  /// Kinetic energy 1/2 v^T M v and strain energy 1/2 u^T K u.
+  std::pair<double, double> energies(const Discretisation& d, const Vector& u, const Vector& v) const {
     Vector tmp(d.assembler->ownedMap());
     d.M->apply(v, tmp);
     const double kin = 0.5 * tmp.dot(v);
     d.K->apply(u, tmp);
-    return kin + 0.5 * tmp.dot(u);
+    return {kin, 0.5 * tmp.dot(u)};
+  }
+  double energy(const Discretisation& d, const Vector& u, const Vector& v) const {
+    const auto [kin, strain] = energies(d, u, v);
+    return kin + strain;
   }
   /// The energy the Newmark scheme with alpha = 1/2 conserves without contact and loads:
   /// kinetic + strain (\p energy, from energy()) + (beta - 1/4) k^2 / 2 a^T M a.
@@ -409,7 +415,17 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   auto meshParams = deck.sublist("Mesh");
   const std::string file = meshParams.get<std::string>("File");
   if (!file.empty() && file[0] != '/') meshParams.set("File", directoryOf(deckPath) + "/" + file);
+  const int level = meshParams.get<int>("Refinement Level");
+  I.components = deck.sublist("Problem").get<std::string>("Type") == "scalar wave" ? 1 : 2;
+  if (file.empty())
+    checkMeshFits(meshParams.get<int>("Cells X") * std::pow(4.0, level) * meshParams.get<int>("Cells Y"),
+                  "Mesh/Cells X = " + std::to_string(meshParams.get<int>("Cells X")) + ", Cells Y = " +
+                      std::to_string(meshParams.get<int>("Cells Y")) + ", Refinement Level = " + std::to_string(level));
   I.coarse = mesh::CoarseMesh::create(meshParams);
+  if (!file.empty())
+    checkMeshFits(I.coarse->numTrees() * std::pow(4.0, level + I.coarse->levelOffset()),
+                  "Mesh/File with " + std::to_string(I.coarse->numTrees()) + " cells, Refinement Level = " +
+                      std::to_string(level));
   I.segments = std::make_unique<mesh::BoundarySegments>(meshParams.sublist("Boundary Segments"), *I.coarse);
   I.problem = std::make_unique<fem::ProblemData>(deck.sublist("Problem"), *I.segments);
   I.newmark = std::make_unique<Newmark>(deck.sublist("Time Integration"));
@@ -467,6 +483,23 @@ int Simulation::numSteps() const { return impl_->newmark->numSteps(); }
 RCP<const Comm> Simulation::comm() const { return impl_->comm; }
 const std::string& Simulation::outputBase() const { return impl_->outputBase; }
 
+void Simulation::checkMeshFits(double globalCells, const std::string& cause, double storedCells) const {
+  const double perRank = globalCells / impl_->comm->getSize();
+  const int nc = impl_->components;
+  const double need = perRank * 750.0 * nc * nc + storedCells / impl_->comm->getSize() * 35.0, have = core::memoryPerRank(*impl_->comm);
+  const double indexLimit = std::numeric_limits<int>::max() / 9.0;  // 32-bit local indices, 9 entries per row
+  std::ostringstream why;
+  why << std::setprecision(3);
+  if (perRank > indexLimit)
+    why << perRank << " cells per rank, more than the " << indexLimit << " that 32-bit local indices allow";
+  else if (need > have)
+    why << "at least " << need / 1e9 << " GB per rank, more than this machine's " << have / 1e9 << " GB per rank";
+  if (!why.str().empty())
+    SIGNORINI_USER_ERROR(cause << ": a mesh of " << std::setprecision(4) << globalCells << " cells on "
+                               << impl_->comm->getSize() << " rank(s): " << why.str()
+                               << "; choose a coarser mesh or more ranks");
+}
+
 RunSummary Simulation::run() {
   std::vector<std::shared_ptr<mesh::Forest>> meshes(numSteps(), impl_->initialForest);
   return runPass(meshes, StepHook(), PassOptions());
@@ -498,6 +531,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     columns.push_back("error_l2");
     columns.push_back("error_h1");
   }
+  if (options.reportTransferEnergy)
+    for (const char* c : {"kinetic_energy", "energy_transferred", "kinetic_energy_transferred"}) columns.push_back(c);
   columns.insert(columns.end(), options.extraColumns.begin(), options.extraColumns.end());
   std::unique_ptr<io::CsvWriter> csv;
   if (options.writeCsv)
@@ -537,6 +572,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   }
 
   double tRemesh = 0, tEstimate = 0;  // of the current step
+  std::pair<double, double> transferred = I.energies(*d, *u, *v);  // (kinetic, strain) moved to the current step
   std::vector<RCP<Vector>> carried;   // StepExtras::carry of the previous step
   auto writeOutputs = [&](int step, double t, const solvers::ContactQPResult& qr, double tAssembly, double tContact,
                           double tFree, const StepExtras& extras) {
@@ -560,6 +596,11 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       const auto [l2, h1] = d->assembler->errorNorms(*u, *I.problem->exactSolution, t);
       row.push_back(l2);
       row.push_back(h1);
+    }
+    if (options.reportTransferEnergy) {
+      row.push_back(I.energies(*d, *u, *v).first);
+      row.push_back(transferred.first + transferred.second);
+      row.push_back(transferred.first);
     }
     for (size_t c = 0; c < options.extraColumns.size(); ++c)
       row.push_back(c < extras.columns.size() ? extras.columns[c] : 0.0);
@@ -603,12 +644,22 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       I.newmark->velocityPredictor(*v, *a, *predictors[1]);
       if (n > 1 && meshes[n - 1] != d->forest && !meshes[n - 1]->sameCells(*d->forest)) {
         auto next = I.build(meshes[n - 1], n);
+        if (options.reportTransferEnergy)  // only to recover I_h u and I_h v
+          predictors.push_back(Teuchos::rcp(new Vector(I.newmark->recoveryField(*v, *a), Teuchos::Copy)));
         I.transfer(*d, *next, options.interpolateTransfer, predictors, lambda, carried);
         d = std::move(next);
         u = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
         v = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
         a = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
+        if (options.reportTransferEnergy) {
+          Vector uMoved(d->assembler->ownedMap()), vMoved(d->assembler->ownedMap());
+          I.newmark->stateFromPredictors(*predictors[0], *predictors[1], *predictors[2], uMoved, vMoved);
+          transferred = I.energies(*d, uMoved, vMoved);
+          predictors.resize(2);
+        }
         ++summary.meshChanges;
+      } else if (options.reportTransferEnergy) {
+        transferred = I.energies(*d, *u, *v);
       }
       tRemesh = std::chrono::duration<double>(std::chrono::steady_clock::now() - tR0).count();
       const auto owned = d->assembler->ownedMap();

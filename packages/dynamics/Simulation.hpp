@@ -68,6 +68,10 @@ struct PassOptions {
   std::vector<std::string> extraColumns;  ///< names of StepExtras::columns
   std::string cellFieldName;              ///< name of StepExtras::cellField in Exodus (empty: none)
   bool interpolateTransfer = false;       ///< nodal interpolation instead of the L2 projection
+  /// Step-table columns kinetic_energy, energy_transferred, kinetic_energy_transferred: the energies
+  /// of (I_h u^{n-1}, I_h v^{n-1}) on the mesh of step n (those of step n-1 when the mesh is kept),
+  /// so the transfer's effect on the energy is visible. Costs a third projected field (Newmark::recoveryField).
+  bool reportTransferEnergy = false;
 };
 
 class Simulation {
@@ -98,6 +102,13 @@ class Simulation {
   int numSteps() const;
   RCP<const Comm> comm() const;
   const std::string& outputBase() const;  ///< output folder + "/" + basename
+  /// Throws core::UserError naming \p cause if a step mesh of \p globalCells cells certainly
+  /// cannot fit into this machine's memory or exceeds the 32-bit local indices of p4est and Tpetra
+  /// on a rank. Collective. The memory is a lower bound: 750 bytes per cell times (unknowns per
+  /// node)^2, plus 35 bytes per cell of the \p storedCells that the forests of all steps hold (35-51 measured)
+  /// (measured: 675 bytes per cell on the uniform membrane at 262k cells; 9-15 kB per cell on the
+  /// bar at 9k-147k cells, whose strip factorisation and MueLu grow with the Courant number).
+  void checkMeshFits(double globalCells, const std::string& cause, double storedCells = 0) const;
 
  private:
   struct Impl;

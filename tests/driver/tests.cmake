@@ -218,3 +218,37 @@ signorini_add_driver_test(bad_obstacle_not_a_number EXIT 1
 signorini_add_driver_test(output_exodus_not_renamable EXIT 1
   ARGS --output-dir {OUT} ${decks}/good.xml
   REGEX "cannot rename Exodus II output file '.*good[.]e[.]part'" BLOCK good.e)
+
+# Adaptivity settings that are valid one by one but cannot work together, and meshes that cannot
+# fit (p4est used to abort in malloc, or a uniform run grew until memory ran out).
+signorini_add_driver_test(adaptive_refinement_fraction_zero EXIT 1
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=fixed fraction" --set "Adaptivity/Cycles=2"
+       --set "Adaptivity/Refinement Fraction=0" ${decks}/good.xml
+  REGEX "Adaptivity/Refinement Fraction = 0 refines no cell with Strategy = fixed fraction")
+signorini_add_driver_test(adaptive_maximum_level_not_above_base EXIT 1
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=bulk" --set "Adaptivity/Cycles=2"
+       --set "Mesh/Refinement Level=1" --set "Adaptivity/Maximum Level=1" ${decks}/good.xml
+  REGEX "Adaptivity/Maximum Level = 1 is not above Mesh/Refinement Level = 1")
+signorini_add_driver_test(adaptive_fractions_above_one EXIT 1
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=fixed fraction" --set "Adaptivity/Cycles=2"
+       --set "Adaptivity/Refinement Fraction=0.7" --set "Adaptivity/Coarsening Fraction=0.4" ${decks}/good.xml
+  REGEX "Adaptivity/Coarsening Fraction = 0[.]4 with Refinement Fraction = 0[.]7: together more than all cells")
+signorini_add_driver_test(adaptive_all_cycles_without_exodus EXIT 1
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Write All Cycles=true"
+       --set "Output/Write Exodus=false" ${decks}/good.xml
+  REGEX "Adaptivity/Write All Cycles = true needs Output/Write Exodus = true")
+# Strategy = none ignores the Adaptivity keys the deck sets: a warning names them, the run goes on.
+signorini_add_driver_test(adaptive_keys_without_strategy EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Cycles=3" --set "Adaptivity/Refinement Fraction=0.2" ${decks}/good.xml
+  REGEX "warning: .*Strategy = none .*without effect: Adaptivity/(Cycles, Refinement Fraction|Refinement Fraction, Cycles)\n"
+        "good[.]xml done: 4 steps"
+  FILES good.steps.csv good.e)
+signorini_add_driver_test(mesh_too_many_cells_per_rank EXIT 1
+  ARGS --output-dir {OUT} --set "Mesh/Refinement Level=18" ${decks}/good.xml
+  REGEX "Mesh/Cells X = 4, Cells Y = 4, Refinement Level = 18: a mesh of 1[.]1e[+]12 cells on 2 rank[(]s[)]: .* more than the .* that 32-bit local indices allow")
+signorini_add_driver_test(mesh_too_large_for_memory EXIT 1
+  ARGS --output-dir {OUT} --set "Mesh/Cells X=20000" --set "Mesh/Cells Y=20000" ${decks}/good.xml
+  REGEX "a mesh of 4e[+]08 cells on 2 rank[(]s[)]: at least 150 GB per rank, more than this machine's")
+signorini_add_driver_test(adaptive_uniform_cycles_too_many EXIT 1
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=20" ${decks}/good.xml
+  REGEX "Adaptivity/Cycles = 20 with Strategy = uniform: a mesh of .* cells on 2 rank[(]s[)]")
