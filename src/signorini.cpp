@@ -103,7 +103,9 @@ int main(int argc, char** argv) {
       if (rank == 0) std::cerr << "signorini: " << path << ": solver failure: " << e.what() << std::endl;
     } catch (std::exception& e) {  // a bug or a library error: still a clean non-zero exit
       ++failures;
-      if (rank == 0) std::cerr << "signorini: " << path << ": unexpected error: " << e.what() << std::endl;
+      if (rank == 0)
+        std::cerr << "signorini: " << path << ": unexpected error: " << signorini::core::withoutSourceLocation(e.what())
+                  << std::endl;
     }
   }
   if (failures) out << "signorini: " << failures << " of " << decks.size() << " deck(s) failed" << std::endl;

@@ -21,6 +21,23 @@ class SolverError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// \p what without a leading "<source file>:<line>:" line and the "Throw number = n" and "Throw
+/// test that evaluated to true: ..." paragraphs that Teuchos' exception macros put before the
+/// message: the user needs the message, not the library's source location.
+inline std::string withoutSourceLocation(const std::string& what) {
+  const auto newline = what.find('\n');
+  if (newline == std::string::npos || newline == 0 || what[newline - 1] != ':') return what;
+  const std::string first = what.substr(0, newline);
+  if (first.find(".cpp:") == std::string::npos && first.find(".hpp:") == std::string::npos) return what;
+  auto start = what.find_first_not_of('\n', newline);
+  while (start != std::string::npos &&
+         (what.compare(start, 15, "Throw number = ") == 0 || what.compare(start, 35, "Throw test that evaluated to true: ") == 0)) {
+    const auto end = what.find("\n\n", start);
+    start = end == std::string::npos ? end : what.find_first_not_of('\n', end);
+  }
+  return start == std::string::npos ? what : what.substr(start);
+}
+
 }  // namespace signorini::core
 
 /// Throw a signorini::core::UserError whose message is built with operator<<.

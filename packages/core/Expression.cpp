@@ -1,6 +1,7 @@
 #include "Expression.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <muParser.h>
 
 #include "Error.hpp"
@@ -64,6 +65,16 @@ double Expression::operator()(double x, double y, double t) const {
   impl_->y = y;
   impl_->t = t;
   return impl_->parser.Eval();
+}
+
+double Expression::sample(double x, double y, double t, std::string& bad) const {
+  const double v = (*this)(x, y, t);
+  if (!std::isfinite(v) && bad.empty()) {
+    std::ostringstream os;
+    os << where_ << ": '" << text_ << "' evaluates to " << v << " at (" << x << ", " << y << "), t = " << t;
+    bad = os.str();
+  }
+  return v;
 }
 
 ExpressionList::ExpressionList(const std::string& text, const std::string& where, int components) : text_(text) {

@@ -21,6 +21,11 @@ class Expression {
   ~Expression();
 
   double operator()(double x, double y, double t) const;
+  /// f(x, y, t); the first value that is not a finite number is described in \p bad ("<where>:
+  /// evaluates to nan at (x, y), t = ..."), for core::throwFirstUserError() after the sampling.
+  double sample(double x, double y, double t, std::string& bad) const;
+  /// The deck key the expression came from ("Problem/Body Force (component 2)").
+  const std::string& where() const { return where_; }
   /// True if the expression uses none of x, y, t (evaluated once).
   bool isConstant() const { return constant_; }
   /// True if the expression does not use t.

@@ -26,6 +26,22 @@ double memoryPerRank(const Comm& comm) {
   return bytes / ranksOnNode;
 }
 
+void throwFirstUserError(const Comm& comm, const std::string& localMessage) {
+  MPI_Comm c = rawMpiComm(comm);
+  int rank = 0, size = 1;
+  MPI_Comm_rank(c, &rank);
+  MPI_Comm_size(c, &size);
+  int mine = localMessage.empty() ? size : rank, first = size;
+  MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, c);
+  if (first == size) return;
+  std::string message = rank == first ? localMessage : std::string();
+  int length = static_cast<int>(message.size());
+  MPI_Bcast(&length, 1, MPI_INT, first, c);
+  message.resize(static_cast<size_t>(length));
+  MPI_Bcast(message.data(), length, MPI_CHAR, first, c);
+  throw UserError(message);
+}
+
 void onRootCollectively(const Comm& comm, const std::function<void()>& action) {
   MPI_Comm c = rawMpiComm(comm);
   int rank = 0;

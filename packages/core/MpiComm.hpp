@@ -2,6 +2,7 @@
 /// \file MpiComm.hpp
 /// The raw MPI communicator behind a Teuchos communicator (p4est and a few collectives need it).
 #include <functional>
+#include <string>
 #include <vector>
 
 #include <mpi.h>
@@ -17,6 +18,10 @@ MPI_Comm rawMpiComm(const Comm& comm);
 /// rank's: a core::UserError thrown by \p action is rethrown on every rank with rank 0's message,
 /// any other std::exception as std::runtime_error. Collective: call it on every rank.
 void onRootCollectively(const Comm& comm, const std::function<void()>& action);
+
+/// Makes a user error found on some ranks every rank's: if any rank passes a non-empty \p localMessage,
+/// every rank throws core::UserError with the message of the lowest such rank. Collective.
+void throwFirstUserError(const Comm& comm, const std::string& localMessage);
 
 /// The physical memory of this node [bytes] divided by the ranks of \p comm on it
 /// (MPI_COMM_TYPE_SHARED): what one rank can use. Collective.

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
@@ -61,8 +62,8 @@ std::string describeValidator(const Teuchos::ParameterEntry& e) {
     return "one of " + s;
   }
   if (auto d = Teuchos::rcp_dynamic_cast<const Teuchos::EnhancedNumberValidator<double>>(v); !d.is_null()) {
-    std::ostringstream os;
-    os << "in [" << d->getMin() << ", " << d->getMax() << "]";
+    std::ostringstream os;  // enough digits for bounds such as 0.4999999
+    os << std::setprecision(10) << "in [" << d->getMin() << ", " << d->getMax() << "]";
     return os.str();
   }
   if (auto i = Teuchos::rcp_dynamic_cast<const Teuchos::EnhancedNumberValidator<int>>(v); !i.is_null()) {
@@ -278,9 +279,13 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
     else d->set(key, value);
     return;
   }
-  if (!v->isParameter(key) || v->isSublist(key)) {
+  if (v->isSublist(key))
+    SIGNORINI_USER_ERROR("--set '" << spec << "': '" << join(walked, key) << "' is a sublist: set one of its entries, e.g. --set '"
+                                   << join(walked, key) << "/<key>=value' (--print-parameters lists them)");
+  if (!v->isParameter(key)) {
     const std::string guess = closestName(key, names(*v));
-    SIGNORINI_USER_ERROR("--set '" << spec << "': unknown parameter '" << key << "' in sublist '" << walked << "'"
+    SIGNORINI_USER_ERROR("--set '" << spec << "': unknown parameter '" << key << "' "
+                                   << (walked.empty() ? std::string("at the top level") : "in sublist '" + walked + "'")
                                    << (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
   }
   const auto& t = v->getEntry(key).getAny().type();

@@ -10,6 +10,7 @@
 
 #include "AssemblyTools.hpp"
 #include "Error.hpp"
+#include "MpiComm.hpp"
 #include "Q1Kernels.hpp"
 
 namespace signorini::fem {
@@ -143,14 +144,16 @@ void ElasticityAssembler::assembleLoad(const core::ExpressionList& f, double t, 
   {
     auto h = Kokkos::create_mirror_view(fq);
     const auto& X = mesh_.cornerCoordsHost;
+    std::string bad;  // the first sample that is not a finite number
     for (LO e = 0; e < nc; ++e)
       for (int q = 0; q < 4; ++q) {
         double N[4], ds[4], dr[4];
         q1Shape(gauss2Point(q & 1), gauss2Point(q >> 1), N, ds, dr);
         double x = 0, y = 0;
         for (int c = 0; c < 4; ++c) x += N[c] * X(e, c, 0), y += N[c] * X(e, c, 1);
-        for (int c = 0; c < 2; ++c) h(e, q, c) = f[c](x, y, t);
+        for (int c = 0; c < 2; ++c) h(e, q, c) = f[c].sample(x, y, t, bad);
       }
+    if (!f.isConstant()) core::throwFirstUserError(*mesh_.comm(), bad);
     Kokkos::deep_copy(fq, h);
   }
   Vector overlap(overlapMap_);
@@ -195,6 +198,7 @@ void ElasticityAssembler::addBoundaryLoad(const core::ExpressionList& q, double 
   Kokkos::View<double* [2][2], DeviceType> qg("qg", ne);
   Kokkos::View<double*, DeviceType> len("len", ne);
   Kokkos::View<LO* [2], DeviceType> nodes("nodes", ne);
+  std::string bad;
   {
     auto qh = Kokkos::create_mirror_view(qg);
     auto lh = Kokkos::create_mirror_view(len);
@@ -204,11 +208,12 @@ void ElasticityAssembler::addBoundaryLoad(const core::ExpressionList& q, double 
       for (int g = 0; g < 2; ++g) {
         const double s = gauss2Point(g);
         for (int c = 0; c < 2; ++c)
-          qh(k, g, c) = q[c]((1 - s) * be.x[0][0] + s * be.x[1][0], (1 - s) * be.x[0][1] + s * be.x[1][1], t);
+          qh(k, g, c) = q[c].sample((1 - s) * be.x[0][0] + s * be.x[1][0], (1 - s) * be.x[0][1] + s * be.x[1][1], t, bad);
         nh(k, g) = be.node[g];
       }
       lh(k) = be.length();
     }
+    core::throwFirstUserError(*mesh_.comm(), bad);
     Kokkos::deep_copy(qg, qh);
     Kokkos::deep_copy(len, lh);
     Kokkos::deep_copy(nodes, nh);

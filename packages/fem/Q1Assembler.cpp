@@ -9,6 +9,7 @@
 
 #include "AssemblyTools.hpp"
 #include "Error.hpp"
+#include "MpiComm.hpp"
 #include "Q1Kernels.hpp"
 
 namespace signorini::fem {
@@ -117,6 +118,7 @@ Kokkos::View<double* [4], DeviceType> sampleAtGaussPoints(const mesh::Q1Mesh& me
   Kokkos::View<double* [4], DeviceType> fq("fq", nc);
   auto h = Kokkos::create_mirror_view(fq);
   const auto& X = mesh.cornerCoordsHost;
+  std::string bad;  // the first sample that is not a finite number (constants were checked when parsed)
   for (LO e = 0; e < nc; ++e)
     for (int q = 0; q < 4; ++q) {
       if (f.isConstant()) {
@@ -127,8 +129,9 @@ Kokkos::View<double* [4], DeviceType> sampleAtGaussPoints(const mesh::Q1Mesh& me
       q1Shape(gauss2Point(q & 1), gauss2Point(q >> 1), N, ds, dr);
       double x = 0, y = 0;
       for (int c = 0; c < 4; ++c) x += N[c] * X(e, c, 0), y += N[c] * X(e, c, 1);
-      h(e, q) = f(x, y, t);
+      h(e, q) = f.sample(x, y, t, bad);
     }
+  if (!f.isConstant()) core::throwFirstUserError(*mesh.comm(), bad);
   Kokkos::deep_copy(fq, h);
   return fq;
 }
@@ -175,6 +178,7 @@ void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned 
   Kokkos::View<double* [2], DeviceType> qg("qg", ne);
   Kokkos::View<double*, DeviceType> len("len", ne);
   Kokkos::View<LO* [2], DeviceType> nodes("nodes", ne);
+  std::string bad;
   {
     auto qh = Kokkos::create_mirror_view(qg);
     auto lh = Kokkos::create_mirror_view(len);
@@ -183,11 +187,12 @@ void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned 
       const auto& be = mesh_.boundaryEdges()[ids[k]];
       for (int g = 0; g < 2; ++g) {
         const double s = gauss2Point(g);
-        qh(k, g) = q((1 - s) * be.x[0][0] + s * be.x[1][0], (1 - s) * be.x[0][1] + s * be.x[1][1], t);
+        qh(k, g) = q.sample((1 - s) * be.x[0][0] + s * be.x[1][0], (1 - s) * be.x[0][1] + s * be.x[1][1], t, bad);
         nh(k, g) = be.node[g];
       }
       lh(k) = be.length();
     }
+    core::throwFirstUserError(*mesh_.comm(), bad);
     Kokkos::deep_copy(qg, qh);
     Kokkos::deep_copy(len, lh);
     Kokkos::deep_copy(nodes, nh);

@@ -58,7 +58,7 @@ Teuchos::ParameterList readDeckFile(const std::string& path) {
   } catch (core::UserError&) {
     throw;
   } catch (std::exception& e) {
-    std::string what = e.what();
+    std::string what = core::withoutSourceLocation(e.what());
     const auto pos = what.find_last_of('\n', what.size() > 1 ? what.size() - 2 : 0);
     if (what.size() > 300 && pos != std::string::npos) what = what.substr(pos + 1);
     SIGNORINI_USER_ERROR(path << ": malformed XML deck: " << what);
