@@ -1,12 +1,15 @@
 // Refinement, balance (Algorithm 5.2) and temporal regularisation (Algorithm 5.3) on forests.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
+#include <p4est_algorithms.h>
 #include <p4est_bits.h>
 #include <p4est_lnodes.h>
 
 #include "../TestMesh.hpp"
+#include "BruteForceMeshChecks.hpp"
 #include "ForestOverlap.hpp"
 #include "TemporalRegularisation.hpp"
 
@@ -19,8 +22,14 @@ using test::refineAt;
 TEST(Balance, LeavesAtMostOneHangingNodePerEdge) {
   test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 1, 1, 1);
   refineAt(*tm.forest, 0.3, 0.3, 6);  // a deep local refinement: multiple hanging nodes before balancing
+  const mesh::Forest unbalanced(*tm.forest);
+  EXPECT_GT(test::maxHangingNodesPerEdge(unbalanced), 1);
   tm.forest->balance();
   tm.forest->partition();
+  // Counted by brute force over all cell corners: one hanging node (at the midpoint) at most, and
+  // balancing only refined.
+  EXPECT_EQ(test::maxHangingNodesPerEdge(*tm.forest), 1);
+  EXPECT_TRUE(test::containsRefinement(*tm.forest, unbalanced));
   // p4est lnodes (degree 1) accepts only 2:1 balanced forests and encodes one hanging node per
   // face; building the Q1 numbering checks the hanging-corner structure.
   const auto& m = tm.build();
@@ -38,6 +47,7 @@ TEST(Balance, LeavesAtMostOneHangingNodePerEdge) {
 
 TEST(TemporalRegularisation, NoCellIsMoreThanOneLevelCoarserThanItsNeighbourSteps) {
   test::TestMesh a(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
+  ASSERT_EQ(a.coarse->numTrees(), 1);
   std::vector<std::unique_ptr<mesh::Forest>> steps;
   for (int n = 0; n < 4; ++n) steps.push_back(std::make_unique<mesh::Forest>(*a.forest));
   // Step 1 is refined deeply near a point, step 3 near another: steps 0, 2 are coarse there.
@@ -47,16 +57,82 @@ TEST(TemporalRegularisation, NoCellIsMoreThanOneLevelCoarserThanItsNeighbourStep
     f->balance();
     f->partition();
   }
-  EXPECT_GE(mesh::maxLevelExcess(*steps[1], *steps[2]), 2);
+  std::vector<std::unique_ptr<mesh::Forest>> before;
+  for (auto& f : steps) before.push_back(std::make_unique<mesh::Forest>(*f));
+  // Violations in both directions: step 2 is coarse where step 1 is fine (forward), steps 0 and 2
+  // are coarse where steps 1 and 3 are fine (backward).
+  EXPECT_GE(test::maxCoarserThanOverlapping(*steps[2], *steps[1]), 2);
+  EXPECT_GE(test::maxCoarserThanOverlapping(*steps[0], *steps[1]), 2);
+  EXPECT_GE(test::maxCoarserThanOverlapping(*steps[2], *steps[3]), 2);
+  EXPECT_EQ(mesh::maxLevelExcess(*steps[1], *steps[2]), test::maxCoarserThanOverlapping(*steps[2], *steps[1]));
   std::vector<mesh::Forest*> seq;
   for (auto& f : steps) seq.push_back(f.get());
   mesh::regulariseSequence(seq);
   for (size_t n = 0; n + 1 < steps.size(); ++n) {
-    EXPECT_LE(mesh::maxLevelExcess(*steps[n], *steps[n + 1]), 1) << "forward " << n;
-    EXPECT_LE(mesh::maxLevelExcess(*steps[n + 1], *steps[n]), 1) << "backward " << n;
+    EXPECT_LE(test::maxCoarserThanOverlapping(*steps[n + 1], *steps[n]), 1) << "forward " << n;
+    EXPECT_LE(test::maxCoarserThanOverlapping(*steps[n], *steps[n + 1]), 1) << "backward " << n;
   }
-  // Regularising refines only: every step still contains its own refinement.
-  EXPECT_GE(steps[1]->numGlobalCells(), a.forest->numGlobalCells());
+  // Regularising refines only and keeps the 2:1 balance.
+  for (size_t n = 0; n < steps.size(); ++n) {
+    EXPECT_TRUE(test::containsRefinement(*steps[n], *before[n])) << "step " << n;
+    EXPECT_LE(test::maxHangingNodesPerEdge(*steps[n]), 1) << "step " << n;
+  }
+}
+
+// Six steps of one tree, each refined deeply around a point that moves from step to step (with
+// extra refinements chosen by a hash of the cell, the same on any partition), then balanced:
+// neighbouring steps violate Algorithm 5.3's condition both ways. After regulariseSequence, every
+// step contains its own refinement, is 2:1 balanced, and no cell is more than one level coarser
+// than an overlapping cell of either neighbouring step (all by brute force).
+TEST(TemporalRegularisation, MovingRefinementOverSixStepsIsRegularisedBothWays) {
+  test::TestMesh a(0.0, 1.0, 0.0, 1.0, 4, 4, 1);
+  ASSERT_EQ(a.coarse->numTrees(), 1);
+  auto refineAround = [](double px, double py, unsigned seed) {
+    return [=](int, const p4est_quadrant_t& q) {
+      const double len = static_cast<double>(P4EST_QUADRANT_LEN(q.level)) / P4EST_ROOT_LEN;
+      const double x = q.x / static_cast<double>(P4EST_ROOT_LEN), y = q.y / static_cast<double>(P4EST_ROOT_LEN);
+      const double distance = std::hypot(std::max({x - px, 0.0, px - x - len}), std::max({y - py, 0.0, py - y - len}));
+      unsigned h = seed * 2654435761u ^ (static_cast<unsigned>(q.x) * 73856093u) ^ (static_cast<unsigned>(q.y) * 19349663u) ^
+                   static_cast<unsigned>(q.level);
+      h ^= h >> 13;
+      h *= 0x5bd1e995u;
+      h ^= h >> 15;
+      return q.level < 9 && (distance == 0.0 || (h % 3 == 0 && distance < 2 * len));
+    };
+  };
+  constexpr int numSteps = 6;
+  std::vector<std::unique_ptr<mesh::Forest>> steps;
+  for (int n = 0; n < numSteps; ++n) {
+    auto f = std::make_unique<mesh::Forest>(*a.forest);
+    const double px = 0.12 + 0.15 * n, py = 0.5 + 0.25 * std::sin(1.3 * n);
+    for (int round = 0; round < 6; ++round) f->refineIf(refineAround(px, py, 7u * n + round));
+    f->balance();
+    f->partition();
+    ASSERT_LE(test::maxHangingNodesPerEdge(*f), 1) << "step " << n;
+    steps.push_back(std::move(f));
+  }
+  std::vector<std::unique_ptr<mesh::Forest>> before;
+  for (auto& f : steps) before.push_back(std::make_unique<mesh::Forest>(*f));
+  for (int n = 0; n + 1 < numSteps; ++n) {
+    const int forward = test::maxCoarserThanOverlapping(*steps[n + 1], *steps[n]);
+    const int backward = test::maxCoarserThanOverlapping(*steps[n], *steps[n + 1]);
+    EXPECT_GE(forward, 2) << "forward " << n;
+    EXPECT_GE(backward, 2) << "backward " << n;
+    // The project's overlap-based measure agrees with the brute force.
+    EXPECT_EQ(mesh::maxLevelExcess(*steps[n], *steps[n + 1]), forward) << "forward " << n;
+    EXPECT_EQ(mesh::maxLevelExcess(*steps[n + 1], *steps[n]), backward) << "backward " << n;
+  }
+  std::vector<mesh::Forest*> seq;
+  for (auto& f : steps) seq.push_back(f.get());
+  mesh::regulariseSequence(seq);
+  for (int n = 0; n < numSteps; ++n) {
+    EXPECT_TRUE(test::containsRefinement(*steps[n], *before[n])) << "step " << n;
+    // Each step was coarse where a neighbour was fine, so regularising had to refine it.
+    EXPECT_FALSE(test::containsRefinement(*before[n], *steps[n])) << "step " << n;
+    EXPECT_LE(test::maxHangingNodesPerEdge(*steps[n]), 1) << "step " << n;
+    if (n > 0) EXPECT_LE(test::maxCoarserThanOverlapping(*steps[n], *steps[n - 1]), 1) << "against step " << n - 1;
+    if (n + 1 < numSteps) EXPECT_LE(test::maxCoarserThanOverlapping(*steps[n], *steps[n + 1]), 1) << "against step " << n + 1;
+  }
 }
 
 // The one-rank merge that Algorithm 5.3 uses gives, cell by cell, the finest overlapping level
@@ -221,6 +297,74 @@ TEST(Forest, BalancedRefinementEqualsRefinementThenP4estBalance) {
     EXPECT_TRUE(rebalanced.sameCells(viaNodes)) << "seed " << seed;
   }
   EXPECT_GT(forced, 0);  // the flags did force balancing refinements
+}
+
+// The compact form (levels in curve order) of a graded forest of several trees, partitioned over
+// the ranks: the same cells and partition as the p4est, about one byte per cell, and expanded
+// again exactly the p4est it was (every leaf, in order, on every rank), usable as before.
+TEST(Forest, CompactFormKeepsTheCellsAndThePartition) {
+  test::TestMesh a(0.0, 1.0, 0.0, 1.0, 3, 2, 1);  // six trees
+  refineAt(*a.forest, 0.999, 0.999, 5);
+  refineAt(*a.forest, 0.3, 0.6, 3);
+  a.forest->balance();
+  a.forest->partition();
+  const auto leaves = test::gatherLeaves(*a.forest);
+  mesh::Forest f(*a.forest);
+  const size_t expandedBytes = f.bytes();
+  f.compact();
+  ASSERT_TRUE(f.isCompact());
+  EXPECT_EQ(f.numGlobalCells(), a.forest->numGlobalCells());
+  EXPECT_EQ(f.numLocalCells(), a.forest->numLocalCells());
+  EXPECT_LE(f.bytes(), static_cast<size_t>(f.numLocalCells()) + 512);  // levels, partition, tree offsets
+  EXPECT_GT(expandedBytes, 20 * static_cast<size_t>(f.numLocalCells()));
+  EXPECT_TRUE(f.sameCells(*a.forest));
+  EXPECT_TRUE(a.forest->sameCells(f));
+  mesh::Forest copy(f);  // a copy of a compact forest is compact
+  EXPECT_TRUE(copy.isCompact());
+  EXPECT_TRUE(copy.sameCells(f));
+  mesh::Forest other(*a.forest);  // one cell more refined: not the same, in either form
+  refineAt(other, 0.01, 0.01, 1);
+  other.partition();
+  other.compact();
+  EXPECT_FALSE(other.sameCells(f));
+  f.expand();
+  ASSERT_FALSE(f.isCompact());
+  const auto again = test::gatherLeaves(f);
+  ASSERT_EQ(again.size(), leaves.size());
+  for (size_t i = 0; i < leaves.size(); ++i)
+    ASSERT_TRUE(again[i].tree == leaves[i].tree && again[i].level == leaves[i].level && again[i].x0 == leaves[i].x0 &&
+                again[i].y0 == leaves[i].y0)
+        << "leaf " << i;
+  EXPECT_EQ(f.numLocalCells(), a.forest->numLocalCells());  // the same partition
+  EXPECT_TRUE(p4est_is_valid(f.p4est()));
+  f.refineMarked(std::vector<char>(f.numLocalCells(), 1));  // and usable like any forest
+  EXPECT_EQ(f.numGlobalCells(), 4 * a.forest->numGlobalCells());
+}
+
+// Algorithm 5.3 on compact meshes (expanded two at a time by the sweeps) refines exactly as on
+// expanded ones, and leaves the meshes compact.
+TEST(TemporalRegularisation, CompactMeshesAreRegularisedLikeExpandedOnes) {
+  test::TestMesh a(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
+  std::vector<std::unique_ptr<mesh::Forest>> expanded, compact;
+  for (int n = 0; n < 5; ++n) {
+    auto f = std::make_unique<mesh::Forest>(*a.forest);
+    refineAt(*f, 0.1 + 0.2 * n, 0.3, n % 2 ? 4 : 1);
+    f->balance();
+    f->partition();
+    compact.push_back(std::make_unique<mesh::Forest>(*f));
+    compact.back()->compact();
+    expanded.push_back(std::move(f));
+  }
+  std::vector<mesh::Forest*> e, c;
+  for (int n = 0; n < 5; ++n) e.push_back(expanded[n].get()), c.push_back(compact[n].get());
+  const long long before = expanded[0]->numGlobalCells() + expanded[2]->numGlobalCells();
+  mesh::regulariseSequence(e);
+  mesh::regulariseSequence(c);
+  EXPECT_GT(expanded[0]->numGlobalCells() + expanded[2]->numGlobalCells(), before);  // something was refined
+  for (int n = 0; n < 5; ++n) {
+    EXPECT_TRUE(compact[n]->isCompact()) << "step " << n;
+    EXPECT_TRUE(compact[n]->sameCells(*expanded[n])) << "step " << n;
+  }
 }
 
 }  // namespace

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Checks the meshes of real adaptive runs with pure geometry (tools/check_adaptive_meshes.py,
+# independent of the program and of p4est): at most one hanging node per cell edge (Algorithm 5.2)
+# on every step's mesh, and no cell more than one level coarser than an overlapping cell of the
+# previous or the next step's mesh (Algorithm 5.3). The membrane deck to t = 0.15 (graded meshes;
+# contact from t = 0.0525), every step written so that written meshes are consecutive steps:
+#   1. the paper's settings, 5 cycles (4 levels of refinement);
+#   2. with coarsening (Coarsening Fraction 0.3), 3 cycles: cycle 2's meshes must have cells
+#      coarser than cycle 1's at the same step (the control without coarsening must have none);
+#   3. Maximum Level = 2, 4 cycles: no cell above level 2, and level 2 is reached.
+# Usage: adaptive_meshes.sh SIGNORINI SOURCE_DIR WORK_DIR
+set -euo pipefail
+signorini=$1 src=$2 work=$3
+check="/usr/bin/python3 $src/tools/check_adaptive_meshes.py"
+rm -rf "$work" && mkdir -p "$work"
+run() {  # basename, then --set arguments
+  local name=$1
+  shift
+  "$signorini" --output-dir "$work" --set "Output/Basename=$name" --set 'Time Integration/Final Time=0.15' \
+    --set 'Output/Exodus Interval=1' "$@" "$src/inputs/membrane.xml" > "$work/$name.log" 2>&1 ||
+    { cat "$work/$name.log"; exit 1; }
+}
+
+run paper --set 'Adaptivity/Cycles=5'
+$check "$work/paper"
+
+run coarsening --set 'Adaptivity/Cycles=3' --set 'Adaptivity/Coarsening Fraction=0.3' --set 'Adaptivity/Write All Cycles=true'
+$check "$work/coarsening" --coarser-than "$work/coarsening.cycle1"
+run refining --set 'Adaptivity/Cycles=3' --set 'Adaptivity/Write All Cycles=true'
+if $check "$work/refining" --coarser-than "$work/refining.cycle1" > "$work/control.log"; then
+  echo "control failed: without coarsening, cells coarser than in the previous cycle were reported"
+  cat "$work/control.log"
+  exit 1
+fi
+
+run capped --set 'Adaptivity/Cycles=4' --set 'Adaptivity/Maximum Level=2'
+$check "$work/capped" --max-level 2 | tee "$work/capped.check"
+grep -q "largest level 2 " "$work/capped.check" || { echo "Maximum Level = 2 was not reached"; exit 1; }

@@ -1,0 +1,213 @@
+#!/usr/bin/python3
+"""Checks the meshes of an Exodus series (<base>.e, <base>.e-s.NNNN) written by an adaptive run with
+nothing but geometry (independent of the program and of p4est):
+  - Algorithm 5.2: no cell edge has more than one hanging node (a corner of another cell strictly
+    inside the edge);
+  - Algorithm 5.3: no cell of a mesh is more than one level coarser than a cell of the next written
+    mesh that it overlaps, and the other way round (forward and backward);
+  - the written meshes are those of consecutive time steps: every step of <base>.steps.csv is
+    written (run with Output/Exodus Interval = 1), with its number of cells; without the table, the
+    written times must be equally spaced.
+The meshes must be dyadic refinements of one uniform grid of axis-parallel rectangles (the
+rectangle decks). All corners then lie on the lattice of the finest cell of the series; a cell's
+level is fixed by its size on that lattice (the `level` variable must agree up to a constant), and
+two cells overlap with positive area exactly when they share a lattice square (a "pixel").
+Options: --max-level N: no cell's `level` above N (the largest level found is printed);
+--coarser-than BASE2: some step has cells coarser than the mesh of BASE2's series at the same time
+(a run with coarsening against its previous cycle, Adaptivity/Write All Cycles).
+Prints a summary; exit status 1 on any violation.
+Usage: check_adaptive_meshes.py BASE [--every N] [--max-level N] [--coarser-than BASE2] (--every N
+checks only every N-th written mesh: the kept meshes are then not consecutive steps, which the
+checker must report)."""
+import argparse
+import glob
+import os
+import sys
+
+import netCDF4
+import numpy as np
+
+parser = argparse.ArgumentParser()
+parser.add_argument("base")
+parser.add_argument("--every", type=int, default=1, help="keep only every N-th written mesh")
+parser.add_argument("--max-level", type=int, help="no cell's level variable above this")
+parser.add_argument("--coarser-than", metavar="BASE2", help="expect cells coarser than BASE2's at the same time")
+args = parser.parse_args()
+
+
+def series(base):
+    files = sorted(glob.glob(base + ".e") + glob.glob(base + ".e-s.*"),
+                   key=lambda f: int(f.rsplit(".", 1)[1]) if ".e-s." in f else 0)
+    if not files:
+        sys.exit(f"no Exodus files {base}.e*")
+    return files
+
+
+def element_variable(d, name):
+    """The element variable `name` at the file's first time (block 1), or None."""
+    if "name_elem_var" not in d.variables:
+        return None
+    names = [b"".join(n).decode().strip("\x00").strip() for n in d["name_elem_var"][:].data]
+    return d[f"vals_elem_var{names.index(name) + 1}eb1"][0] if name in names else None
+
+
+def read(files):
+    """Per file: times, cell corner coordinates (cells x 4), level variable."""
+    out = []
+    for f in files:
+        with netCDF4.Dataset(f) as d:
+            x, y = np.asarray(d["coordx"][:]), np.asarray(d["coordy"][:])
+            blocks = sorted(v for v in d.variables if v.startswith("connect"))
+            conn = np.concatenate([np.asarray(d[b][:]) - 1 for b in blocks])
+            level = element_variable(d, "level") if len(blocks) == 1 else None
+            out.append({"file": os.path.basename(f), "times": np.asarray(d["time_whole"][:]),
+                        "x": x[conn], "y": y[conn], "level": None if level is None else np.asarray(level)})
+    return out
+
+
+meshes = read(series(args.base)[::args.every])
+others = read(series(args.coarser_than)) if args.coarser_than else []
+
+violations = []
+
+# The common lattice: origin at the lower left corner, spacing the finest cell's sides.
+x0 = min(m["x"].min() for m in meshes + others)
+y0 = min(m["y"].min() for m in meshes + others)
+hx = min((m["x"].max(1) - m["x"].min(1)).min() for m in meshes + others)
+hy = min((m["y"].max(1) - m["y"].min(1)).min() for m in meshes + others)
+
+
+def on_lattice(v, origin, h):
+    i = np.rint((v - origin) / h).astype(np.int64)
+    if np.abs(origin + i * h - v).max() > 1e-6 * h:
+        sys.exit("corners off the lattice of the finest cell: not a dyadic refinement of a uniform grid")
+    return i
+
+
+for m in meshes + others:
+    i, j = on_lattice(m["x"], x0, hx), on_lattice(m["y"], y0, hy)
+    m["i0"], m["j0"] = i.min(1), j.min(1)
+    wx, wy = i.max(1) - m["i0"], j.max(1) - m["j0"]
+    # Axis-parallel rectangles: the corners are (i0 or i0 + wx, j0 or j0 + wy), all four of them.
+    di, dj = i - m["i0"][:, None], j - m["j0"][:, None]
+    at_side = ((di == 0) | (di == wx[:, None])) & ((dj == 0) | (dj == wy[:, None]))
+    which = np.sort((di == wx[:, None]) * 1 + (dj == wy[:, None]) * 2, axis=1)
+    if not at_side.all() or np.any(which != [0, 1, 2, 3]):
+        sys.exit(f"{m['file']}: a cell that is not an axis-parallel rectangle")
+    if np.any(wx != wy):
+        sys.exit(f"{m['file']}: cells refined differently in x and y")
+    m["w"] = wx
+    if np.any(m["w"] & (m["w"] - 1)):
+        sys.exit(f"{m['file']}: a cell whose size is not a power of two of the finest")
+nx = max((m["i0"] + m["w"]).max() for m in meshes + others)
+ny = max((m["j0"] + m["w"]).max() for m in meshes + others)
+largest = int(np.log2(max(m["w"].max() for m in meshes + others)))
+for m in meshes + others:
+    m["geometric_level"] = largest - np.rint(np.log2(m["w"])).astype(np.int64)  # 0: the series' largest cells
+
+# The `level` variable must be the geometric level up to one constant for the whole series.
+offsets = {int(o) for m in meshes + others if m["level"] is not None for o in np.unique(np.rint(m["level"]) - m["geometric_level"])}
+if len(offsets) > 1:
+    violations.append(f"the `level` variable differs from the cell sizes' levels by {sorted(offsets)}")
+
+
+def pixel_levels(m):
+    """Per lattice square: the level of the cell covering it; every square covered exactly once."""
+    levels = np.full((nx, ny), -1, dtype=np.int64)
+    covered = np.zeros((nx, ny), dtype=np.int64)
+    for i, j, w, lev in zip(m["i0"], m["j0"], m["w"], m["geometric_level"]):
+        levels[i:i + w, j:j + w] = lev
+        covered[i:i + w, j:j + w] += 1
+    if np.any(covered != 1):
+        violations.append(f"{m['file']}: the cells do not tile the domain")
+    return levels
+
+
+def max_hanging_nodes_per_edge(m):
+    """Largest number of cell corners strictly inside one cell edge."""
+    corner = np.zeros((nx + 1, ny + 1), dtype=np.int64)
+    for di in (0, 1):
+        for dj in (0, 1):
+            corner[m["i0"] + di * m["w"], m["j0"] + dj * m["w"]] = 1
+    # along_x[i, j]: corners (i', j) with i' < i; along_y[i, j]: corners (i, j') with j' < j.
+    along_x = np.vstack([np.zeros((1, ny + 1), dtype=np.int64), np.cumsum(corner, axis=0)])
+    along_y = np.hstack([np.zeros((nx + 1, 1), dtype=np.int64), np.cumsum(corner, axis=1)])
+    i0, j0, w = m["i0"], m["j0"], m["w"]
+    inside = [along_x[i0 + w, j] - along_x[i0 + 1, j] for j in (j0, j0 + w)]   # bottom, top
+    inside += [along_y[i, j0 + w] - along_y[i, j0 + 1] for i in (i0, i0 + w)]  # left, right
+    return int(max(c.max() for c in inside)), int(sum((c == 1).sum() for c in inside))
+
+
+# The written meshes must be those of consecutive steps.
+times = np.concatenate([m["times"] for m in meshes])
+table = args.base + ".steps.csv"
+if os.path.exists(table):
+    steps = np.genfromtxt(table, delimiter=",", names=True)
+    step_times, step_cells = np.atleast_1d(steps["t"]), np.atleast_1d(steps["cells"])
+    if len(times) != len(step_times) or np.abs(times - step_times).max() > 1e-9 * max(1.0, np.abs(step_times).max()):
+        violations.append(f"the written times are not the {len(step_times)} steps of {os.path.basename(table)} "
+                          f"({len(times)} written)")
+    else:
+        cells = np.concatenate([np.full(len(m["times"]), len(m["w"])) for m in meshes])
+        if np.any(cells != step_cells):
+            violations.append(f"written cells differ from the step table's at t = {times[cells != step_cells][0]:.6g}")
+else:
+    gaps = np.diff(times)
+    if len(gaps) and (gaps.min() <= 0 or gaps.max() - gaps.min() > 1e-9 * gaps.max()):
+        violations.append("the written times are not equally spaced")
+
+most_hanging, edges_with_one = 0, 0
+for m in meshes:
+    hanging, ones = max_hanging_nodes_per_edge(m)
+    most_hanging, edges_with_one = max(most_hanging, hanging), edges_with_one + ones
+    if hanging > 1:
+        violations.append(f"{m['file']} (t = {m['times'][0]:.6g}): an edge with {hanging} hanging nodes")
+
+# Per pixel both meshes' levels: a cell K of one mesh and K' of the other overlap exactly when they
+# share a pixel, so max(level(K') - level(K)) over overlapping pairs is the largest pixel difference.
+forward = backward = -10**9
+previous = pixel_levels(meshes[0])
+for a, b in zip(meshes, meshes[1:]):
+    current = pixel_levels(b)
+    coarser_forward = int((previous - current).max())   # cells of the later mesh vs the earlier's
+    coarser_backward = int((current - previous).max())  # cells of the earlier mesh vs the later's
+    forward, backward = max(forward, coarser_forward), max(backward, coarser_backward)
+    if max(coarser_forward, coarser_backward) > 1:
+        violations.append(f"{a['file']} (t = {a['times'][-1]:.6g}) -> {b['file']} (t = {b['times'][0]:.6g}): "
+                          f"a cell {coarser_forward} (forward) / {coarser_backward} (backward) levels coarser "
+                          "than an overlapping cell")
+    previous = current
+
+print(f"{len(meshes)} meshes ({len(times)} steps, t = {times.min():.6g} to {times.max():.6g}), "
+      f"{min(len(m['w']) for m in meshes)} to {max(len(m['w']) for m in meshes)} cells, "
+      f"levels {min(m['geometric_level'].min() for m in meshes)}-{largest} (0: the largest cells)")
+print(f"max hanging nodes per edge {most_hanging} (edges with one: {edges_with_one}); max level excess over "
+      f"{len(meshes) - 1} consecutive pairs: forward {forward if len(meshes) > 1 else '-'}, "
+      f"backward {backward if len(meshes) > 1 else '-'}")
+if args.max_level is not None:
+    top = max(int(np.rint(m["level"]).max()) for m in meshes if m["level"] is not None)
+    print(f"largest level {top} (allowed: {args.max_level})")
+    if top > args.max_level:
+        violations.append(f"a cell of level {top} above the maximum level {args.max_level}")
+if others:
+    at = {round(float(t), 9): o for o in others for t in o["times"]}
+    compared = coarser_steps = coarser_cells = 0
+    for m in meshes:
+        o = at.get(round(float(m["times"][0]), 9))
+        if o is None:
+            continue
+        here, there = pixel_levels(m), pixel_levels(o)
+        compared += len(m["times"])
+        coarser = here < there  # pixels where this mesh's cell is coarser than the other's
+        if coarser.any():
+            coarser_steps += len(m["times"])
+            coarser_cells += sum(1 for i, j, w in zip(m["i0"], m["j0"], m["w"]) if coarser[i:i + w, j:j + w].any())
+    print(f"{coarser_steps} of {compared} steps have cells coarser than in {os.path.basename(args.coarser_than)} "
+          f"({coarser_cells} cells)")
+    if coarser_steps == 0:
+        violations.append(f"no cell is coarser than in {os.path.basename(args.coarser_than)} at the same time")
+for v in violations[:20]:
+    print("VIOLATION:", v)
+if len(violations) > 20:
+    print(f"... {len(violations) - 20} more")
+sys.exit(1 if violations else 0)
