@@ -87,6 +87,9 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
                 "Step tables gain kinetic_energy, energy_transferred and kinetic_energy_transferred: the energies of "
                 "I_h u^{n-1}, I_h v^{n-1} on the mesh of step n (the transfer's effect; costs one more projected "
                 "field, I_h v (I_h a when Alpha = 1), per mesh change)");
+  core::addBool(a, "Compact Meshes", true,
+                "Store each step's mesh between its uses as the levels of its cells in curve order (1 byte per cell) "
+                "instead of a p4est forest (about 35 bytes per cell); a step expands it when it needs it");
   core::addBool(a, "Write All Cycles", false,
                 "Write Exodus results for every cycle (<basename>.cycle<l>.e); else only for the last cycle");
   p.set("Adaptivity", a, "Algorithm 5.1: cycles, marking, stopping");
@@ -171,6 +174,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   const double fraction = ap.get<double>("Refinement Fraction");
   const double coarsen = ap.get<double>("Coarsening Fraction");
   const double ties = ap.get<double>("Tie Tolerance");
+  const bool compactMeshes = ap.get<bool>("Compact Meshes");
   estimate::ResidualEstimator estimator(deck_.sublist("Estimator"));
   estimate::ElasticityEstimator elasticityEstimator(deck_.sublist("Estimator"));
   const std::string base = sim_->outputBase();
@@ -256,6 +260,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
           refined->refineMarked(s.mesh.balanceClosure(flags));  // T^n_l is balanced: adds the cells the balance forces
         }
         refined->partition();
+        if (compactMeshes) refined->compact();
         const int n = s.step;
         next[n - 1] = (n > 1 && next[n - 2]->sameCells(*refined)) ? next[n - 2] : refined;
         return extras;
@@ -268,6 +273,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       options.cellFieldName = "indicator";
       options.interpolateTransfer = ap.get<std::string>("Transfer") == "interpolation";
       options.reportTransferEnergy = ap.get<bool>("Report Transfer Energy");
+      options.compactMeshes = compactMeshes;
       last = sim_->runPass(meshes, hook, options);
       written.insert(written.end(), last.files.begin(), last.files.end());
       // Memory of the stored meshes of this cycle (steps with equal meshes share one forest).

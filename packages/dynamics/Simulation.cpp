@@ -557,6 +557,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     d = std::move(I.initialDiscretisation);  // built by the constructor: nothing to rebuild
     d->builtAtStep = 1;
   } else {
+    meshes[0]->expand();
     d = I.build(meshes[0], 1);
   }
   RCP<Vector> u = Teuchos::rcp(new Vector(d->assembler->ownedMap())),
@@ -643,11 +644,14 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       I.newmark->predictor(*u, *v, *a, *predictors[0]);
       I.newmark->velocityPredictor(*v, *a, *predictors[1]);
       if (n > 1 && meshes[n - 1] != d->forest && !meshes[n - 1]->sameCells(*d->forest)) {
+        meshes[n - 1]->expand();
         auto next = I.build(meshes[n - 1], n);
         if (options.reportTransferEnergy)  // only to recover I_h u and I_h v
           predictors.push_back(Teuchos::rcp(new Vector(I.newmark->recoveryField(*v, *a), Teuchos::Copy)));
         I.transfer(*d, *next, options.interpolateTransfer, predictors, lambda, carried);
+        const auto previous = d->forest;
         d = std::move(next);
+        if (options.compactMeshes && previous.use_count() > 1) previous->compact();  // still stored by the caller
         u = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
         v = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
         a = Teuchos::rcp(new Vector(d->assembler->ownedMap()));

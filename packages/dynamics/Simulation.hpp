@@ -72,6 +72,9 @@ struct PassOptions {
   /// of (I_h u^{n-1}, I_h v^{n-1}) on the mesh of step n (those of step n-1 when the mesh is kept),
   /// so the transfer's effect on the energy is visible. Costs a third projected field (Newmark::recoveryField).
   bool reportTransferEnergy = false;
+  /// Compact a step's forest (mesh::Forest::compact()) once the pass has moved past it; meshes are
+  /// expanded when a step needs them either way.
+  bool compactMeshes = false;
 };
 
 class Simulation {

@@ -4,11 +4,15 @@
 #include <set>
 #include <tuple>
 
+#include <p4est_bits.h>
+#include <p4est_communication.h>
 #include <p4est_extended.h>
+#include <p4est_io.h>
 #include <p4est_ghost.h>
 #include <p4est_iterate.h>
 
 #include "Error.hpp"
+#include "Morton.hpp"
 #include "MpiComm.hpp"
 #include <sc.h>
 
@@ -22,15 +26,91 @@ void initializeP4est(MPI_Comm comm) {
   initialized = true;
 }
 
-Forest::Forest(std::shared_ptr<const CoarseMesh> coarse, MPI_Comm comm, int level) : coarse_(std::move(coarse)) {
+struct Forest::Compact {
+  std::vector<unsigned char> levels;             ///< p4est level of every local cell, curve order
+  std::vector<p4est_gloidx_t> firstQuadrant;     ///< p4est global_first_quadrant (ranks + 1)
+  std::vector<p4est_gloidx_t> cellsBeforeTree;   ///< cumulative global cells per tree (trees + 1)
+  p4est_quadrant_t firstPosition;                ///< this rank's first position (p.which_tree set)
+};
+
+Forest::Forest(std::shared_ptr<const CoarseMesh> coarse, MPI_Comm comm, int level) : coarse_(std::move(coarse)), comm_(comm) {
   initializeP4est(comm);
   p4est_ = p4est_new_ext(comm, coarse_->connectivity(), 0, level + coarse_->levelOffset(), 1, 0, nullptr, nullptr);
 }
 
-Forest::Forest(const Forest& other) : coarse_(other.coarse_), p4est_(p4est_copy(other.p4est_, 0)) {}
+Forest::Forest(const Forest& other) : coarse_(other.coarse_), comm_(other.comm_) {
+  if (other.p4est_)
+    p4est_ = p4est_copy(other.p4est_, 0);
+  else
+    compact_ = std::make_unique<Compact>(*other.compact_);
+}
 
 Forest::~Forest() {
   if (p4est_) p4est_destroy(p4est_);
+}
+
+p4est_t* Forest::p4est() const {
+  SIGNORINI_ASSERT(p4est_, "the forest is compact: expand() it first");
+  return p4est_;
+}
+
+long long Forest::numGlobalCells() const {
+  return static_cast<long long>(p4est_ ? p4est_->global_num_quadrants : compact_->firstQuadrant.back());
+}
+
+int Forest::numLocalCells() const {
+  return p4est_ ? static_cast<int>(p4est_->local_num_quadrants) : static_cast<int>(compact_->levels.size());
+}
+
+void Forest::localLevels(std::vector<unsigned char>& levels, p4est_quadrant_t& first) const {
+  if (compact_) {
+    levels = compact_->levels;
+    first = compact_->firstPosition;
+    return;
+  }
+  levels.clear();
+  levels.reserve(static_cast<size_t>(p4est_->local_num_quadrants));
+  for (p4est_topidx_t t = p4est_->first_local_tree; t >= 0 && t <= p4est_->last_local_tree; ++t) {
+    sc_array_t* quadrants = &p4est_tree_array_index(p4est_->trees, t)->quadrants;
+    for (size_t i = 0; i < quadrants->elem_count; ++i)
+      levels.push_back(static_cast<unsigned char>(p4est_quadrant_array_index(quadrants, i)->level));
+  }
+  first = p4est_->global_first_position[p4est_->mpirank];
+}
+
+void Forest::compact() {
+  if (!p4est_) return;
+  auto c = std::make_unique<Compact>();
+  localLevels(c->levels, c->firstPosition);
+  c->firstQuadrant.assign(p4est_->global_first_quadrant, p4est_->global_first_quadrant + p4est_->mpisize + 1);
+  c->cellsBeforeTree.resize(static_cast<size_t>(p4est_->connectivity->num_trees) + 1);
+  p4est_comm_count_pertree(p4est_, c->cellsBeforeTree.data());  // collective
+  p4est_destroy(p4est_);
+  p4est_ = nullptr;
+  compact_ = std::move(c);
+}
+
+void Forest::expand() {
+  if (p4est_) return;
+  const Compact& c = *compact_;
+  // Each cell starts where the previous one ends along the curve: its Morton id at the finest
+  // level gives its (x, y), and the id advances by the cell's size; a tree ends at 4^QMAXLEVEL.
+  const uint64_t treeEnd = morton::span(0);
+  uint64_t id = morton::firstId(c.firstPosition);
+  sc_array_t* coordinates = sc_array_new_count(sizeof(p4est_qcoord_t), 3 * c.levels.size());
+  auto* out = reinterpret_cast<p4est_qcoord_t*>(coordinates->array);
+  for (unsigned char level : c.levels) {
+    if (id == treeEnd) id = 0;
+    const auto [x, y] = morton::coordinates(id);
+    *out++ = x;
+    *out++ = y;
+    *out++ = level;
+    id += morton::span(level);
+  }
+  p4est_ = p4est_inflate(comm_, const_cast<p4est_connectivity_t*>(coarse_->connectivity()), c.firstQuadrant.data(),
+                         c.cellsBeforeTree.data(), coordinates, nullptr, nullptr);  // collective
+  sc_array_destroy(coordinates);
+  compact_.reset();
 }
 
 namespace {
@@ -43,7 +123,7 @@ int refineCallback(p4est_t* p, p4est_topidx_t tree, p4est_quadrant_t* q) {
 void Forest::refineIf(const std::function<bool(int tree, const p4est_quadrant_t& q)>& refine) {
   void* saved = p4est_->user_pointer;
   p4est_->user_pointer = const_cast<void*>(static_cast<const void*>(&refine));
-  p4est_refine(p4est_, 0, refineCallback, nullptr);
+  p4est_refine(p4est(), 0, refineCallback, nullptr);
   p4est_->user_pointer = saved;
 }
 
@@ -98,7 +178,7 @@ void refineStoredFlags(p4est_t* p4est) {
 
 void Forest::refineMarked(const std::vector<char>& flags) {
   SIGNORINI_ASSERT(flags.size() == static_cast<size_t>(numLocalCells()), "one flag per local cell");
-  storeFlags(p4est_, flags);
+  storeFlags(p4est(), flags);
   refineStoredFlags(p4est_);
 }
 
@@ -155,6 +235,7 @@ void Forest::refineMarkedBalanced(const std::vector<char>& flags) {
   // refined forest refines this closure, and refining the closure once is balanced: it is the
   // coarsest balanced refinement, i.e. p4est_balance's result.
   SIGNORINI_ASSERT(flags.size() == static_cast<size_t>(numLocalCells()), "one flag per local cell");
+  SIGNORINI_ASSERT(!isCompact(), "the forest is compact: expand() it first");
   p4est_ghost_t* ghost = p4est_ghost_new(p4est_, P4EST_CONNECT_FULL);
   std::vector<BalanceEdge> edges;
   p4est_iterate(p4est_, ghost, &edges, nullptr, balanceFaceEdges, balanceCornerEdges);
@@ -218,6 +299,7 @@ void Forest::refineAndCoarsen(const std::vector<char>& refine, const std::vector
   SIGNORINI_ASSERT(refine.size() == static_cast<size_t>(numLocalCells()) &&
                        coarsen.size() == static_cast<size_t>(numLocalCells()),
                    "one flag per local cell");
+  SIGNORINI_ASSERT(!isCompact(), "the forest is compact: expand() it first");
   int coarsenLocal = 0, coarsenAny = 0;
   for (char c : coarsen) coarsenLocal |= c ? 1 : 0;
   MPI_Allreduce(&coarsenLocal, &coarsenAny, 1, MPI_INT, MPI_MAX, p4est_->mpicomm);
@@ -238,29 +320,25 @@ void Forest::refineAndCoarsen(const std::vector<char>& refine, const std::vector
 }
 
 bool Forest::sameCells(const Forest& other) const {
-  const p4est_t* a = p4est_;
-  const p4est_t* b = other.p4est_;
-  int same = a->global_num_quadrants == b->global_num_quadrants && a->local_num_quadrants == b->local_num_quadrants &&
-             a->first_local_tree == b->first_local_tree && a->last_local_tree == b->last_local_tree;
-  for (p4est_topidx_t t = a->first_local_tree; same && t >= 0 && t <= a->last_local_tree; ++t) {
-    const sc_array_t& qa = p4est_tree_array_index(a->trees, t)->quadrants;
-    const sc_array_t& qb = p4est_tree_array_index(b->trees, t)->quadrants;
-    if (qa.elem_count != qb.elem_count) same = 0;
-    for (size_t i = 0; same && i < qa.elem_count; ++i) {
-      const auto* x = p4est_quadrant_array_index(const_cast<sc_array_t*>(&qa), i);
-      const auto* y = p4est_quadrant_array_index(const_cast<sc_array_t*>(&qb), i);
-      same = x->x == y->x && x->y == y->y && x->level == y->level;
-    }
-  }
+  std::vector<unsigned char> a, b;
+  p4est_quadrant_t firstA, firstB;
+  localLevels(a, firstA);
+  other.localLevels(b, firstB);
+  // The same first position and the same levels in curve order: the same cells, cell by cell.
+  int same = numGlobalCells() == other.numGlobalCells() && a == b && p4est_quadrant_is_equal_piggy(&firstA, &firstB);
   int all = 0;
-  MPI_Allreduce(&same, &all, 1, MPI_INT, MPI_LAND, a->mpicomm);
+  MPI_Allreduce(&same, &all, 1, MPI_INT, MPI_LAND, comm_);
   return all != 0;
 }
 
-size_t Forest::bytes() const { return p4est_memory_used(p4est_); }
+size_t Forest::bytes() const {
+  if (p4est_) return p4est_memory_used(p4est_);
+  return sizeof(Compact) + compact_->levels.capacity() +
+         (compact_->firstQuadrant.capacity() + compact_->cellsBeforeTree.capacity()) * sizeof(p4est_gloidx_t);
+}
 
-void Forest::balance() { p4est_balance(p4est_, P4EST_CONNECT_FULL, nullptr); }
+void Forest::balance() { p4est_balance(p4est(), P4EST_CONNECT_FULL, nullptr); }
 
-void Forest::partition() { p4est_partition(p4est_, 0, nullptr); }
+void Forest::partition() { p4est_partition(p4est(), 0, nullptr); }
 
 }  // namespace signorini::mesh

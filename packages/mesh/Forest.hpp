@@ -24,12 +24,23 @@ class Forest {
   Forest& operator=(const Forest&) = delete;
   ~Forest();
 
-  p4est_t* p4est() const { return p4est_; }
+  /// The p4est of an expanded forest (asserts !isCompact()).
+  p4est_t* p4est() const;
   const CoarseMesh& coarse() const { return *coarse_; }
   std::shared_ptr<const CoarseMesh> coarsePtr() const { return coarse_; }
-  MPI_Comm comm() const { return p4est_->mpicomm; }
-  long long numGlobalCells() const { return static_cast<long long>(p4est_->global_num_quadrants); }
-  int numLocalCells() const { return static_cast<int>(p4est_->local_num_quadrants); }
+  MPI_Comm comm() const { return comm_; }
+  long long numGlobalCells() const;
+  int numLocalCells() const;
+
+  /// Replaces the p4est by a compact form of the same cells and partition: the level of every
+  /// local cell in curve order (1 byte per cell) plus the partition (p4est's global first
+  /// quadrants and this rank's first position, the cumulative cells per tree); a step mesh is
+  /// stored so between its uses (about 35 bytes per cell as a p4est). Collective. No-op if compact.
+  void compact();
+  /// Rebuilds the p4est from the compact form (p4est_inflate): the same cells and partition as
+  /// before compact(). Collective. No-op if expanded.
+  void expand();
+  bool isCompact() const { return p4est_ == nullptr; }
 
   /// Refines every local cell for which \p refine(tree, quadrant) is true (once, not recursively).
   void refineIf(const std::function<bool(int tree, const p4est_quadrant_t& q)>& refine);
@@ -46,10 +57,10 @@ class Forest {
   /// cells flagged in \p refine (both in local cell order of the forest as it is on entry).
   void refineAndCoarsen(const std::vector<char>& refine, const std::vector<char>& coarsen, int minLevel);
   /// True if both forests have the same cells, compared cell by cell (collective; the same answer
-  /// on every rank). Equal cells partitioned differently over the ranks count as different (only a
-  /// rebuild that was not needed, never a wrong reuse).
+  /// on every rank; either forest may be compact). Equal cells partitioned differently over the
+  /// ranks count as different (only a rebuild that was not needed, never a wrong reuse).
   bool sameCells(const Forest& other) const;
-  /// Bytes of memory this rank uses for the forest.
+  /// Bytes of memory this rank uses for the forest (in whichever form it is).
   size_t bytes() const;
   /// Enforces the 2:1 face balance (at most one hanging node per edge; paper Algorithm 5.2).
   void balance();
@@ -57,8 +68,13 @@ class Forest {
   void partition();
 
  private:
+  struct Compact;
+  /// Levels of the local cells in curve order (from either form) and this rank's first position.
+  void localLevels(std::vector<unsigned char>& levels, p4est_quadrant_t& first) const;
   std::shared_ptr<const CoarseMesh> coarse_;
-  p4est_t* p4est_ = nullptr;
+  MPI_Comm comm_;
+  p4est_t* p4est_ = nullptr;          ///< expanded form
+  std::unique_ptr<Compact> compact_;  ///< compact form
 };
 
 }  // namespace signorini::mesh

@@ -76,14 +76,34 @@ int regulariseInTime(const Forest& neighbour, Forest& target) {
 }
 
 void regulariseSequence(std::vector<Forest*>& meshes) {
+  // Compact meshes are expanded only while a sweep passes them (two at a time) and compacted again.
+  std::vector<char> compact(meshes.size());
+  for (size_t n = 0; n < meshes.size(); ++n) compact[n] = meshes[n]->isCompact();
+  auto release = [&](size_t n) {
+    if (compact[n]) meshes[n]->compact();
+  };
   // A backward refinement of T^n can, inside the refined cells, leave T^{n+1} two levels coarser
   // than T^n: sweep forward and backward until a round refines nothing.
   for (int changed = 1; changed;) {
     changed = 0;
-    for (size_t n = 1; n < meshes.size(); ++n) changed += regulariseInTime(*meshes[n - 1], *meshes[n]);
-    for (size_t n = meshes.size() - 1; n-- > 0;) changed += regulariseInTime(*meshes[n + 1], *meshes[n]);
+    for (size_t n = 1; n < meshes.size(); ++n) {
+      meshes[n - 1]->expand();
+      meshes[n]->expand();
+      changed += regulariseInTime(*meshes[n - 1], *meshes[n]);
+      release(n - 1);
+    }
+    release(meshes.size() - 1);
+    for (size_t n = meshes.size() - 1; n-- > 0;) {
+      meshes[n + 1]->expand();
+      meshes[n]->expand();
+      changed += regulariseInTime(*meshes[n + 1], *meshes[n]);
+      release(n + 1);
+    }
+    release(0);
   }
-  for (Forest* f : meshes) f->partition();
+  // A refined mesh was re-partitioned by regulariseInTime; compact ones stay as they were stored.
+  for (size_t n = 0; n < meshes.size(); ++n)
+    if (!compact[n]) meshes[n]->partition();
 }
 
 void regulariseSteps(std::vector<std::shared_ptr<Forest>>& steps) {

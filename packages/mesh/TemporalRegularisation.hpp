@@ -16,7 +16,8 @@ int regulariseInTime(const Forest& neighbour, Forest& target);
 
 /// Algorithm 5.3 over a sequence of step meshes: forward sweeps (each mesh against its
 /// predecessor) and backward sweeps (against its successor), repeated until nothing changes
-/// (a backward refinement can create a forward violation), then re-partitioning.
+/// (a backward refinement can create a forward violation), then re-partitioning. Compact meshes
+/// (Forest::compact()) are expanded only while a sweep passes them and are compact on return.
 void regulariseSequence(std::vector<Forest*>& meshes);
 
 /// regulariseSequence on the meshes of consecutive steps, which may share one forest (equal
