@@ -1,13 +1,14 @@
 /// \file signorini.cpp
 /// The signorini driver: runs one or more decks one after another.
 ///
-///   signorini [--print-parameters] [--output-dir DIR] [--set 'Sublist/key=value']... DECK.xml [DECK2.xml ...]
+///   signorini [--print-parameters] [--check] [--output-dir DIR] [--set 'Sublist/key=value']... DECK.xml [DECK2.xml ...]
 ///
 /// Each deck is read and validated on every rank (so a bad deck fails everywhere at once),
 /// the mesh and problem are set up, and the run writes <basename>.steps.csv and <basename>.e.
 /// A failing deck is reported and the next one still runs; the exit status is non-zero if any failed.
 #include <iomanip>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,8 @@ namespace {
 const char* kUsage =
     "usage: signorini [options] DECK.xml [DECK2.xml ...]\n"
     "  --print-parameters        print every valid deck parameter (type, default, doc) and exit\n"
+    "  --check                   validate each deck and set up its problem as a run would (the same errors),\n"
+    "                            print what the run would do, and write no results\n"
     "  --output-dir DIR          write all output to DIR (overrides Output/Directory)\n"
     "  --set 'Sublist/key=value' override a deck entry (repeatable; validated like the deck)\n"
     "  --help                    this text\n";
@@ -49,6 +52,7 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> decks, overrides;
   std::string outputDir;
+  bool checkOnly = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
@@ -57,6 +61,8 @@ int main(int argc, char** argv) {
     } else if (arg == "--print-parameters") {
       signorini::core::printParameters(out, signorini::adapt::AdaptiveSimulation::getValidParameters());
       return 0;
+    } else if (arg == "--check") {
+      checkOnly = true;
     } else if (arg == "--output-dir" || arg == "--set") {
       if (i + 1 == argc) {
         if (rank == 0) std::cerr << "signorini: " << arg << " needs a value\n" << kUsage;
@@ -81,10 +87,17 @@ int main(int argc, char** argv) {
 
   int failures = 0;
   for (const auto& path : decks) {
-    out << "signorini: running " << path << " on " << comm->getSize() << " rank(s)" << std::endl;
+    out << "signorini: " << (checkOnly ? "checking " : "running ") << path << " on " << comm->getSize() << " rank(s)"
+        << std::endl;
     try {
       const auto deck = readDeck(path, overrides);
       signorini::adapt::AdaptiveSimulation sim(deck, path, outputDir, comm);
+      if (checkOnly) {
+        std::istringstream lines(sim.plan());
+        out << "signorini: " << path << " is valid; the run would do:" << std::endl;
+        for (std::string line; std::getline(lines, line);) out << "  " << line << std::endl;
+        continue;
+      }
       const auto summary = sim.run();
       out << "signorini: " << path << " done: " << summary.steps << " steps, " << summary.dofsPerStep
           << " unknowns per step, " << summary.wallSeconds << " s" << std::endl;

@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <iostream>
 #include <set>
+#include <sstream>
 
 #include <Tpetra_Vector.hpp>
 
@@ -153,6 +154,27 @@ AdaptiveSimulation::AdaptiveSimulation(const core::ParameterList& deck, const st
 }
 
 AdaptiveSimulation::~AdaptiveSimulation() = default;
+
+std::string AdaptiveSimulation::plan() const {
+  const auto& a = deck_.sublist("Adaptivity");
+  const auto& t = deck_.sublist("Time Integration");
+  std::ostringstream os;
+  os << sim_->numSteps() << " steps of k = " << t.get<double>("Time Step") << " to T = " << t.get<double>("Final Time")
+     << "; the initial mesh: " << sim_->initialForest()->numGlobalCells() << " cells, " << sim_->initialUnknowns()
+     << " unknowns\n";
+  const std::string strategy = a.get<std::string>("Strategy");
+  if (strategy == "none") {
+    os << "one pass on the initial mesh";
+  } else {
+    os << "Algorithm 5.1: " << a.get<int>("Cycles") << " cycle(s), strategy " << strategy;
+    if (strategy != "uniform") os << " " << 100 * a.get<double>("Refinement Fraction") << "%";
+    if (a.get<double>("Coarsening Fraction") > 0) os << ", coarsening " << 100 * a.get<double>("Coarsening Fraction") << "%";
+    if (a.get<double>("Maximum Total Unknowns") > 0) os << ", stop at " << a.get<double>("Maximum Total Unknowns") << " total unknowns";
+    if (a.get<double>("Tolerance") > 0) os << ", stop at eta <= " << a.get<double>("Tolerance");
+  }
+  os << "\noutput: " << sim_->outputBase() << ".*";
+  return os.str();
+}
 
 dynamics::RunSummary AdaptiveSimulation::run() {
   const auto& ap = deck_.sublist("Adaptivity");

@@ -21,7 +21,7 @@ struct CycleSummary {
   long long cells;         ///< sum over the steps of the cells of T^n
   long long storedMeshes;  ///< distinct forests stored for the cycle (equal consecutive meshes share one)
   long long storedCells;   ///< cells of the distinct forests
-  double bytesPerCell;     ///< memory of the stored forests (p4est's own storage) per stored cell [bytes]
+  double bytesPerCell;     ///< memory of the stored meshes (compact or p4est forests) per stored cell [bytes]
   long meshRebuilds;       ///< steps whose mesh differed from the previous step's (operators rebuilt)
 };
 
@@ -34,6 +34,9 @@ class AdaptiveSimulation {
   ~AdaptiveSimulation();
   /// Runs all cycles; writes <basename>.cycles.csv and per-cycle step tables and results.
   dynamics::RunSummary run();
+  /// What run() will do, in a few lines (steps, unknowns of the initial mesh, cycles and
+  /// strategy, output base): the driver's --check prints it.
+  std::string plan() const;
   const std::vector<CycleSummary>& cycles() const { return cycles_; }
 
  private:

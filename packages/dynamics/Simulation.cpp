@@ -480,6 +480,11 @@ Simulation::~Simulation() = default;
 
 std::shared_ptr<mesh::Forest> Simulation::initialForest() const { return impl_->initialForest; }
 int Simulation::numSteps() const { return impl_->newmark->numSteps(); }
+long long Simulation::initialUnknowns() const {
+  if (impl_->initialDiscretisation)
+    return static_cast<long long>(impl_->initialDiscretisation->assembler->ownedMap()->getGlobalNumElements());
+  return 0;
+}
 RCP<const Comm> Simulation::comm() const { return impl_->comm; }
 const std::string& Simulation::outputBase() const { return impl_->outputBase; }
 

@@ -103,6 +103,8 @@ class Simulation {
   /// The deck's initial (uniform) mesh.
   std::shared_ptr<mesh::Forest> initialForest() const;
   int numSteps() const;
+  /// Unknowns of the deck's (initial) mesh.
+  long long initialUnknowns() const;
   RCP<const Comm> comm() const;
   const std::string& outputBase() const;  ///< output folder + "/" + basename
   /// Throws core::UserError naming \p cause if a step mesh of \p globalCells cells certainly

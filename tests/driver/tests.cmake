@@ -267,3 +267,13 @@ signorini_add_driver_test(set_sublist_as_value EXIT 1
 signorini_add_driver_test(poisson_ratio_bound_digits EXIT 1
   ARGS --output-dir {OUT} --set "Problem/Poisson's Ratio=0.5" ${decks}/good.xml
   REGEX "'Problem/Poisson's Ratio' = 0[.]5 is not allowed; it must be in [[]0, 0[.]4999999[]]")
+
+# --check: a valid deck is set up and described, nothing is written; a bad deck fails as a run would.
+signorini_add_driver_test(check_valid_deck EXIT 0
+  ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=bulk" --set "Adaptivity/Cycles=3" ${decks}/good.xml
+  REGEX "checking .*good[.]xml on 2 rank[(]s[)]" "good[.]xml is valid; the run would do:"
+        "4 steps of k = 0[.]0025 to T = 0[.]01; the initial mesh: 16 cells, 25 unknowns"
+        "Algorithm 5[.]1: 3 cycle[(]s[)], strategy bulk 50%")
+signorini_add_driver_test(check_bad_deck EXIT 1
+  ARGS --check --output-dir {OUT} ${decks}/good.xml ${decks}/penetrating.xml
+  REGEX "good[.]xml is valid" "Problem/Initial Displacement penetrates the obstacle" "1 of 2 deck[(]s[)] failed")
