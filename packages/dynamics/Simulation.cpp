@@ -579,7 +579,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   }
 
   double tRemesh = 0, tEstimate = 0;  // of the current step
-  std::pair<double, double> transferred = I.energies(*d, *u, *v);  // (kinetic, strain) moved to the current step
+  std::pair<double, double> written;      // (kinetic, strain) of the state last written
+  std::pair<double, double> transferred;  // (kinetic, strain) of the previous step's state on the current mesh
   std::vector<RCP<Vector>> carried;   // StepExtras::carry of the previous step
   auto writeOutputs = [&](int step, double t, const solvers::ContactQPResult& qr, double tAssembly, double tContact,
                           double tFree, const StepExtras& extras) {
@@ -591,7 +592,9 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       for (int j = 0; j < d->coupling->numSegments(); ++j) force -= toPhysical * lambda[j] * d->coupling->segmentLength()[j];
     Vector uOverlap(d->assembler->overlapMap());
     d->assembler->toOverlap(*u, uOverlap);
-    const auto [kinetic, strain] = I.energies(*d, *u, *v);
+    written = I.energies(*d, *u, *v);
+    if (step == 0) transferred = written;  // the initial state: nothing moved
+    const auto [kinetic, strain] = written;
     const double energy = kinetic + strain;
     std::vector<double> row = {double(step), t, dofs, double(qr.active), double(qr.activeSetIterations),
                                double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),
@@ -669,8 +672,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
           predictors.resize(2);
         }
         ++summary.meshChanges;
-      } else if (options.reportTransferEnergy) {
-        transferred = I.energies(*d, *u, *v);
+      } else {
+        transferred = written;  // nothing moved
       }
       tRemesh = std::chrono::duration<double>(std::chrono::steady_clock::now() - tR0).count();
       const auto owned = d->assembler->ownedMap();
