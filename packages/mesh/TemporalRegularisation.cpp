@@ -76,6 +76,7 @@ int regulariseInTime(const Forest& neighbour, Forest& target) {
 }
 
 void regulariseSequence(std::vector<Forest*>& meshes) {
+  if (meshes.empty()) return;
   // Compact meshes are expanded only while a sweep passes them (two at a time) and compacted again.
   std::vector<char> compact(meshes.size());
   for (size_t n = 0; n < meshes.size(); ++n) compact[n] = meshes[n]->isCompact();
