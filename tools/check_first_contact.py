@@ -1,0 +1,117 @@
+#!/usr/bin/python3
+"""Checks that an adaptive membrane run (paper Example 6.1, inputs/membrane.xml and its variants)
+resolves the contact zone before the first contact, the property the paper's Section 7 finds
+missing in strategies that compare indicators over all time steps ("the contact zone is not
+resolved, before the first contact takes place. Thus, the algorithm is not able to detect the
+moment of the first contact exactly").
+
+The reference is independent of the program: until the first contact the membrane moves as the
+obstacle-free solution u = -(2/pi) sin(pi t/2) sin(pi x/2), so the point (1, 1/2), where the
+obstacle sin(pi y) - 1.05 is highest, touches it first, at t* = (2/pi) arcsin(0.05 pi/2). The first
+time step at or after t* is the step of first contact a resolved discretisation must find.
+
+Asserted, from the step tables and the last cycle's Exodus series (written every step):
+  1. the last cycle's first step with active segments is that step;
+  2. in the step before it and in it, every cell along Gamma_C (x = 1) under the first active
+     segments is at the finest level of that step's mesh, and finer than the initial mesh;
+  3. the first active segments lie around y = 1/2 (within 0.05 of it);
+  4. control, the behaviour the paper warns of: cycle 0 (the uniform initial mesh, whose
+     multiplier segments average the obstacle over 1/8 of Gamma_C) finds the contact later.
+Prints what it finds; exit status 1 on any violation.
+Usage: check_first_contact.py BASE [INITIAL_LEVEL] (the run's output base, e.g. out/membrane; the
+level of the initial mesh's cells, 0 unless the deck sets Mesh/Refinement Level)"""
+import glob
+import math
+import sys
+
+import netCDF4
+import numpy as np
+
+base = sys.argv[1]
+initial = int(sys.argv[2]) if len(sys.argv) > 2 else 0
+failures = []
+
+
+def steps_table(path):
+    return np.genfromtxt(path, delimiter=",", names=True)
+
+
+def first_contact_step(table):
+    active = np.flatnonzero(table["active"] > 0)
+    return int(table["step"][active[0]]) if active.size else None
+
+
+last = steps_table(base + ".steps.csv")
+k = float(last["t"][1] - last["t"][0])
+t_star = 2 / math.pi * math.asin(0.05 * math.pi / 2)
+expected = math.ceil(t_star / k - 1e-9)
+found = first_contact_step(last)
+print(f"{base}: exact first contact t* = {t_star:.6f}, step {expected} (k = {k}); last cycle: step {found}")
+if found != expected:
+    failures.append(f"the last cycle finds the first contact in step {found}, not {expected}")
+
+cycle0 = glob.glob(base + ".cycle0.steps.csv")
+if not cycle0:
+    failures.append(f"no {base}.cycle0.steps.csv (the control needs the initial cycle's table)")
+else:
+    found0 = first_contact_step(steps_table(cycle0[0]))
+    print(f"  cycle 0 (uniform initial mesh): step {found0}")
+    if found0 is None or found0 <= expected:
+        failures.append(f"control: cycle 0 finds the contact in step {found0}, expected later than {expected}")
+
+
+def text(chars):
+    return b"".join(chars).decode().strip("\x00").strip()
+
+
+def written_steps():
+    """(time, file, index in the file) of every written step of the last cycle's series."""
+    files = sorted(glob.glob(base + ".e") + glob.glob(base + ".e-s.*"),
+                   key=lambda f: int(f.rsplit(".", 1)[1]) if ".e-s." in f else 0)
+    out = []
+    for f in files:
+        with netCDF4.Dataset(f) as d:
+            out += [(float(t), f, i) for i, t in enumerate(np.asarray(d["time_whole"][:]))]
+    return out
+
+
+def gamma_c_cells(f, i):
+    """Levels of the mesh, and (y-range, level, lambda) of the cells along the side set, sorted in y."""
+    with netCDF4.Dataset(f) as d:
+        names = [text(n) for n in d["name_elem_var"][:].data]
+        level = np.asarray(d[f"vals_elem_var{names.index('level') + 1}eb1"][i])
+        side_names = [text(n) for n in d["name_sset_var"][:].data]
+        lam = np.asarray(d[f"vals_sset_var{side_names.index('lambda') + 1}ss1"][i])
+        y = np.asarray(d["coordy"][:])
+        conn = np.asarray(d["connect1"][:]) - 1
+        cells = np.asarray(d["elem_ss1"][:]) - 1
+    lo, hi = y[conn[cells]].min(1), y[conn[cells]].max(1)
+    order = np.argsort(lo)
+    return level, lo[order], hi[order], level[cells][order], lam[order]
+
+
+times = written_steps()
+t_of = {round(t / k): (f, i) for t, f, i in times}
+if found is None or found not in t_of or found - 1 not in t_of:
+    failures.append("the steps around the first contact are not in the Exodus series (write every step)")
+else:
+    level, lo, hi, cell_level, lam = gamma_c_cells(*t_of[found])
+    active = lam < 0
+    zone = (lo[active].min(), hi[active].max())
+    print(f"  first active segments cover y in [{zone[0]:.4f}, {zone[1]:.4f}]")
+    if zone[0] < 0.45 or zone[1] > 0.55 or not zone[0] < 0.5 < zone[1]:
+        failures.append(f"the first active segments cover [{zone[0]}, {zone[1]}]: not within 0.05 of y = 1/2 on both sides")
+    for step in (found - 1, found):
+        level, lo, hi, cell_level, _ = gamma_c_cells(*t_of[step])
+        under = (hi > zone[0]) & (lo < zone[1])
+        levels = sorted(set(cell_level[under].astype(int)))
+        finest = int(level.max())
+        print(f"  step {step}: cells of Gamma_C under them at levels {levels}; mesh levels "
+              f"{int(level.min())}..{finest} (median {np.median(level):.0f}), initial mesh {initial}")
+        if min(levels) < finest or finest <= initial:
+            failures.append(f"step {step}: the contact zone is at levels {levels}, the mesh's finest is {finest} "
+                            f"(initial {initial})")
+
+for f in failures:
+    print("FAILED:", f)
+sys.exit(1 if failures else 0)
