@@ -10,6 +10,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "Error.hpp"
+#include "ReproducibleSum.hpp"
 
 namespace signorini::solvers {
 
@@ -244,9 +245,95 @@ std::vector<int> solveGroup(const CrsMatrix& A, const std::vector<const Vector*>
 
 }  // namespace
 
+void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
+  SIGNORINI_ASSERT(A.getGraph()->getExporter().is_null(), "applyCanonical: the row map must be the range map");
+  const auto importer = A.getGraph()->getImporter();
+  Teuchos::RCP<const Vector> columns = Teuchos::rcpFromRef(X);
+  if (!importer.is_null()) {
+    auto imported = Teuchos::rcp(new Vector(A.getColMap(), false));
+    imported->doImport(X, *importer, Tpetra::INSERT);
+    columns = imported;
+  }
+  const auto matrix = A.getLocalMatrixHost();
+  auto xv = columns->getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto yv = Y.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  std::vector<double> products;
+  for (LO i = 0; i < matrix.numRows(); ++i) {
+    const auto begin = matrix.graph.row_map(i), end = matrix.graph.row_map(i + 1);
+    products.clear();
+    for (auto k = begin; k < end; ++k) products.push_back(matrix.values(k) * xv(matrix.graph.entries(k), 0));
+    std::sort(products.begin(), products.end());
+    double sum = 0.0;
+    for (double p : products) sum += p;
+    yv(i, 0) = sum;
+  }
+}
+
+int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativeTolerance,
+                              int maxIterations) {
+  const Comm& comm = *A.getRangeMap()->getComm();
+  const size_t n = A.getRangeMap()->getNodeNumElements();
+  Vector diagonal(A.getRowMap()), r(A.getRangeMap()), p(A.getRangeMap()), q(A.getRangeMap());
+  A.getLocalDiagCopy(diagonal);
+  applyCanonical(A, x, q);
+  auto dv = diagonal.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto bv = b.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
+  auto rv = r.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  auto pv = p.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  {
+    auto qv = q.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (size_t i = 0; i < n; ++i) rv(i, 0) = bv(i, 0) - qv(i, 0), pv(i, 0) = rv(i, 0) / dv(i, 0);
+  }
+  double start[3];  // ||b||^2, r.z, ||r||^2
+  core::reproducibleSums(
+      comm, 3, n,
+      [&](size_t i, double* t) {
+        t[0] = bv(i, 0) * bv(i, 0);
+        t[1] = rv(i, 0) * pv(i, 0);
+        t[2] = rv(i, 0) * rv(i, 0);
+      },
+      start);
+  if (start[0] == 0.0) {
+    x.putScalar(0.0);
+    return 0;
+  }
+  const double target = relativeTolerance * std::sqrt(start[0]);
+  if (std::sqrt(start[2]) <= target) return 0;
+  double rz = start[1];
+  for (int it = 1; it <= maxIterations; ++it) {
+    applyCanonical(A, p, q);
+    auto qv = q.getLocalViewHost(Tpetra::Access::ReadOnly);
+    double pq;
+    core::reproducibleSums(comm, 1, n, [&](size_t i, double* t) { t[0] = pv(i, 0) * qv(i, 0); }, &pq);
+    const double alpha = rz / pq;
+    for (size_t i = 0; i < n; ++i) xv(i, 0) += alpha * pv(i, 0), rv(i, 0) -= alpha * qv(i, 0);
+    double sums[2];  // r.r, r.z
+    core::reproducibleSums(
+        comm, 2, n,
+        [&](size_t i, double* t) {
+          t[0] = rv(i, 0) * rv(i, 0);
+          t[1] = rv(i, 0) * (rv(i, 0) / dv(i, 0));
+        },
+        sums);
+    if (std::sqrt(sums[0]) <= target) return it;
+    const double beta = sums[1] / rz;
+    rz = sums[1];
+    for (size_t i = 0; i < n; ++i) pv(i, 0) = rv(i, 0) / dv(i, 0) + beta * pv(i, 0);
+  }
+  throw core::SolverError("Jacobi CG: no convergence to " + std::to_string(relativeTolerance) + " in " +
+                          std::to_string(maxIterations) + " iterations");
+}
+
 std::vector<int> solveJacobiCG(const CrsMatrix& A, const std::vector<const Vector*>& b, const std::vector<Vector*>& x,
                                double relativeTolerance, int maxIterations) {
   SIGNORINI_ASSERT(b.size() == x.size(), "one initial guess per right-hand side");
+  if (core::reproducibleArithmetic()) {
+    std::vector<int> iterations;
+    for (size_t f = 0; f < b.size(); ++f)
+      iterations.push_back(solveReproducibleJacobiCG(A, *b[f], *x[f], relativeTolerance, maxIterations));
+    return iterations;
+  }
   std::vector<int> iterations;
   for (size_t first = 0; first < b.size(); first += kMaxFields) {
     const size_t count = std::min<size_t>(b.size() - first, kMaxFields);

@@ -10,6 +10,8 @@
 #include <Tpetra_Vector.hpp>
 
 #include "Error.hpp"
+#include "JacobiCG.hpp"
+#include "ReproducibleSum.hpp"
 
 namespace signorini::solvers {
 
@@ -95,6 +97,14 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
   if (choice == "auto") choice = courant > I.params.get<double>("Auto MueLu Courant Number") ? "MueLu" : "Jacobi";
   I.precName = choice;
   I.prec = Teuchos::null;
+  if (core::reproducibleArithmetic()) {
+    // Partition-independent solves: our Jacobi CG with ordered sums (JacobiCG.hpp). MueLu's
+    // aggregates depend on the partition, so it cannot take part.
+    if (choice != "Jacobi")
+      SIGNORINI_USER_ERROR("Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\", not \"" << choice
+                                                                                                       << "\"");
+    return;
+  }
   auto Anc = Teuchos::rcp_const_cast<CrsMatrix>(A);
   if (choice == "MueLu") {
     Teuchos::ParameterList mueluParams;
@@ -136,6 +146,21 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
   auto& I = *impl_;
   SIGNORINI_ASSERT(!I.A.is_null(), "solve() before setOperator()");
   ++I.solves;
+  if (core::reproducibleArithmetic()) {
+    int its = 0;
+    try {
+      its = solveReproducibleJacobiCG(*I.A, b, x, I.params.get<double>("Relative Tolerance"),
+                                      I.params.get<int>("Maximum Iterations"));
+    } catch (const core::SolverError&) {
+      std::ostringstream os;
+      os << "linear solver CG + Jacobi (reproducible) did not reach the relative tolerance "
+         << I.params.get<double>("Relative Tolerance") << " in " << I.params.get<int>("Maximum Iterations")
+         << " iterations (Linear Solver/Maximum Iterations)";
+      throw core::SolverError(os.str());
+    }
+    I.iterations += its;
+    return its;
+  }
   if (b.norm2() == 0.0) {
     x.putScalar(0.0);
     return 0;

@@ -1,0 +1,100 @@
+#pragma once
+/// \file ReproducibleSum.hpp
+/// Global sums whose bits depend only on the multiset of the terms of all ranks: not on the order
+/// in which they are added, nor on how they are distributed over the ranks. A run on 2 ranks then
+/// gets the same dot products, norms and energies as on 1 rank, which an ordinary sum of per-rank
+/// partial sums does not give (docs/reproducibility.md).
+///
+/// Method (pre-rounding, after Demmel and Nguyen's reproducible summation): with M the largest
+/// |term| over all ranks and 2^e > M, each term t is scaled to t 2^-e (exact) and split into three
+/// parts, multiples of 2^-27, 2^-54 and 2^-81, by adding and subtracting fixed constants. Sums of
+/// such parts are exact in double precision for up to 2^26 terms, so each part's sum, and their sum
+/// over ranks, has the same bits in any order. The result is (S0 + S1) + S2, scaled back: its error
+/// is at most 2^26 2^-82 M, far below that of an ordinary sum (about n 2^-53 M).
+///
+/// Cost: two passes over the terms (the largest term, then the parts) and two global reductions.
+#include <cmath>
+#include <cstddef>
+
+#include "Error.hpp"
+#include "MpiComm.hpp"
+
+namespace signorini::core {
+
+namespace detail {
+/// Splitting constants 1.5 * 2^(52 - 27 (f + 1)): (sigma + t) - sigma rounds t to a multiple of 2^(-27 (f + 1)).
+inline constexpr double kFoldSigma[3] = {1.5 * 33554432.0, 1.5 * 0.25, 1.5 * 0.25 / 134217728.0};
+inline constexpr std::size_t kMaxTerms = std::size_t(1) << 26;
+
+/// Adds the three parts of \p t (|t| < 1) to folds[0..2].
+inline void addFolded(double t, double* folds) {
+  for (int f = 0; f < 3; ++f) {
+    const volatile double raised = kFoldSigma[f] + t;  // volatile: no contraction or reassociation
+    const double part = raised - kFoldSigma[f];
+    folds[f] += part;
+    t -= part;
+  }
+}
+
+/// Global maxima of \p count values (in place).
+void maxAll(const Comm& comm, int count, double* values);
+/// Global sums of \p count values (in place).
+void sumAll(const Comm& comm, int count, double* values);
+}  // namespace detail
+
+/// The \p count sums over i < n (local) and over all ranks of the terms term(i, t) writes into
+/// t[0 .. count) (count <= 8). term must give the same values when called again for the same i.
+/// Collective. At most 2^26 terms per sum over all ranks (asserted). A sum with a non-finite term is
+/// the ordinary sum (inf or nan).
+template <class Term>
+void reproducibleSums(const Comm& comm, int count, std::size_t n, const Term& term, double* sums) {
+  constexpr int kMax = 8;
+  double largest[kMax] = {}, plain[kMax + 1] = {}, t[kMax];
+  for (std::size_t i = 0; i < n; ++i) {
+    term(i, t);
+    for (int k = 0; k < count; ++k) {
+      const double a = std::fabs(t[k]);
+      largest[k] = a > largest[k] || std::isnan(a) ? a : largest[k];
+      plain[k] += t[k];
+    }
+  }
+  detail::maxAll(comm, count, largest);
+  int exponent[kMax];
+  double scale[kMax], folds[3 * kMax + 1] = {};
+  bool finite = true;
+  for (int k = 0; k < count; ++k) {
+    finite = finite && std::isfinite(largest[k]);
+    exponent[k] = largest[k] > 0 && std::isfinite(largest[k]) ? std::ilogb(largest[k]) + 1 : 0;
+    scale[k] = std::ldexp(1.0, -exponent[k]);
+  }
+  if (!finite) {  // the ordinary sums carry the inf or nan
+    detail::sumAll(comm, count, plain);
+    for (int k = 0; k < count; ++k) sums[k] = plain[k];
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    term(i, t);
+    for (int k = 0; k < count; ++k) detail::addFolded(t[k] * scale[k], folds + 3 * k);
+  }
+  folds[3 * count] = static_cast<double>(n);
+  detail::sumAll(comm, 3 * count + 1, folds);
+  SIGNORINI_ASSERT(folds[3 * count] <= static_cast<double>(detail::kMaxTerms),
+                   "reproducibleSums: more than 2^26 terms in one sum");
+  for (int k = 0; k < count; ++k)
+    sums[k] = std::ldexp((folds[3 * k] + folds[3 * k + 1]) + folds[3 * k + 2], exponent[k]);
+}
+
+/// Process-wide switch of partition-independent arithmetic (off by default): where it is on, the
+/// solvers and assemblers that support it order every sum so that its bits do not depend on the
+/// number of ranks (docs/reproducibility.md lists which do). Set once by the driver from the deck.
+void setReproducibleArithmetic(bool on);
+bool reproducibleArithmetic();
+
+/// One reproducible sum of \p n local terms.
+inline double reproducibleSum(const Comm& comm, std::size_t n, const double* terms) {
+  double s;
+  reproducibleSums(comm, 1, n, [terms](std::size_t i, double* t) { t[0] = terms[i]; }, &s);
+  return s;
+}
+
+}  // namespace signorini::core

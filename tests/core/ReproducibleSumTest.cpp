@@ -1,0 +1,127 @@
+// Reproducible global sums (core::reproducibleSums): the bits of a sum depend only on the multiset
+// of all ranks' terms. Every test distributes one global list of terms over the ranks in several
+// ways (contiguous blocks, round robin, everything on one rank, each rank's terms reversed) and
+// requires bitwise equal results; the terms span 30 orders of magnitude with heavy cancellation, so
+// an ordinary sum differs between those distributions (checked as the control).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultComm.hpp>
+
+#include "ReproducibleSum.hpp"
+
+namespace {
+
+using signorini::core::reproducibleSum;
+using signorini::core::reproducibleSums;
+
+std::vector<double> hardTerms(std::size_t n, unsigned seed) {
+  std::mt19937_64 gen(seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), exponent(-15.0, 15.0);
+  std::vector<double> t(n);
+  for (auto& v : t) v = unit(gen) * std::pow(10.0, exponent(gen));
+  return t;
+}
+
+/// The terms of this rank under distribution \p how of the global list.
+std::vector<double> share(const std::vector<double>& all, int how, int rank, int size) {
+  std::vector<double> mine;
+  const std::size_t n = all.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool take = how == 0   ? static_cast<int>(i * size / n) == rank     // blocks
+                      : how == 1 ? static_cast<int>(i % size) == rank         // round robin
+                      : how == 2 ? rank == size - 1                           // all on the last rank
+                                 : static_cast<int>((n - 1 - i) * size / n) == rank;  // blocks, reversed
+    if (take) mine.push_back(all[i]);
+  }
+  if (how == 3) std::reverse(mine.begin(), mine.end());
+  return mine;
+}
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+TEST(ReproducibleSum, SameBitsForEveryDistributionAndOrderOfTheTerms) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const auto all = hardTerms(20000, 7);
+  std::vector<double> results, plain;
+  for (int how = 0; how < 4; ++how) {
+    const auto mine = share(all, how, comm->getRank(), comm->getSize());
+    results.push_back(reproducibleSum(*comm, mine.size(), mine.data()));
+    double local = 0, global = 0;
+    for (double v : mine) local += v;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+    plain.push_back(global);
+  }
+  for (int how = 1; how < 4; ++how) EXPECT_TRUE(sameBits(results[0], results[how])) << results[0] << " " << results[how];
+  // Control: the ordinary sums of the same terms differ between the distributions.
+  bool plainDiffers = false;
+  for (int how = 1; how < 4; ++how) plainDiffers = plainDiffers || !sameBits(plain[0], plain[how]);
+  EXPECT_TRUE(plainDiffers);
+  // Accuracy: the long double reference has errors up to about n 2^-64 max|t| = 1e-15 max|t|; an
+  // ordinary double sum may be off by n 2^-53 max|t| = 2e-12 max|t|.
+  long double exact = 0;
+  double largest = 0;
+  for (double v : all) exact += v, largest = std::max(largest, std::fabs(v));
+  EXPECT_LE(std::fabs(static_cast<long double>(results[0]) - exact), 1e-14L * largest);
+}
+
+TEST(ReproducibleSum, ExactWhenCancellationLeavesSmallTerms) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  std::vector<double> all;
+  for (int i = 1; i <= 500; ++i) all.push_back(1e16 * i / 7.0), all.push_back(-1e16 * i / 7.0);
+  all.push_back(1.0);
+  all.push_back(3.0);
+  std::mt19937 gen(3);
+  std::shuffle(all.begin(), all.end(), gen);
+  for (int how = 0; how < 4; ++how) {
+    const auto mine = share(all, how, comm->getRank(), comm->getSize());
+    EXPECT_EQ(reproducibleSum(*comm, mine.size(), mine.data()), 4.0) << "distribution " << how;
+  }
+}
+
+TEST(ReproducibleSum, SeveralSumsAtOnceEqualSingleSums) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const auto x = hardTerms(5000, 11), y = hardTerms(5000, 12);
+  const auto mx = share(x, 1, comm->getRank(), comm->getSize()), my = share(y, 1, comm->getRank(), comm->getSize());
+  double both[3];
+  reproducibleSums(
+      *comm, 3, mx.size(),
+      [&](std::size_t i, double* t) {
+        t[0] = mx[i];
+        t[1] = my[i];
+        t[2] = mx[i] * my[i];
+      },
+      both);
+  std::vector<double> products(mx.size());
+  for (std::size_t i = 0; i < mx.size(); ++i) products[i] = mx[i] * my[i];
+  EXPECT_TRUE(sameBits(both[0], reproducibleSum(*comm, mx.size(), mx.data())));
+  EXPECT_TRUE(sameBits(both[1], reproducibleSum(*comm, my.size(), my.data())));
+  EXPECT_TRUE(sameBits(both[2], reproducibleSum(*comm, products.size(), products.data())));
+}
+
+TEST(ReproducibleSum, EmptyZeroAndNonFiniteSums) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  EXPECT_EQ(reproducibleSum(*comm, 0, nullptr), 0.0);
+  const std::vector<double> zeros(10, 0.0);
+  EXPECT_EQ(reproducibleSum(*comm, zeros.size(), zeros.data()), 0.0);
+  std::vector<double> withInf = {1.0, comm->getRank() == 0 ? std::numeric_limits<double>::infinity() : 2.0};
+  EXPECT_TRUE(std::isinf(reproducibleSum(*comm, withInf.size(), withInf.data())));
+  std::vector<double> withNan = {1.0, comm->getRank() == comm->getSize() - 1 ? std::nan("") : 2.0};
+  EXPECT_TRUE(std::isnan(reproducibleSum(*comm, withNan.size(), withNan.data())));
+  // Tiny and huge magnitudes keep their bits through the scaling.
+  const std::vector<double> tiny = {1e-300, 3e-300}, huge = {1e300, -3e299};
+  const std::vector<double> tinyMine = share(tiny, 0, comm->getRank(), comm->getSize());
+  const std::vector<double> hugeMine = share(huge, 0, comm->getRank(), comm->getSize());
+  EXPECT_NEAR(reproducibleSum(*comm, tinyMine.size(), tinyMine.data()), 4e-300, 4e-300 * 0x1p-52);
+  EXPECT_NEAR(reproducibleSum(*comm, hugeMine.size(), hugeMine.data()), 7e299, 7e299 * 0x1p-52);
+}
+
+}  // namespace
