@@ -8,9 +8,11 @@
 #include <Tpetra_Vector.hpp>
 
 #include "AssemblyTools.hpp"
+#include "EntrySums.hpp"
 #include "Error.hpp"
 #include "MpiComm.hpp"
 #include "Q1Kernels.hpp"
+#include "ReproducibleSum.hpp"
 
 namespace signorini::fem {
 
@@ -31,14 +33,59 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
                                              const std::vector<char>& lumpMassAt) const {
   auto A = pattern_->begin();
   assembleInto(A.local, A.local, massCoeff * rho, stiffCoeff * kappa, lumpMassAt);
-  return pattern_->end(A, dirichlet_);
+  auto result = pattern_->end(A, dirichlet_);
+  if (core::reproducibleArithmetic()) {
+    std::vector<Contribution> both;
+    cellContributions(massCoeff * rho, stiffCoeff * kappa, lumpMassAt, &both, &both);
+    canonicalSums(both).writeInto(*result, dirichlet_);
+  }
+  return result;
 }
 
 std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> Q1Assembler::assembleMassAndStiffness(const ProblemData& problem,
                                                                                 const std::vector<char>& lumpAt) const {
   auto M = pattern_->begin(), K = pattern_->begin();
   assembleInto(M.local, K.local, problem.density, problem.stiffness, lumpAt);
-  return {pattern_->end(M, dirichlet_), pattern_->end(K, dirichlet_)};
+  std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> result{pattern_->end(M, dirichlet_), pattern_->end(K, dirichlet_)};
+  if (core::reproducibleArithmetic()) {
+    std::vector<Contribution> mass, stiffness;
+    cellContributions(problem.density, problem.stiffness, lumpAt, &mass, &stiffness);
+    canonicalSums(mass).writeInto(*result.first, dirichlet_);
+    canonicalSums(stiffness).writeInto(*result.second, dirichlet_);
+  }
+  return result;
+}
+
+EntrySums Q1Assembler::canonicalSums(const std::vector<Contribution>& contributions) const {
+  return EntrySums(*mesh_.ownedMap(), *mesh_.overlapMap(), mesh_.ownedToOverlap(), contributions);
+}
+
+void Q1Assembler::cellContributions(double cm, double ck, const std::vector<char>& lumpMassAt,
+                                    std::vector<Contribution>* mass, std::vector<Contribution>* stiffness) const {
+  const auto& X = mesh_.cornerCoordsHost;
+  const auto& dofs = mesh_.cornerDofsHost;
+  const auto& wts = mesh_.cornerWeightsHost;
+  const auto overlap = mesh_.overlapMap();
+  const bool anyLump = std::any_of(lumpMassAt.begin(), lumpMassAt.end(), [](char f) { return f != 0; });
+  for (LO e = 0; e < mesh_.numLocalCells(); ++e) {
+    double Xe[4][2], Ke[4][4], Me[4][4];
+    for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
+    q1ElementMatrices(Xe, cm, ck, Me, Ke);
+    for (int a = 0; a < 4; ++a)
+      for (int ka = 0; ka < 2; ++ka) {
+        const LO row = dofs(e, a, ka);
+        if (row < 0 || dirichlet_[row]) continue;
+        for (int b = 0; b < 4; ++b)
+          for (int kb = 0; kb < 2; ++kb) {
+            const LO dof = dofs(e, b, kb);
+            if (dof < 0 || dirichlet_[dof]) continue;
+            const double wab = wts(e, a, ka) * wts(e, b, kb);
+            const bool lumped = anyLump && row != dof && (lumpMassAt[row] || lumpMassAt[dof]);
+            mass->push_back({row, overlap->getGlobalElement(lumped ? row : dof), wab * Me[a][b]});
+            stiffness->push_back({row, overlap->getGlobalElement(dof), wab * Ke[a][b]});
+          }
+      }
+  }
 }
 
 void Q1Assembler::assembleInto(const LocalMatrix& one, const LocalMatrix& two, double cm, double ck,
@@ -59,25 +106,7 @@ void Q1Assembler::assembleInto(const LocalMatrix& one, const LocalMatrix& two, d
       KOKKOS_LAMBDA(const LO e) {
         double Xe[4][2], Ke[4][4], Me[4][4];
         for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
-        if (isParallelogram(Xe)) {  // closed forms (2x2 Gauss is exact too)
-          q1ParallelogramMatrices(Xe, Me, Ke);
-          for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b) Me[a][b] *= cm, Ke[a][b] *= ck;
-        } else {
-          for (int a = 0; a < 4; ++a)
-            for (int b = 0; b < 4; ++b) Me[a][b] = Ke[a][b] = 0.0;
-          for (int i = 0; i < 2; ++i)
-            for (int j = 0; j < 2; ++j) {
-              double N[4], gx[4], gy[4];
-              const double w =
-                  kGauss2Weight * kGauss2Weight * q1Gradients(Xe, gauss2Point(i), gauss2Point(j), N, gx, gy);
-              for (int a = 0; a < 4; ++a)
-                for (int b = 0; b < 4; ++b) {
-                  Me[a][b] += w * cm * N[a] * N[b];
-                  Ke[a][b] += w * ck * (gx[a] * gx[b] + gy[a] * gy[b]);
-                }
-            }
-        }
+        q1ElementMatrices(Xe, cm, ck, Me, Ke);
         auto add = [&](const decltype(v1)& values, size_t at, double v) {
           if (kAtomicScatter)
             Kokkos::atomic_add(&values(at), v);
@@ -139,6 +168,7 @@ Kokkos::View<double* [4], DeviceType> sampleAtGaussPoints(const mesh::Q1Mesh& me
 
 void Q1Assembler::assembleLoad(const core::Expression& f, double t, double scale, Vector& out, bool accumulate) const {
   Vector overlap(mesh_.overlapMap());
+  Kokkos::View<double* [4], DeviceType> cellLoads("cellLoads", mesh_.numLocalCells());
   {
     const auto fq = sampleAtGaussPoints(mesh_, f, t);
     auto y = overlap.getLocalViewDevice(Tpetra::Access::OverwriteAll);
@@ -158,12 +188,26 @@ void Q1Assembler::assembleLoad(const core::Expression& f, double t, double scale
                              q1Gradients(Xe, gauss2Point(q & 1), gauss2Point(q >> 1), N, gx, gy);
             for (int a = 0; a < 4; ++a) be[a] += w * scale * fq(e, q) * N[a];
           }
-          for (int a = 0; a < 4; ++a)
+          for (int a = 0; a < 4; ++a) {
+            cellLoads(e, a) = be[a];
             for (int k = 0; k < 2; ++k) {
               const LO row = dofs(e, a, k);
               if (row >= 0 && !dir(row)) Kokkos::atomic_add(&y(row, 0), wts(e, a, k) * be[a]);
             }
+          }
         });
+  }
+  if (core::reproducibleArithmetic()) {
+    const auto loads = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cellLoads);
+    std::vector<Contribution> contributions;
+    for (LO e = 0; e < mesh_.numLocalCells(); ++e)
+      for (int a = 0; a < 4; ++a)
+        for (int k = 0; k < 2; ++k) {
+          const LO row = mesh_.cornerDofsHost(e, a, k);
+          if (row >= 0 && !dirichlet_[row]) contributions.push_back({row, 0, mesh_.cornerWeightsHost(e, a, k) * loads(e, a)});
+        }
+    canonicalSums(contributions).writeInto(out, accumulate);
+    return;
   }
   addExported(overlap, *exporter_, out, accumulate);
 }
@@ -198,6 +242,8 @@ void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned 
     Kokkos::deep_copy(nodes, nh);
   }
   Vector overlap(mesh_.overlapMap());
+  // Per edge, Gauss point and end point: the contribution to the end point's row.
+  Kokkos::View<double* [2][2], DeviceType> edgeLoads("edgeLoads", ne);
   {
     auto y = overlap.getLocalViewDevice(Tpetra::Access::OverwriteAll);
     Kokkos::deep_copy(y, 0.0);
@@ -206,10 +252,23 @@ void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned 
         "signorini::boundaryLoad", Kokkos::RangePolicy<ExecSpace>(0, ne), KOKKOS_LAMBDA(const LO k) {
           for (int g = 0; g < 2; ++g) {
             const double s = gauss2Point(g), v = scale * kGauss2Weight * len(k) * qg(k, g);
+            edgeLoads(k, g, 0) = v * (1 - s);
+            edgeLoads(k, g, 1) = v * s;
             if (!dir(nodes(k, 0))) Kokkos::atomic_add(&y(nodes(k, 0), 0), v * (1 - s));
             if (!dir(nodes(k, 1))) Kokkos::atomic_add(&y(nodes(k, 1), 0), v * s);
           }
         });
+  }
+  if (core::reproducibleArithmetic()) {
+    const auto loads = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), edgeLoads);
+    const auto nh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), nodes);
+    std::vector<Contribution> contributions;
+    for (LO k = 0; k < ne; ++k)
+      for (int g = 0; g < 2; ++g)
+        for (int end = 0; end < 2; ++end)
+          if (!dirichlet_[nh(k, end)]) contributions.push_back({nh(k, end), 0, loads(k, g, end)});
+    canonicalSums(contributions).writeInto(out, true);
+    return;
   }
   addExported(overlap, *exporter_, out, true);
 }

@@ -17,6 +17,8 @@
 namespace signorini::fem {
 
 class Q1Pattern;
+class EntrySums;
+struct Contribution;
 
 class Q1Assembler : public Assembler {
  public:
@@ -86,6 +88,12 @@ class Q1Assembler : public Assembler {
   /// operator); both opened by pattern_. Dirichlet rows and columns stay empty.
   void assembleInto(const LocalMatrix& first, const LocalMatrix& second, double cm, double ck,
                     const std::vector<char>& lumpMassAt) const;
+  /// Reproducible arithmetic (core::reproducibleArithmetic()): the cells' contributions to M
+  /// (times cm, lumped at \p lumpMassAt) and K (times ck), one per entry and cell, Dirichlet rows
+  /// and columns left out, for EntrySums; \p mass and \p stiffness may be the same list.
+  void cellContributions(double cm, double ck, const std::vector<char>& lumpMassAt, std::vector<Contribution>* mass,
+                         std::vector<Contribution>* stiffness) const;
+  EntrySums canonicalSums(const std::vector<Contribution>& contributions) const;
   RCP<const Tpetra::Export<LO, GO, Node>> exporter_;
   RCP<const Tpetra::Import<LO, GO, Node>> importer_;
 };

@@ -79,4 +79,27 @@ KOKKOS_INLINE_FUNCTION void q1ParallelogramMatrices(const double X[4][2], double
     }
 }
 
+/// Mass (times cm) and stiffness (times ck) matrices of the cell with corners X: closed forms on
+/// parallelograms (2x2 Gauss is exact there too), 2x2 Gauss otherwise.
+KOKKOS_INLINE_FUNCTION void q1ElementMatrices(const double X[4][2], double cm, double ck, double M[4][4], double K[4][4]) {
+  if (isParallelogram(X)) {
+    q1ParallelogramMatrices(X, M, K);
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) M[a][b] *= cm, K[a][b] *= ck;
+    return;
+  }
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) M[a][b] = K[a][b] = 0.0;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) {
+      double N[4], gx[4], gy[4];
+      const double w = kGauss2Weight * kGauss2Weight * q1Gradients(X, gauss2Point(i), gauss2Point(j), N, gx, gy);
+      for (int a = 0; a < 4; ++a)
+        for (int b = 0; b < 4; ++b) {
+          M[a][b] += w * cm * N[a] * N[b];
+          K[a][b] += w * ck * (gx[a] * gx[b] + gy[a] * gy[b]);
+        }
+    }
+}
+
 }  // namespace signorini::fem

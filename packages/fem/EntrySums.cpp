@@ -1,0 +1,123 @@
+#include "EntrySums.hpp"
+
+#include <algorithm>
+
+#include <mpi.h>
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Distributor.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "Error.hpp"
+#include "MpiComm.hpp"
+
+namespace signorini::fem {
+
+namespace {
+struct Packed {
+  long long row, column;
+  double value;
+};
+}  // namespace
+
+EntrySums::EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<LO, GO, Node>& ownedToOverlap,
+                     const std::vector<Contribution>& contributions) {
+  const LO nOwned = static_cast<LO>(owned.getNodeNumElements());
+  const MPI_Comm comm = core::rawMpiComm(*owned.getComm());
+  int size, rank;
+  MPI_Comm_size(comm, &size);
+  MPI_Comm_rank(comm, &rank);
+  // Owner of every overlap row.
+  std::vector<int> owner(overlap.getNodeNumElements(), rank);
+  {  // the remote rows arrive from their owners in the distributor's order
+    const auto remote = ownedToOverlap.getRemoteLIDs();
+    const auto& distributor = ownedToOverlap.getDistributor();
+    const auto from = distributor.getProcsFrom();
+    const auto lengths = distributor.getLengthsFrom();
+    size_t j = 0;
+    for (size_t i = 0; i < distributor.getNumReceives(); ++i)
+      for (size_t k = 0; k < lengths[i]; ++k) owner[remote[j++]] = from[i];
+    SIGNORINI_ASSERT(j == remote.size(), "EntrySums: remote rows do not match the importer");
+  }
+  // The owned rows' contributions, with those received from the other ranks.
+  std::vector<Packed> mine;
+  std::vector<std::vector<Packed>> outgoing(size);
+  for (const auto& c : contributions) {
+    SIGNORINI_ASSERT(c.row >= 0 && static_cast<size_t>(c.row) < owner.size(), "EntrySums: row outside the overlap map");
+    const Packed p{static_cast<long long>(overlap.getGlobalElement(c.row)), static_cast<long long>(c.column), c.value};
+    if (owner[c.row] == rank)
+      mine.push_back(p);
+    else
+      outgoing[owner[c.row]].push_back(p);
+  }
+  if (size > 1) {
+    std::vector<int> sendCounts(size), recvCounts(size), sendOffsets(size, 0), recvOffsets(size, 0);
+    for (int r = 0; r < size; ++r) sendCounts[r] = static_cast<int>(outgoing[r].size() * sizeof(Packed));
+    MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, comm);
+    std::vector<Packed> send;
+    for (int r = 0; r < size; ++r) {
+      if (r > 0) sendOffsets[r] = sendOffsets[r - 1] + sendCounts[r - 1];
+      if (r > 0) recvOffsets[r] = recvOffsets[r - 1] + recvCounts[r - 1];
+      send.insert(send.end(), outgoing[r].begin(), outgoing[r].end());
+    }
+    const size_t received = (recvOffsets[size - 1] + recvCounts[size - 1]) / sizeof(Packed);
+    const size_t before = mine.size();
+    mine.resize(before + received);
+    MPI_Alltoallv(send.data(), sendCounts.data(), sendOffsets.data(), MPI_BYTE, mine.data() + before,
+                  recvCounts.data(), recvOffsets.data(), MPI_BYTE, comm);
+  }
+  // Bucket by owned row, then sort each row by (column, value) and add the runs of one column.
+  std::vector<size_t> start(nOwned + 1, 0);
+  std::vector<LO> rowOf(mine.size());
+  for (size_t i = 0; i < mine.size(); ++i) {
+    rowOf[i] = owned.getLocalElement(mine[i].row);
+    SIGNORINI_ASSERT(rowOf[i] >= 0, "EntrySums: a contribution reached a rank that does not own its row");
+    ++start[rowOf[i] + 1];
+  }
+  for (LO r = 0; r < nOwned; ++r) start[r + 1] += start[r];
+  std::vector<std::pair<GO, double>> sorted(mine.size());
+  {
+    std::vector<size_t> fill(start.begin(), start.end() - 1);
+    for (size_t i = 0; i < mine.size(); ++i) sorted[fill[rowOf[i]]++] = {mine[i].column, mine[i].value};
+  }
+  rowStart_.assign(nOwned + 1, 0);
+  for (LO r = 0; r < nOwned; ++r) {
+    std::sort(sorted.begin() + start[r], sorted.begin() + start[r + 1]);
+    for (size_t i = start[r]; i < start[r + 1];) {
+      const GO column = sorted[i].first;
+      double sum = 0.0;
+      for (; i < start[r + 1] && sorted[i].first == column; ++i) sum += sorted[i].second;
+      column_.push_back(column);
+      value_.push_back(sum);
+    }
+    rowStart_[r + 1] = column_.size();
+  }
+}
+
+double EntrySums::operator()(LO row, GO column) const {
+  const auto begin = column_.begin() + rowStart_[row], end = column_.begin() + rowStart_[row + 1];
+  const auto it = std::lower_bound(begin, end, column);
+  return it != end && *it == column ? value_[it - column_.begin()] : 0.0;
+}
+
+void EntrySums::writeInto(CrsMatrix& A, const std::vector<char>& keepRows) const {
+  const auto local = A.getLocalMatrixDevice();
+  const auto colMap = A.getColMap();
+  SIGNORINI_ASSERT(static_cast<size_t>(local.numRows()) + 1 == rowStart_.size(), "EntrySums: rows do not match");
+  for (LO r = 0; r < local.numRows(); ++r) {
+    if (!keepRows.empty() && keepRows[r]) continue;
+    for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k)
+      local.values(k) = (*this)(r, colMap->getGlobalElement(local.graph.entries(k)));
+  }
+}
+
+void EntrySums::writeInto(Vector& out, bool accumulate) const {
+  auto h = out.getLocalViewHost(Tpetra::Access::ReadWrite);
+  SIGNORINI_ASSERT(h.extent(0) + 1 == rowStart_.size(), "EntrySums: rows do not match");
+  for (size_t r = 0; r < h.extent(0); ++r) {
+    const double s = (*this)(static_cast<LO>(r), 0);
+    h(r, 0) = accumulate ? h(r, 0) + s : s;
+  }
+}
+
+}  // namespace signorini::fem

@@ -1,0 +1,45 @@
+#pragma once
+/// \file EntrySums.hpp
+/// Partition-independent assembly sums (reproducible arithmetic, docs/reproducibility.md): each
+/// contribution of a cell to an entry (row, column) of a matrix or vector goes to the rank that
+/// owns the row, the contributions of an entry are sorted by value and added in that order. The
+/// bits of every entry then depend only on the multiset of its contributions, which is the same
+/// on any number of ranks; a rank's partial sum, added to the owner's by an export, is not.
+#include <vector>
+
+#include <Tpetra_Import.hpp>
+
+#include "Types.hpp"
+
+namespace signorini::fem {
+
+/// One cell's contribution to entry (row, column): row an overlap-map local id, column a global id
+/// (0 for vectors).
+struct Contribution {
+  LO row;
+  GO column;
+  double value;
+};
+
+class EntrySums {
+ public:
+  /// Collective. \p ownedToOverlap tells the owner of every overlap row that is not owned (the
+  /// owned rows come first in the overlap order).
+  EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<LO, GO, Node>& ownedToOverlap,
+            const std::vector<Contribution>& contributions);
+
+  /// The sum of entry (owned row \p row, global column \p column); 0 without contributions.
+  double operator()(LO row, GO column) const;
+  /// Overwrites the values of \p A (rows: the owned map) with the sums, except in the rows flagged
+  /// in \p keepRows (owned local ids; an empty vector keeps none).
+  void writeInto(CrsMatrix& A, const std::vector<char>& keepRows) const;
+  /// out = sums (or out + sums when \p accumulate) for every owned row.
+  void writeInto(Vector& out, bool accumulate) const;
+
+ private:
+  std::vector<size_t> rowStart_;
+  std::vector<GO> column_;
+  std::vector<double> value_;
+};
+
+}  // namespace signorini::fem

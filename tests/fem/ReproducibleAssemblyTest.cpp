@@ -1,0 +1,172 @@
+// Partition-independent assembly (EntrySums under core::reproducibleArithmetic()): the mass and
+// stiffness matrices, a combined operator with lumped mass on a boundary, and body and boundary
+// loads, assembled on a graded mesh with hanging nodes distributed over all ranks, have exactly
+// the bits of the same assembly on one rank (the same forest, built on MPI_COMM_SELF on every
+// rank). Entries are matched through the nodes' coordinates (dyadic, so exact).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <map>
+#include <memory>
+
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "../TestMesh.hpp"
+#include "Expression.hpp"
+#include "ProblemData.hpp"
+#include "Q1Assembler.hpp"
+#include "ReproducibleSum.hpp"
+
+using namespace signorini;
+
+namespace {
+
+using Point = std::pair<double, double>;
+
+/// One discretisation of the graded test mesh on \p comm.
+struct Discretisation {
+  std::shared_ptr<mesh::CoarseMesh> coarse = mesh::CoarseMesh::rectangle(0.0, 1.5, 0.0, 1.0, 3, 2);
+  std::unique_ptr<mesh::BoundarySegments> segments;
+  std::unique_ptr<mesh::Forest> forest;
+  std::unique_ptr<mesh::Q1Mesh> mesh;
+  std::unique_ptr<fem::Q1Assembler> assembler;
+  explicit Discretisation(const RCP<const Comm>& comm) {
+    segments = std::make_unique<mesh::BoundarySegments>(
+        std::vector<std::pair<std::string, std::string>>{{"left", "left"}, {"right", "right"}, {"bottom", "bottom"}, {"top", "top"}},
+        *coarse);
+    forest = std::make_unique<mesh::Forest>(coarse, core::rawMpiComm(*comm), 2);
+    test::refineAt(*forest, 0.4, 0.6, 3);
+    test::refineAt(*forest, 0.999, 0.001, 2);
+    forest->balance();
+    forest->partition();
+    mesh = std::make_unique<mesh::Q1Mesh>(*forest, *segments, comm);
+    assembler = std::make_unique<fem::Q1Assembler>(*mesh, mesh->nodesOnSegments(1u << segments->index("left", "test")));
+  }
+  /// Coordinates of the owned unknowns, imported to \p map.
+  std::vector<Point> coordinates(const RCP<const Map>& map) const {
+    Vector x(mesh->ownedMap()), y(mesh->ownedMap()), xm(map), ym(map);
+    {
+      auto xh = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      auto yh = y.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (size_t i = 0; i < xh.extent(0); ++i) xh(i, 0) = mesh->nodeCoords()[i][0], yh(i, 0) = mesh->nodeCoords()[i][1];
+    }
+    Tpetra::Import<LO, GO, Node> importer(mesh->ownedMap(), map);
+    xm.doImport(x, importer, Tpetra::INSERT);
+    ym.doImport(y, importer, Tpetra::INSERT);
+    auto xh = xm.getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto yh = ym.getLocalViewHost(Tpetra::Access::ReadOnly);
+    std::vector<Point> points(xh.extent(0));
+    for (size_t i = 0; i < points.size(); ++i) points[i] = {xh(i, 0), yh(i, 0)};
+    return points;
+  }
+};
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+/// Entries of A by (row point, column point).
+std::map<std::pair<Point, Point>, double> entries(const Discretisation& d, const CrsMatrix& A) {
+  const auto rows = d.coordinates(A.getRowMap()), columns = d.coordinates(A.getColMap());
+  std::map<std::pair<Point, Point>, double> out;
+  const auto local = A.getLocalMatrixHost();
+  for (LO r = 0; r < local.numRows(); ++r)
+    for (auto k = local.graph.row_map(r); k < local.graph.row_map(r + 1); ++k)
+      out[{rows[r], columns[local.graph.entries(k)]}] = local.values(k);
+  return out;
+}
+
+std::map<Point, double> entries(const Discretisation& d, const Vector& v) {
+  const auto rows = d.coordinates(v.getMap());
+  std::map<Point, double> out;
+  auto h = v.getLocalViewHost(Tpetra::Access::ReadOnly);
+  for (size_t r = 0; r < h.extent(0); ++r) out[rows[r]] = h(r, 0);
+  return out;
+}
+
+/// Number of this rank's entries of \p distributed whose bits differ from \p serial's (all present there).
+template <class Key>
+int differing(const std::map<Key, double>& distributed, const std::map<Key, double>& serial) {
+  int count = 0;
+  for (const auto& [key, value] : distributed) {
+    const auto it = serial.find(key);
+    if (it == serial.end() || !sameBits(value, it->second)) ++count;
+  }
+  return count;
+}
+
+struct Assembled {
+  std::map<std::pair<Point, Point>, double> M, K, A;
+  std::map<Point, double> load;
+};
+
+Assembled assemble(const Discretisation& d) {
+  auto p = fem::ProblemData::getValidParameters();
+  p.set("Density", 1.3);
+  p.set("Stiffness", 0.7);
+  const fem::ProblemData problem(p, *d.segments);
+  const auto lump = d.mesh->nodesOnSegments(1u << d.segments->index("right", "test"));
+  const auto [M, K] = d.assembler->assembleMassAndStiffness(problem, {});
+  const auto A = d.assembler->assembleOperator(1.0, 1.7e-3, 1.3, 0.7, lump);
+  Vector load(d.mesh->ownedMap());
+  d.assembler->assembleLoad(core::Expression("sin(3*x) * cos(2*y) + x*y", "test"), 0.0, 1.0, load);
+  d.assembler->addBoundaryLoad(core::Expression("exp(y)", "test"), 0.0, 1u << d.segments->index("top", "test"), 0.37, load);
+  return {entries(d, *M), entries(d, *K), entries(d, *A), entries(d, load)};
+}
+
+int sumOverRanks(int local) {
+  int global = 0;
+  Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return global;
+}
+
+}  // namespace
+
+TEST(ReproducibleAssembly, DistributedEntriesHaveTheBitsOfTheOneRankAssembly) {
+  const auto world = Tpetra::getDefaultComm();
+  const RCP<const Comm> self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+  core::setReproducibleArithmetic(true);
+  const Discretisation distributed(world), serial(self);
+  const Assembled d = assemble(distributed), s = assemble(serial);
+  core::setReproducibleArithmetic(false);
+  EXPECT_GT(sumOverRanks(static_cast<int>(d.M.size())), 1000);
+  EXPECT_EQ(sumOverRanks(differing(d.M, s.M)), 0);
+  EXPECT_EQ(sumOverRanks(differing(d.K, s.K)), 0);
+  EXPECT_EQ(sumOverRanks(differing(d.A, s.A)), 0);
+  EXPECT_EQ(sumOverRanks(differing(d.load, s.load)), 0);
+  // Every row has the serial row's length (no entry lost or added).
+  EXPECT_EQ(sumOverRanks(static_cast<int>(d.A.size())), static_cast<int>(s.A.size()));
+}
+
+TEST(ReproducibleAssembly, SameValuesAsTheOrdinaryAssemblyToRounding) {
+  const auto world = Tpetra::getDefaultComm();
+  const Discretisation d(world);
+  const Assembled plain = assemble(d);
+  core::setReproducibleArithmetic(true);
+  const Assembled canonical = assemble(d);
+  core::setReproducibleArithmetic(false);
+  auto close = [](const auto& a, const auto& b) {
+    int bad = 0;
+    for (const auto& [key, value] : a) {
+      const auto it = b.find(key);
+      if (it == b.end() || std::fabs(value - it->second) > 1e-14 * (1.0 + std::fabs(value))) ++bad;
+    }
+    return bad;
+  };
+  EXPECT_EQ(sumOverRanks(close(plain.M, canonical.M)), 0);
+  EXPECT_EQ(sumOverRanks(close(plain.K, canonical.K)), 0);
+  EXPECT_EQ(sumOverRanks(close(plain.A, canonical.A)), 0);
+  EXPECT_EQ(sumOverRanks(close(plain.load, canonical.load)), 0);
+}
+
+TEST(ReproducibleAssembly, OrdinaryAssemblyDiffersOnSeveralRanks) {  // the control
+  const auto world = Tpetra::getDefaultComm();
+  const RCP<const Comm> self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+  const Discretisation distributed(world), serial(self);
+  const Assembled d = assemble(distributed), s = assemble(serial);
+  const int differ = sumOverRanks(differing(d.M, s.M) + differing(d.K, s.K) + differing(d.A, s.A) + differing(d.load, s.load));
+  if (world->getRank() == 0) std::cout << "ordinary assembly: " << differ << " entries differ from one rank's\n";
+  if (world->getSize() > 1) EXPECT_GT(differ, 0);
+}
