@@ -15,6 +15,8 @@
 /// Cost: two passes over the terms (the largest term, then the parts) and two global reductions.
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <cstring>
 
 #include "Error.hpp"
 #include "MpiComm.hpp"
@@ -26,14 +28,24 @@ namespace detail {
 inline constexpr double kFoldSigma[3] = {1.5 * 33554432.0, 1.5 * 0.25, 1.5 * 0.25 / 134217728.0};
 inline constexpr std::size_t kMaxTerms = std::size_t(1) << 26;
 
-/// Adds the three parts of \p t (|t| < 1) to folds[0..2].
+/// Adds the three parts of \p t (|t| < 1) to folds[0..2]. (sigma + t) - sigma must be evaluated
+/// as written: the project is never built with -ffast-math (reassociation), and a contraction
+/// into an FMA cannot change a result here (the only product before it, the scaling by a power
+/// of two, is exact).
 inline void addFolded(double t, double* folds) {
   for (int f = 0; f < 3; ++f) {
-    const volatile double raised = kFoldSigma[f] + t;  // volatile: no contraction or reassociation
-    const double part = raised - kFoldSigma[f];
+    const double part = (kFoldSigma[f] + t) - kFoldSigma[f];
     folds[f] += part;
     t -= part;
   }
+}
+
+/// 2^e as a double for e in [-1022, 1023] (exact; built from the exponent bits).
+inline double powerOfTwo(int e) {
+  const std::uint64_t bits = static_cast<std::uint64_t>(1023 + e) << 52;
+  double v;
+  std::memcpy(&v, &bits, sizeof v);
+  return v;
 }
 
 /// Global maxima of \p count values (in place).

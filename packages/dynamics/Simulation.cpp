@@ -23,6 +23,8 @@
 #include "Error.hpp"
 #include "Forest.hpp"
 #include "JacobiCG.hpp"
+#include "ReproducibleLinearAlgebra.hpp"
+#include "ReproducibleSum.hpp"
 #include "LinearSolver.hpp"
 #include "MpiComm.hpp"
 #include "Newmark.hpp"
@@ -147,6 +149,11 @@ core::ParameterList Simulation::getValidParameters() {
   p.set("Contact", solvers::ContactQP::getValidParameters(), "Contact multipliers and the per-step QP");
   p.set("Linear Solver", solvers::LinearSolver::getValidParameters(), "A^{-1}: Belos + MueLu/Jacobi");
   p.set("Output", outputParameters(), "Files and progress reports");
+  core::ParameterList parallel("Parallel");
+  core::addBool(parallel, "Reproducible Arithmetic", false,
+                "Order every sum so that the results have the same bits on any number of ranks (docs/reproducibility.md; "
+                "scalar problems with the Jacobi preconditioner; about 3.5 times slower)");
+  p.set("Parallel", parallel, "How the work is shared between MPI ranks");
   return p;
 }
 
@@ -297,7 +304,7 @@ struct Simulation::Impl {
     Vector rhs(d.assembler->ownedMap()), Ku(d.assembler->ownedMap());
     d.assembler->assembleLoad(problem->bodyForce, 0.0, 1.0, rhs);
     d.assembler->addBoundaryLoad(problem->neumannData, 0.0, problem->neumannMask, 1.0, rhs);
-    d.K->apply(u, Ku);
+    core::apply(*d.K, u, Ku);
     rhs.update(-1.0, Ku, 1.0);
     a.putScalar(0.0);
     massSolver(d).solve(rhs, a);
@@ -320,10 +327,10 @@ struct Simulation::Impl {
   /// Kinetic energy 1/2 v^T M v and strain energy 1/2 u^T K u.
   std::pair<double, double> energies(const Discretisation& d, const Vector& u, const Vector& v) const {
     Vector tmp(d.assembler->ownedMap());
-    d.M->apply(v, tmp);
-    const double kin = 0.5 * tmp.dot(v);
-    d.K->apply(u, tmp);
-    return {kin, 0.5 * tmp.dot(u)};
+    core::apply(*d.M, v, tmp);
+    const double kin = 0.5 * core::dot(tmp, v);
+    core::apply(*d.K, u, tmp);
+    return {kin, 0.5 * core::dot(tmp, u)};
   }
   double energy(const Discretisation& d, const Vector& u, const Vector& v) const {
     const auto [kin, strain] = energies(d, u, v);
@@ -333,9 +340,9 @@ struct Simulation::Impl {
   /// kinetic + strain (\p energy, from energy()) + (beta - 1/4) k^2 / 2 a^T M a.
   double newmarkEnergy(const Discretisation& d, double energy, const Vector& a) const {
     Vector tmp(d.assembler->ownedMap());
-    d.M->apply(a, tmp);
+    core::apply(*d.M, a, tmp);
     const double k = newmark->timeStep;
-    return energy + (newmark->beta - 0.25) * 0.5 * k * k * tmp.dot(a);
+    return energy + (newmark->beta - 0.25) * 0.5 * k * k * core::dot(tmp, a);
   }
 
   /// Moves \p fields (owned vectors on the old mesh; here the step's two Newmark predictors,
@@ -417,6 +424,11 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   if (!file.empty() && file[0] != '/') meshParams.set("File", directoryOf(deckPath) + "/" + file);
   const int level = meshParams.get<int>("Refinement Level");
   I.components = deck.sublist("Problem").get<std::string>("Type") == "scalar wave" ? 1 : 2;
+  const bool reproducible = deck.sublist("Parallel").get<bool>("Reproducible Arithmetic");
+  if (reproducible && I.components != 1)
+    SIGNORINI_USER_ERROR("Parallel/Reproducible Arithmetic: available for Problem/Type = \"scalar wave\" only "
+                         "(the elasticity assembler and estimator do not order their sums yet)");
+  core::setReproducibleArithmetic(reproducible);
   if (file.empty())
     checkMeshFits(meshParams.get<int>("Cells X") * std::pow(4.0, level) * meshParams.get<int>("Cells Y"),
                   "Mesh/Cells X = " + std::to_string(meshParams.get<int>("Cells X")) + ", Cells Y = " +
@@ -686,13 +698,13 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         // F^n = beta k^2 (f(t_n) + Neumann) + M (u + k v + (1/2 - beta) k^2 a)
         if (d->projection) {  // the predictor projected onto the admissible set in the mass norm
           Vector Mpred(owned);
-          d->M->apply(pred, Mpred);
+          core::apply(*d->M, pred, Mpred);
           d->assembler->zeroDirichlet(Mpred);
           std::vector<double> mu(d->coupling->numSegments(), 0.0), gapPred;
           d->projection->solve(I.massSolver(*d), *d->coupling, Mpred, d->coupling->weightedObstacle(I.problem->obstacle, t),
                                mu, pred, gapPred);
         }
-        d->M->apply(pred, F);
+        core::apply(*d->M, pred, F);
         d->assembler->assembleLoad(I.problem->bodyForce, t, beta * k * k, load);
         d->assembler->addBoundaryLoad(I.problem->neumannData, t, I.problem->neumannMask, beta * k * k, load);
         F.update(1.0, load, 1.0);

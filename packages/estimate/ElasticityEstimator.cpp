@@ -238,7 +238,7 @@ EstimatorResult ElasticityEstimator::estimate(const ElasticityEstimatorInput& in
     }
   }
 
-  EstimatorResult res = combineCellTerms(volHost, edgeTerm, s0Share, s0Local, *comm);
+  EstimatorResult res = combineCellTerms(volHost, edgeTerm, s0Share, std::vector<double>{s0Local}, *comm);
 
   // --- s1: the harmonic continuation of (g - sign u_c)_+ from the contact nodes, zero where u_c is fixed.
   if (in.coupling && params_.get<bool>("Compute S1")) {

@@ -13,6 +13,7 @@
 
 #include "CoordinateTable.hpp"
 #include "Error.hpp"
+#include "ReproducibleSum.hpp"
 #include "Q1Kernels.hpp"
 #include "ResidualEstimator.hpp"
 #include "Expression.hpp"
@@ -290,21 +291,60 @@ void forEachInteriorFace(const mesh::Forest& forest, const std::vector<Payload>&
   p4est_ghost_destroy(ghost);
 }
 
+/// Per-cell sums of edge terms: added as they come, or under reproducible arithmetic collected and
+/// added sorted by value, so that the order in which the faces are visited (another on every
+/// partition) does not change the bits.
+class CellSums {
+ public:
+  explicit CellSums(size_t n) : sum_(n, 0.0), ordered_(core::reproducibleArithmetic()) {
+    if (ordered_) terms_.resize(n);
+  }
+  void add(LO cell, double value) {
+    if (ordered_)
+      terms_[cell].push_back(value);
+    else
+      sum_[cell] += value;
+  }
+  /// The sums (call once).
+  std::vector<double>& finish() {
+    if (ordered_)
+      for (size_t e = 0; e < terms_.size(); ++e) {
+        std::sort(terms_[e].begin(), terms_[e].end());
+        for (double v : terms_[e]) sum_[e] += v;
+      }
+    return sum_;
+  }
+
+ private:
+  std::vector<double> sum_;
+  bool ordered_;
+  std::vector<std::vector<double>> terms_;
+};
+
 /// eta_*, s0 and the cell indicators eta_K^2 + (s0 share) from the per-cell parts (DESIGN 1.3),
-/// eta_* and s0 summed over all ranks. \p volume(e) = h_K^2 ||r||^2_K, \p edgeTerm[e] = h_K ||R||^2_{dK}.
+/// eta_* and s0 summed over all ranks. \p volume(e) = h_K^2 ||r||^2_K, \p edgeTerm[e] = h_K ||R||^2_{dK};
+/// \p s0Terms the local terms of s0^2 (the sum of these over all ranks).
 template <class Volume>
 EstimatorResult combineCellTerms(const Volume& volume, const std::vector<double>& edgeTerm,
-                                 const std::vector<double>& s0Share, double s0Local, const Comm& comm) {
+                                 const std::vector<double>& s0Share, const std::vector<double>& s0Terms,
+                                 const Comm& comm) {
   EstimatorResult res;
   res.cellIndicator.resize(edgeTerm.size());
-  double etaLocal = 0;
+  double etaLocal = 0, s0Local = 0;
+  std::vector<double> etaK2(edgeTerm.size());
   for (size_t e = 0; e < edgeTerm.size(); ++e) {
-    const double etaK2 = volume(e) + edgeTerm[e];
-    etaLocal += etaK2;
-    res.cellIndicator[e] = etaK2 + s0Share[e];
+    etaK2[e] = volume(e) + edgeTerm[e];
+    etaLocal += etaK2[e];
+    res.cellIndicator[e] = etaK2[e] + s0Share[e];
   }
+  for (double v : s0Terms) s0Local += v;
   double local2[2] = {etaLocal, s0Local}, global2[2] = {0, 0};
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 2, local2, global2);
+  if (core::reproducibleArithmetic()) {
+    global2[0] = core::reproducibleSum(comm, etaK2.size(), etaK2.data());
+    global2[1] = core::reproducibleSum(comm, s0Terms.size(), s0Terms.data());
+  } else {
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 2, local2, global2);
+  }
   res.etaStar = std::sqrt(std::max(global2[0], 0.0));
   res.s0 = std::sqrt(std::abs(global2[1]));
   return res;

@@ -10,6 +10,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "Error.hpp"
+#include "ReproducibleLinearAlgebra.hpp"
 
 namespace signorini::estimate {
 
@@ -84,7 +85,7 @@ double continuationNorm(const CrsMatrix& full, const RCP<const CrsMatrix>& A, co
   const LO nOwned = static_cast<LO>(owned->getNodeNumElements());
   // Lifting: b = -A_full w on the free nodes, b = w on the prescribed ones (identity rows).
   Vector b(owned), Ad(owned);
-  full.apply(boundary, b);
+  core::apply(full, boundary, b);
   {
     auto bh = b.getLocalViewHost(Tpetra::Access::ReadWrite);
     auto dh = d.getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -101,8 +102,8 @@ double continuationNorm(const CrsMatrix& full, const RCP<const CrsMatrix>& A, co
     for (LO i = 0; i < nOwned; ++i)
       if (prescribed[i]) dh(i, 0) = wh(i, 0);
   }
-  full.apply(d, Ad);
-  return std::sqrt(std::max(d.dot(Ad), 0.0));
+  core::apply(full, d, Ad);
+  return std::sqrt(std::max(core::dot(d, Ad), 0.0));
 }
 
 }  // namespace

@@ -77,11 +77,26 @@ double affineNormalDerivative(const CellPayload& c, double s, double r, const do
   return ((xr1 * us - xs1 * ur) * n[0] + (xs0 * ur - xr0 * us) * n[1]) / det;
 }
 
+/// Whether the face of A is the whole face of B (the cells have one size; a 2:1 face covers half).
+bool sameSizeFace(const FaceSide<CellPayload>& A, const FaceSide<CellPayload>& B) {
+  const double* P0 = A.data->X[p4est_face_corners[A.face][0]];
+  const double* P1 = A.data->X[p4est_face_corners[A.face][1]];
+  return std::abs(faceParameter(B.data->X, B.face, P1) - faceParameter(B.data->X, B.face, P0)) > 0.75;
+}
+
+/// Lexicographic order of the cells' centroids (a partition-independent order of cells).
+bool centroidLess(const CellPayload& a, const CellPayload& b) {
+  double ca[2] = {0, 0}, cb[2] = {0, 0};
+  for (int c = 0; c < 4; ++c)
+    for (int d = 0; d < 2; ++d) ca[d] += a.X[c][d], cb[d] += b.X[c][d];
+  return ca[0] < cb[0] || (ca[0] == cb[0] && ca[1] < cb[1]);
+}
+
 /// Context of the face callback (forEachInteriorFace).
 struct FaceContext {
   const std::vector<CellPayload>* local;
   const std::vector<CellPayload>* ghosts;
-  std::vector<double>* edgeTerm;  ///< per local cell: sum over its interior edges of h_K ||R||^2_E
+  CellSums* edgeTerm;             ///< per local cell: sum over its interior edges of h_K ||R||^2_E
   double kappa, halfBk2;          ///< kappa and beta k^2 / 2
 };
 
@@ -91,8 +106,13 @@ struct FaceContext {
 /// the edge contributes (h_A + h_B) (beta k^2 / 2)^2 ||J||^2_E to eta_*^2 in total. On a hanging
 /// face the coarse cell B receives this for each of its two halves, with its own flux evaluated
 /// on that half.
-void addEdgeJump(const FaceContext& ctx, const FaceSide<CellPayload>& A, const FaceSide<CellPayload>& B) {
-  if (A.local < 0 && B.local < 0) return;
+void addEdgeJump(const FaceContext& ctx, const FaceSide<CellPayload>& A0, const FaceSide<CellPayload>& B0) {
+  if (A0.local < 0 && B0.local < 0) return;
+  // Two cells of one size: under reproducible arithmetic the one with the smaller centroid is A,
+  // whichever way the face walk (another on every partition) found them.
+  const bool swap = core::reproducibleArithmetic() && sameSizeFace(A0, B0) && centroidLess(*B0.data, *A0.data);
+  const FaceSide<CellPayload>& A = swap ? B0 : A0;
+  const FaceSide<CellPayload>& B = swap ? A0 : B0;
   const CellPayload& a = *A.data;
   const CellPayload& b = *B.data;
   const double* P0 = a.X[p4est_face_corners[A.face][0]];
@@ -119,8 +139,8 @@ void addEdgeJump(const FaceContext& ctx, const FaceSide<CellPayload>& A, const F
     }
   }
   const double rSquared = ctx.halfBk2 * ctx.halfBk2 * integral * len;  // ||R||^2_E
-  if (A.local >= 0) (*ctx.edgeTerm)[A.local] += cellDiameter(a.X) * rSquared;
-  if (B.local >= 0) (*ctx.edgeTerm)[B.local] += cellDiameter(b.X) * rSquared;
+  if (A.local >= 0) ctx.edgeTerm->add(A.local, cellDiameter(a.X) * rSquared);
+  if (B.local >= 0) ctx.edgeTerm->add(B.local, cellDiameter(b.X) * rSquared);
 }
 
 
@@ -250,9 +270,9 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
 
   // --- Interior edges (host): flux jumps over every face with a local cell on at least one side,
   //     the neighbours on other ranks taken from p4est's face ghost layer.
-  std::vector<double> edgeTerm(static_cast<size_t>(nc), 0.0);
+  CellSums edgeSums(static_cast<size_t>(nc));
   {
-    FaceContext ctx{&local, nullptr, &edgeTerm, kappa, 0.5 * bk2};
+    FaceContext ctx{&local, nullptr, &edgeSums, kappa, 0.5 * bk2};
     forEachInteriorFace<CellPayload>(
         in.forest, local, [&](const std::vector<CellPayload>& ghosts) { ctx.ghosts = &ghosts; },
         [&](const FaceSide<CellPayload>& a, const FaceSide<CellPayload>& b) { addEdgeJump(ctx, a, b); });
@@ -264,8 +284,7 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
   //     h_K ||R||^2_E goes to the edge's (only) cell. Also s0: sum_j lambda_j int_{E_j} (g - u_h)_+ ds,
   //     each rank over its own contact edges; each edge's |share| goes to its cell.
   const auto& bedges = mesh.boundaryEdges();
-  std::vector<double> s0Share(static_cast<size_t>(nc), 0.0);
-  double s0Local = 0;
+  std::vector<double> s0Share(static_cast<size_t>(nc), 0.0), s0Terms;
   const std::vector<int>* edgeSegment = in.coupling ? &in.coupling->localEdgeSegment() : nullptr;
   if (edgeSegment)
     SIGNORINI_ASSERT(edgeSegment->size() == bedges.size(), "the contact coupling belongs to another mesh");
@@ -290,17 +309,18 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
       }
       integral += kW3[g] * R * R;
     }
-    edgeTerm[be.cell] += cellDiameter(c.X) * integral * len;
+    edgeSums.add(be.cell, cellDiameter(c.X) * integral * len);
 
     if (seg >= 0 && lambda != 0.0) {
       const double contribution =
           lambda * len * positivePartAlongEdge(be, problem.obstacle, t, uh(be.node[0], 0), uh(be.node[1], 0));
-      s0Local += contribution;
+      s0Terms.push_back(contribution);
       s0Share[be.cell] += std::abs(contribution);
     }
   }
 
-  EstimatorResult res = combineCellTerms(volHost, edgeTerm, s0Share, s0Local, *comm);
+  const std::vector<double>& edgeTerm = edgeSums.finish();
+  EstimatorResult res = combineCellTerms(volHost, edgeTerm, s0Share, s0Terms, *comm);
 
   // --- s1: the harmonic continuation d of the nodal values of (g - u_h)_+ on Gamma_C, i.e. the
   //     minimiser of ||v||_1^2 = int |grad v|^2 + v^2 with v = 0 on Gamma_D (first) and v = (g - u_h)_+

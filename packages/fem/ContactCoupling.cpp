@@ -12,6 +12,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "Error.hpp"
+#include "ReproducibleSum.hpp"
 #include "MpiComm.hpp"
 
 namespace signorini::fem {
@@ -192,6 +193,14 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
   const int nc = unknowns.components, comp = unknowns.component;
   SIGNORINI_ASSERT(dirichlet.size() == overlap->getNodeNumElements(), "Dirichlet flags do not match the unknowns");
   auto row = [&](LO node) { return static_cast<LO>(nc * node + comp); };
+  {
+    const double grid = mesh.hMin() / 64;
+    canonicalKeys_.resize(ownedRows->getNodeNumElements());
+    for (size_t r = 0; r < canonicalKeys_.size(); ++r) {
+      const auto& x = mesh.nodeCoords()[r / nc];
+      canonicalKeys_[r] = {std::llround(x[0] / grid), std::llround(x[1] / grid), static_cast<long long>(r % nc)};
+    }
+  }
   using Graph = Tpetra::FECrsGraph<LO, GO, Node>;
   using FEMatrix = Tpetra::FECrsMatrix<Scalar, LO, GO, Node>;
   using LocalMatrix = CrsMatrix::local_matrix_device_type;
@@ -302,7 +311,32 @@ void ContactCoupling::apply(const std::vector<double>& lambda, Vector& y, double
   B_->apply(l, y, Teuchos::NO_TRANS, scale, accumulate ? 1.0 : 0.0);
 }
 
+std::vector<double> ContactCoupling::canonicalSums(int n, const std::vector<std::pair<int, double>>& terms) const {
+  std::vector<int> index;
+  std::vector<double> value;
+  for (const auto& [i, v] : terms) index.push_back(i), value.push_back(v);
+  const MPI_Comm raw = core::rawMpiComm(*comm_);
+  const auto allIndex = core::allGatherv(raw, index);
+  const auto allValue = core::allGatherv(raw, value);
+  std::vector<std::pair<int, double>> all(allIndex.size());
+  for (size_t k = 0; k < all.size(); ++k) all[k] = {allIndex[k], allValue[k]};
+  std::sort(all.begin(), all.end());
+  std::vector<double> out(static_cast<size_t>(n), 0.0);
+  for (const auto& [i, v] : all) out[static_cast<size_t>(i)] += v;
+  return out;
+}
+
 std::vector<double> ContactCoupling::applyTranspose(const Vector& u) const {
+  if (core::reproducibleArithmetic()) {
+    std::vector<std::pair<int, double>> terms;
+    const auto local = B_->getLocalMatrixHost();
+    const auto colMap = B_->getColMap();
+    auto uh = u.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (LO i = 0; i < local.numRows(); ++i)
+      for (auto k = local.graph.row_map(i); k < local.graph.row_map(i + 1); ++k)
+        terms.push_back({static_cast<int>(colMap->getGlobalElement(local.graph.entries(k))), local.values(k) * uh(i, 0)});
+    return canonicalSums(numSegments(), terms);
+  }
   Vector g(segmentMap_);
   B_->apply(u, g, Teuchos::TRANS);
   std::vector<double> out(numSegments(), 0.0);
@@ -379,6 +413,19 @@ std::vector<double> ContactCoupling::coarseLoads(const Assembler& coarse) const 
 
 std::vector<double> ContactCoupling::lumpedSchurComplement(const Vector& d) const {
   const int m = numSegments();
+  if (core::reproducibleArithmetic()) {
+    std::vector<std::pair<int, double>> terms;
+    auto dh = d.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const auto local = B_->getLocalMatrixHost();
+    const auto colMap = B_->getColMap();
+    for (LO i = 0; i < local.numRows(); ++i)
+      for (auto a = local.graph.row_map(i); a < local.graph.row_map(i + 1); ++a)
+        for (auto b = local.graph.row_map(i); b < local.graph.row_map(i + 1); ++b)
+          terms.push_back({static_cast<int>(colMap->getGlobalElement(local.graph.entries(a)) * m +
+                                            colMap->getGlobalElement(local.graph.entries(b))),
+                           local.values(a) * local.values(b) / dh(i, 0)});
+    return canonicalSums(m * m, terms);
+  }
   std::vector<double> local(static_cast<size_t>(m) * m, 0.0), global(local.size(), 0.0);
   auto dh = d.getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto colMap = B_->getColMap();

@@ -62,8 +62,16 @@ class ContactCoupling {
   /// For every segment j: sum_i B_ij^2 / d_i ... the "lumped" Schur complement B^T D^{-1} B for a
   /// positive diagonal d (owned vector), as a dense row-major m x m matrix replicated on all ranks.
   std::vector<double> lumpedSchurComplement(const Vector& d) const;
+  /// A key of each owned unknown that does not depend on the partition (its node's coordinates
+  /// rounded to h_min / 64, then its component): orders the strip of StripSchurApproximation
+  /// under reproducible arithmetic.
+  const std::vector<std::array<long long, 3>>& canonicalKeys() const { return canonicalKeys_; }
 
  private:
+  /// The replicated sums over all ranks of the terms (index, value) of every rank, each index's
+  /// terms sorted by value and added in that order (reproducible arithmetic).
+  std::vector<double> canonicalSums(int n, const std::vector<std::pair<int, double>>& terms) const;
+  std::vector<std::array<long long, 3>> canonicalKeys_;
   RCP<const Comm> comm_;
   ContactUnknowns unknowns_;
   RCP<const Map> segmentMap_;

@@ -7,8 +7,10 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "EntrySums.hpp"
 #include "Error.hpp"
 #include "Q1Kernels.hpp"
+#include "ReproducibleSum.hpp"
 
 namespace signorini::fem {
 namespace {
@@ -67,6 +69,8 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
   std::vector<decltype(overlap[0].getLocalViewHost(Tpetra::Access::ReadWrite))> views;
   for (auto& o : overlap) views.push_back(o.getLocalViewHost(Tpetra::Access::ReadWrite));
   const auto& dir = newAssembler.dirichletFlags();
+  const bool reproducible = core::reproducibleArithmetic();
+  std::vector<std::vector<Contribution>> contributions(reproducible ? nf : 0);
   std::vector<double> treeDeterminant(coarse_.numTrees());
   for (int t = 0; t < coarse_.numTrees(); ++t) treeDeterminant[t] = constantJacobianDeterminant(coarse_, t);
   for (int e = 0; e < overlap_->numTargetCells(); ++e) {
@@ -124,10 +128,23 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
       for (int c = 0; c < 4; ++c)
         for (int k = 0; k < 2; ++k) {
           const LO d = D(e, c, k);
-          if (d >= 0 && !dir[d]) views[f](d, 0) += W(e, c, k) * be[f][c];
+          if (d < 0 || dir[d]) continue;
+          if (reproducible)
+            contributions[f].push_back({d, 0, W(e, c, k) * be[f][c]});
+          else
+            views[f](d, 0) += W(e, c, k) * be[f][c];
         }
   }
   views.clear();
+  if (reproducible) {  // each node's contributions added sorted by value, on its owner (EntrySums)
+    for (int f = 0; f < nf; ++f) {
+      auto b = Teuchos::rcp(new Vector(newMesh_.ownedMap()));
+      EntrySums(*newMesh_.ownedMap(), *newMesh_.overlapMap(), newMesh_.ownedToOverlap(), contributions[f])
+          .writeInto(*b, false);
+      loads.push_back(b);
+    }
+    return loads;
+  }
   for (int f = 0; f < nf; ++f) {
     auto b = Teuchos::rcp(new Vector(newMesh_.ownedMap()));
     b->doExport(overlap[f], newMesh_.overlapToOwned(), Tpetra::ADD);

@@ -10,6 +10,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "Error.hpp"
+#include "ReproducibleLinearAlgebra.hpp"
 #include "ReproducibleSum.hpp"
 
 namespace signorini::solvers {
@@ -245,37 +246,13 @@ std::vector<int> solveGroup(const CrsMatrix& A, const std::vector<const Vector*>
 
 }  // namespace
 
-void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
-  SIGNORINI_ASSERT(A.getGraph()->getExporter().is_null(), "applyCanonical: the row map must be the range map");
-  const auto importer = A.getGraph()->getImporter();
-  Teuchos::RCP<const Vector> columns = Teuchos::rcpFromRef(X);
-  if (!importer.is_null()) {
-    auto imported = Teuchos::rcp(new Vector(A.getColMap(), false));
-    imported->doImport(X, *importer, Tpetra::INSERT);
-    columns = imported;
-  }
-  const auto matrix = A.getLocalMatrixHost();
-  auto xv = columns->getLocalViewHost(Tpetra::Access::ReadOnly);
-  auto yv = Y.getLocalViewHost(Tpetra::Access::OverwriteAll);
-  std::vector<double> products;
-  for (LO i = 0; i < matrix.numRows(); ++i) {
-    const auto begin = matrix.graph.row_map(i), end = matrix.graph.row_map(i + 1);
-    products.clear();
-    for (auto k = begin; k < end; ++k) products.push_back(matrix.values(k) * xv(matrix.graph.entries(k), 0));
-    std::sort(products.begin(), products.end());
-    double sum = 0.0;
-    for (double p : products) sum += p;
-    yv(i, 0) = sum;
-  }
-}
-
 int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativeTolerance,
                               int maxIterations) {
   const Comm& comm = *A.getRangeMap()->getComm();
   const size_t n = A.getRangeMap()->getNodeNumElements();
   Vector diagonal(A.getRowMap()), r(A.getRangeMap()), p(A.getRangeMap()), q(A.getRangeMap());
   A.getLocalDiagCopy(diagonal);
-  applyCanonical(A, x, q);
+  core::applyCanonical(A, x, q);
   auto dv = diagonal.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto bv = b.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
@@ -302,7 +279,7 @@ int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, do
   if (std::sqrt(start[2]) <= target) return 0;
   double rz = start[1];
   for (int it = 1; it <= maxIterations; ++it) {
-    applyCanonical(A, p, q);
+    core::applyCanonical(A, p, q);
     auto qv = q.getLocalViewHost(Tpetra::Access::ReadOnly);
     double pq;
     core::reproducibleSums(comm, 1, n, [&](size_t i, double* t) { t[0] = pv(i, 0) * qv(i, 0); }, &pq);

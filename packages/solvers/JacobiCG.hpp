@@ -23,11 +23,6 @@ int solveJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativ
 std::vector<int> solveJacobiCG(const CrsMatrix& A, const std::vector<const Vector*>& b, const std::vector<Vector*>& x,
                                double relativeTolerance, int maxIterations);
 
-/// Y = A X with every row summed in a partition-independent order: the products of a row sorted
-/// by value, then added left to right. Its bits depend only on the values of A and X, not on the
-/// column map or the number of ranks (X is imported to the column map first when A has an importer).
-void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y);
-
 /// Jacobi CG as solveJacobiCG for one field, with the partition-independent apply above and
 /// core::reproducibleSums for every global sum: the iterates, and so the result and the iteration
 /// count, have the same bits on any number of ranks. solveJacobiCG uses it when

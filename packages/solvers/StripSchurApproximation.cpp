@@ -1,6 +1,7 @@
 #include "StripSchurApproximation.hpp"
 
 #include <algorithm>
+#include <tuple>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -11,6 +12,7 @@
 #include "EnvelopeCholesky.hpp"
 #include "Error.hpp"
 #include "MpiComm.hpp"
+#include "ReproducibleSum.hpp"
 
 namespace signorini::solvers {
 
@@ -120,10 +122,28 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
   MPI_Exscan(&mine, &first, 1, MPI_LONG_LONG, MPI_SUM, raw);
   if (comm->getRank() == 0) first = 0;
   MPI_Allreduce(&mine, &stripSize_, 1, MPI_LONG_LONG, MPI_SUM, raw);
+  // Strip ids: contiguous in rank order, or under reproducible arithmetic in the order of the
+  // unknowns' canonical keys (the same on any number of ranks, so is the factorisation).
+  const bool reproducible = core::reproducibleArithmetic();
+  std::vector<long long> stripId(static_cast<size_t>(nStrip));
+  for (LO s = 0; s < nStrip; ++s) stripId[s] = first + s;
+  if (reproducible) {
+    std::vector<long long> keys;
+    for (LO s = 0; s < nStrip; ++s)
+      for (long long k : B.canonicalKeys()[impl_->stripToOwned[s]]) keys.push_back(k);
+    const auto allKeys = core::allGatherv(raw, keys);
+    std::vector<long long> order(allKeys.size() / 3);
+    for (size_t g = 0; g < order.size(); ++g) order[g] = static_cast<long long>(g);
+    auto key = [&](long long g) { return std::tie(allKeys[3 * g], allKeys[3 * g + 1], allKeys[3 * g + 2]); };
+    std::sort(order.begin(), order.end(), [&](long long a, long long b) { return key(a) < key(b); });
+    std::vector<long long> rankOf(order.size());
+    for (size_t r = 0; r < order.size(); ++r) rankOf[order[r]] = static_cast<long long>(r);
+    for (LO s = 0; s < nStrip; ++s) stripId[s] = rankOf[first + s];
+  }
   toColumns([&](LO) { return -1.0; });  // resets owned; the strip ids follow
   {
     auto h = owned.getLocalViewHost(Tpetra::Access::OverwriteAll);
-    for (LO s = 0; s < nStrip; ++s) h(impl_->stripToOwned[s], 0) = static_cast<double>(first + s);
+    for (LO s = 0; s < nStrip; ++s) h(impl_->stripToOwned[s], 0) = static_cast<double>(stripId[s]);
   }
   if (importer.is_null())
     cols.assign(owned);
@@ -151,12 +171,43 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
   const auto allCols = gatherToRoot(raw, stripCols);
   const auto allVals = gatherToRoot(raw, stripVals);
   auto allW = gatherToRoot(raw, Bs);  // B_s, overwritten by A_s^{-1} B_s on rank 0
+  const auto allIds = gatherToRoot(raw, stripId);
+  std::vector<double> canonicalQs;  // reproducible: B_s^T W summed on rank 0 in strip id order
   if (comm->getRank() == 0 && m > 0) {
     const int n = static_cast<int>(stripSize_);
-    std::vector<int> rowPtr(n + 1, 0), cols(allCols.begin(), allCols.end());
-    for (int r = 0; r < n; ++r) rowPtr[r + 1] = rowPtr[r] + allLength[r];
-    const EnvelopeCholesky As(n, rowPtr, cols, allVals);
-    As.solveInPlace(allW, m);
+    // Rows in strip id order: position[id] is the row's place in the gathered (rank) order.
+    std::vector<int> position(n), rowStart(n + 1, 0);
+    for (int r = 0; r < n; ++r) position[allIds[r]] = r, rowStart[r + 1] = rowStart[r] + allLength[r];
+    std::vector<int> rowPtr(n + 1, 0), cols;
+    std::vector<double> vals, W(static_cast<size_t>(n) * m);
+    std::vector<std::pair<long long, double>> row;
+    for (int id = 0; id < n; ++id) {
+      const int r = position[id];
+      rowPtr[id + 1] = rowPtr[id] + allLength[r];
+      row.clear();
+      for (int k = rowStart[r]; k < rowStart[r + 1]; ++k) row.push_back({allCols[k], allVals[k]});
+      // Columns in strip id order: the ordering of the factorisation follows the row order (and
+      // so does not depend on the column maps of the ranks).
+      if (reproducible) std::sort(row.begin(), row.end());
+      for (const auto& [c, v] : row) cols.push_back(static_cast<int>(c)), vals.push_back(v);
+      std::copy(allW.begin() + static_cast<size_t>(r) * m, allW.begin() + static_cast<size_t>(r + 1) * m,
+                W.begin() + static_cast<size_t>(id) * m);
+    }
+    const std::vector<double> Bs = reproducible ? W : std::vector<double>();
+    const EnvelopeCholesky As(n, rowPtr, cols, vals);
+    As.solveInPlace(W, m);
+    for (int id = 0; id < n; ++id)
+      std::copy(W.begin() + static_cast<size_t>(id) * m, W.begin() + static_cast<size_t>(id + 1) * m,
+                allW.begin() + static_cast<size_t>(position[id]) * m);
+    if (reproducible) {
+      canonicalQs.assign(static_cast<size_t>(m) * m, 0.0);
+      for (int id = 0; id < n; ++id)
+        for (int i = 0; i < m; ++i) {
+          const double b = Bs[static_cast<size_t>(id) * m + i];
+          if (b == 0.0) continue;
+          for (int j = 0; j < m; ++j) canonicalQs[static_cast<size_t>(i) * m + j] += b * W[static_cast<size_t>(id) * m + j];
+        }
+    }
   }
   // W back to the owners of the strip rows (row-major blocks in rank order).
   {
@@ -179,8 +230,12 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
       for (int j = 0; j < m; ++j) local[static_cast<size_t>(i) * m + j] += b * impl_->W[static_cast<size_t>(s) * m + j];
     }
   Qs_.assign(local.size(), 0.0);
-  if (!local.empty())
+  if (reproducible) {
+    if (comm->getRank() == 0) Qs_ = canonicalQs;
+    if (!Qs_.empty()) Teuchos::broadcast(*comm, 0, static_cast<int>(Qs_.size()), Qs_.data());
+  } else if (!local.empty()) {
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), Qs_.data());
+  }
   for (int i = 0; i < m; ++i)  // symmetrise the rounding
     for (int j = 0; j < i; ++j) {
       const double avg = 0.5 * (Qs_[static_cast<size_t>(i) * m + j] + Qs_[static_cast<size_t>(j) * m + i]);

@@ -17,6 +17,7 @@
 #include "JacobiCG.hpp"
 #include "LinearSolver.hpp"
 #include "MpiComm.hpp"
+#include "ReproducibleLinearAlgebra.hpp"
 #include "ReproducibleSum.hpp"
 
 using namespace signorini;
@@ -103,7 +104,7 @@ Solved solve(int how, bool reproducible, bool throughLinearSolver = false) {
   fill(x, initialGuess);
   Solved s;
   if (reproducible) {
-    solvers::applyCanonical(*A, x, y);
+    core::applyCanonical(*A, x, y);
     s.applied = gathered(y);
   }
   if (throughLinearSolver) {
