@@ -277,3 +277,14 @@ signorini_add_driver_test(check_valid_deck EXIT 0
 signorini_add_driver_test(check_bad_deck EXIT 1
   ARGS --check --output-dir {OUT} ${decks}/good.xml ${decks}/penetrating.xml
   REGEX "good[.]xml is valid" "Problem/Initial Displacement penetrates the obstacle" "1 of 2 deck[(]s[)] failed")
+
+# Reproducible arithmetic covers scalar problems with the Jacobi preconditioner; anything else is
+# refused before a file is written.
+signorini_add_driver_test(reproducible_arithmetic_needs_jacobi EXIT 1
+  ARGS --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" --set "Linear Solver/Preconditioner=MueLu"
+       ${decks}/good.xml
+  REGEX "Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\", not \"MueLu\"")
+signorini_add_driver_test(reproducible_arithmetic_scalar_only EXIT 1
+  ARGS --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" --set "Problem/Type=plane strain elasticity"
+       ${decks}/good.xml
+  REGEX "Parallel/Reproducible Arithmetic: available for Problem/Type = \"scalar wave\" only")
