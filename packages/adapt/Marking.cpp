@@ -6,7 +6,10 @@
 #include <cstring>
 #include <limits>
 
+#include <Teuchos_DefaultMpiComm.hpp>
+
 #include "Error.hpp"
+#include "ReproducibleSum.hpp"
 
 namespace signorini::adapt {
 namespace {
@@ -95,18 +98,27 @@ std::vector<char> markFixedFraction(const std::vector<double>& indicators, doubl
 
 std::vector<char> markBulk(const std::vector<double>& indicators, double fraction, double tieTolerance,
                            MPI_Comm comm) {
-  double local = 0, total = 0;
-  for (double x : indicators) local += x;
-  MPI_Allreduce(&local, &total, 1, MPI_DOUBLE, MPI_SUM, comm);
-  if (!(total > 0) || fraction <= 0) return std::vector<char>(indicators.size(), 0);
-  const double width = tieWidth(indicators, tieTolerance, comm);
-  const uint64_t t = bisect([&](uint64_t th) {
+  // Under reproducible arithmetic the sums have the same bits on any number of ranks, and so has
+  // the threshold they decide.
+  const bool reproducible = core::reproducibleArithmetic();
+  const Teuchos::MpiComm<int> teuchosComm(comm);
+  auto sumAbove = [&](uint64_t th) {
+    if (reproducible) {
+      double g;
+      core::reproducibleSums(teuchosComm, 1, indicators.size(),
+                             [&](size_t i, double* t) { t[0] = key(indicators[i]) >= th ? indicators[i] : 0.0; }, &g);
+      return g;
+    }
     double s = 0, g = 0;
     for (double x : indicators)
       if (key(x) >= th) s += x;
     MPI_Allreduce(&s, &g, 1, MPI_DOUBLE, MPI_SUM, comm);
-    return g >= fraction * total;
-  });
+    return g;
+  };
+  const double total = sumAbove(0);
+  if (!(total > 0) || fraction <= 0) return std::vector<char>(indicators.size(), 0);
+  const double width = tieWidth(indicators, tieTolerance, comm);
+  const uint64_t t = bisect([&](uint64_t th) { return sumAbove(th) >= fraction * total; });
   return flagFrom(indicators, t, width);
 }
 

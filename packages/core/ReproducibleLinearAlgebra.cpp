@@ -49,7 +49,7 @@ void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
     }
     // The row's exact sum in three pre-rounded parts (as reproducibleSums, with the row's largest
     // product as the bound): the same bits in any order of the products.
-    const int exponent = std::ilogb(largest) + 1;  // largest < 2^exponent
+    const int exponent = detail::boundExponent(largest);  // largest < 2^exponent
     const bool normal = exponent > -1000 && exponent < 1000;
     const double scale = normal ? detail::powerOfTwo(-exponent) : std::ldexp(1.0, -exponent);
     double folds[3] = {0.0, 0.0, 0.0};

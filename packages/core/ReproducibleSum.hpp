@@ -13,6 +13,7 @@
 /// is at most 2^26 2^-82 M, far below that of an ordinary sum (about n 2^-53 M).
 ///
 /// Cost: two passes over the terms (the largest term, then the parts) and two global reductions.
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -21,12 +22,20 @@
 #include "Error.hpp"
 #include "MpiComm.hpp"
 
+#ifdef __FAST_MATH__
+#error "reproducible sums need value-safe floating point: do not build with -ffast-math"
+#endif
+
 namespace signorini::core {
 
 namespace detail {
 /// Splitting constants 1.5 * 2^(52 - 27 (f + 1)): (sigma + t) - sigma rounds t to a multiple of 2^(-27 (f + 1)).
 inline constexpr double kFoldSigma[3] = {1.5 * 33554432.0, 1.5 * 0.25, 1.5 * 0.25 / 134217728.0};
 inline constexpr std::size_t kMaxTerms = std::size_t(1) << 26;
+
+/// The exponent e with |t| < 2^e for every term bounded by \p largest (> 0, finite), at least
+/// -1021 so that 2^-e stays finite (scaling subnormal terms by it is exact).
+inline int boundExponent(double largest) { return std::max(std::ilogb(largest) + 1, -1021); }
 
 /// Adds the three parts of \p t (|t| < 1) to folds[0..2]. (sigma + t) - sigma must be evaluated
 /// as written: the project is never built with -ffast-math (reassociation), and a contraction
@@ -61,6 +70,7 @@ void sumAll(const Comm& comm, int count, double* values);
 template <class Term>
 void reproducibleSums(const Comm& comm, int count, std::size_t n, const Term& term, double* sums) {
   constexpr int kMax = 8;
+  SIGNORINI_ASSERT(count >= 1 && count <= kMax, "reproducibleSums: 1 to 8 sums at once");
   double largest[kMax] = {}, plain[kMax + 1] = {}, t[kMax];
   for (std::size_t i = 0; i < n; ++i) {
     term(i, t);
@@ -76,7 +86,7 @@ void reproducibleSums(const Comm& comm, int count, std::size_t n, const Term& te
   bool finite = true;
   for (int k = 0; k < count; ++k) {
     finite = finite && std::isfinite(largest[k]);
-    exponent[k] = largest[k] > 0 && std::isfinite(largest[k]) ? std::ilogb(largest[k]) + 1 : 0;
+    exponent[k] = largest[k] > 0 && std::isfinite(largest[k]) ? detail::boundExponent(largest[k]) : 0;
     scale[k] = std::ldexp(1.0, -exponent[k]);
   }
   if (!finite) {  // the ordinary sums carry the inf or nan

@@ -428,6 +428,10 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   if (reproducible && I.components != 1)
     SIGNORINI_USER_ERROR("Parallel/Reproducible Arithmetic: available for Problem/Type = \"scalar wave\" only "
                          "(the elasticity assembler and estimator do not order their sums yet)");
+  const std::string preconditioner = deck.sublist("Linear Solver").get<std::string>("Preconditioner");
+  if (reproducible && preconditioner != "auto" && preconditioner != "Jacobi")
+    SIGNORINI_USER_ERROR("Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\" (or \"auto\"), not \""
+                         << preconditioner << "\"");
   core::setReproducibleArithmetic(reproducible);
   if (file.empty())
     checkMeshFits(meshParams.get<int>("Cells X") * std::pow(4.0, level) * meshParams.get<int>("Cells Y"),

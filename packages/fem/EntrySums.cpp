@@ -1,6 +1,7 @@
 #include "EntrySums.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include <mpi.h>
 
@@ -52,6 +53,10 @@ EntrySums::EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<
   }
   if (size > 1) {
     std::vector<int> sendCounts(size), recvCounts(size), sendOffsets(size, 0), recvOffsets(size, 0);
+    size_t total = 0;
+    for (const auto& o : outgoing) total += o.size() * sizeof(Packed);
+    SIGNORINI_ASSERT(total < static_cast<size_t>(std::numeric_limits<int>::max()),
+                     "EntrySums: more than 2 GiB of contributions to send from one rank");
     for (int r = 0; r < size; ++r) sendCounts[r] = static_cast<int>(outgoing[r].size() * sizeof(Packed));
     MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, comm);
     std::vector<Packed> send;
@@ -60,7 +65,11 @@ EntrySums::EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<
       if (r > 0) recvOffsets[r] = recvOffsets[r - 1] + recvCounts[r - 1];
       send.insert(send.end(), outgoing[r].begin(), outgoing[r].end());
     }
-    const size_t received = (recvOffsets[size - 1] + recvCounts[size - 1]) / sizeof(Packed);
+    size_t receivedBytes = 0;
+    for (int r = 0; r < size; ++r) receivedBytes += static_cast<size_t>(recvCounts[r]);
+    SIGNORINI_ASSERT(receivedBytes < static_cast<size_t>(std::numeric_limits<int>::max()),
+                     "EntrySums: more than 2 GiB of contributions to receive on one rank");
+    const size_t received = receivedBytes / sizeof(Packed);
     const size_t before = mine.size();
     mine.resize(before + received);
     MPI_Alltoallv(send.data(), sendCounts.data(), sendOffsets.data(), MPI_BYTE, mine.data() + before,

@@ -294,7 +294,9 @@ std::pair<double, double> Q1Assembler::errorNorms(const Vector& uOwned, const co
   static const double gw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
   const double eps = 1e-6 * mesh_.hMin();
   double l2 = 0, h1 = 0;
+  std::vector<double> cellL2, cellH1;  // per cell, for reproducible sums
   for (LO e = 0; e < mesh_.numLocalCells(); ++e) {
+    const double l2Before = l2, h1Before = h1;
     double Xe[4][2], ue[4];
     for (int c = 0; c < 4; ++c) {
       Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
@@ -317,9 +319,17 @@ std::pair<double, double> Q1Assembler::errorNorms(const Vector& uOwned, const co
         l2 += w * d * d;
         h1 += w * (dx * dx + dy * dy);
       }
+    if (core::reproducibleArithmetic()) {  // the cell's own sums, from zero
+      cellL2.push_back(l2 - l2Before), cellH1.push_back(h1 - h1Before);
+      l2 = h1 = 0;
+    }
   }
   double local[2] = {l2, h1}, global[2];
-  Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_SUM, 2, local, global);
+  if (core::reproducibleArithmetic())
+    core::reproducibleSums(
+        *mesh_.comm(), 2, cellL2.size(), [&](size_t e, double* t) { t[0] = cellL2[e], t[1] = cellH1[e]; }, global);
+  else
+    Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_SUM, 2, local, global);
   return {std::sqrt(global[0]), std::sqrt(global[1])};
 }
 
@@ -336,6 +346,15 @@ double Q1Assembler::evaluate(const Vector& uOverlap, double x, double y) const {
         if (mesh_.cornerDofsHost(e, c, k) >= 0)
           local[0] += N[c] * mesh_.cornerWeightsHost(e, c, k) * uh(mesh_.cornerDofsHost(e, c, k), 0);
     local[1] = 1;
+  }
+  if (core::reproducibleArithmetic()) {  // the value of the lowest rank that has the point, as on one rank
+    const int rank = mesh_.comm()->getRank();
+    int finder = e >= 0 ? rank : mesh_.comm()->getSize(), first;
+    Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_MIN, finder, Teuchos::outArg(first));
+    if (first == mesh_.comm()->getSize()) return std::numeric_limits<double>::quiet_NaN();
+    double value = rank == first ? local[0] : 0.0;
+    Teuchos::broadcast(*mesh_.comm(), first, Teuchos::outArg(value));
+    return value;
   }
   Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_SUM, 2, local, global);
   return global[1] > 0 ? global[0] / global[1] : std::numeric_limits<double>::quiet_NaN();

@@ -60,6 +60,7 @@ struct LinearSolver::Impl {
   long solves = 0, iterations = 0;
   RCP<MultiVector> nullspace;
   int equationsPerNode = 1;
+  bool reproducible = false;  ///< core::reproducibleArithmetic() when the operator was set
 };
 
 core::ParameterList LinearSolver::getValidParameters() {
@@ -95,11 +96,13 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
   I.A = A;
   std::string choice = I.params.get<std::string>("Preconditioner");
   if (choice == "auto") choice = courant > I.params.get<double>("Auto MueLu Courant Number") ? "MueLu" : "Jacobi";
+  I.reproducible = core::reproducibleArithmetic();  // fixed for this operator
+  if (I.reproducible && I.params.get<std::string>("Preconditioner") == "auto") choice = "Jacobi";
   I.precName = choice;
   I.prec = Teuchos::null;
-  if (core::reproducibleArithmetic()) {
+  if (I.reproducible) {
     // Partition-independent solves: our Jacobi CG with ordered sums (JacobiCG.hpp). MueLu's
-    // aggregates depend on the partition, so it cannot take part.
+    // aggregates depend on the partition, so it cannot take part; "auto" means Jacobi here.
     if (choice != "Jacobi")
       SIGNORINI_USER_ERROR("Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\", not \"" << choice
                                                                                                        << "\"");
@@ -146,7 +149,7 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
   auto& I = *impl_;
   SIGNORINI_ASSERT(!I.A.is_null(), "solve() before setOperator()");
   ++I.solves;
-  if (core::reproducibleArithmetic()) {
+  if (I.reproducible) {
     int its = 0;
     try {
       its = solveReproducibleJacobiCG(*I.A, b, x, I.params.get<double>("Relative Tolerance"),

@@ -136,6 +136,8 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
     for (size_t g = 0; g < order.size(); ++g) order[g] = static_cast<long long>(g);
     auto key = [&](long long g) { return std::tie(allKeys[3 * g], allKeys[3 * g + 1], allKeys[3 * g + 2]); };
     std::sort(order.begin(), order.end(), [&](long long a, long long b) { return key(a) < key(b); });
+    for (size_t r = 1; r < order.size(); ++r)
+      SIGNORINI_ASSERT(key(order[r - 1]) < key(order[r]), "two strip unknowns with one canonical key");
     std::vector<long long> rankOf(order.size());
     for (size_t r = 0; r < order.size(); ++r) rankOf[order[r]] = static_cast<long long>(r);
     for (LO s = 0; s < nStrip; ++s) stripId[s] = rankOf[first + s];

@@ -125,3 +125,19 @@ TEST(ReproducibleSum, EmptyZeroAndNonFiniteSums) {
 }
 
 }  // namespace
+
+TEST(ReproducibleSum, SubnormalTermsKeepTheirBitsAndStayFinite) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  std::vector<double> all = hardTerms(3000, 5);
+  for (auto& v : all) v *= 1e-310;  // most of them subnormal
+  std::vector<double> results;
+  for (int how = 0; how < 4; ++how) {
+    const auto mine = share(all, how, comm->getRank(), comm->getSize());
+    results.push_back(reproducibleSum(*comm, mine.size(), mine.data()));
+  }
+  EXPECT_TRUE(std::isfinite(results[0]));
+  for (int how = 1; how < 4; ++how) EXPECT_TRUE(sameBits(results[0], results[how]));
+  const std::vector<double> tiny = {4.9406564584124654e-324, 4.9406564584124654e-324};
+  const auto mine = share(tiny, 0, comm->getRank(), comm->getSize());
+  EXPECT_EQ(reproducibleSum(*comm, mine.size(), mine.data()), 2 * 4.9406564584124654e-324);
+}

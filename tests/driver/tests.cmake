@@ -283,7 +283,7 @@ signorini_add_driver_test(check_bad_deck EXIT 1
 signorini_add_driver_test(reproducible_arithmetic_needs_jacobi EXIT 1
   ARGS --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" --set "Linear Solver/Preconditioner=MueLu"
        ${decks}/good.xml
-  REGEX "Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\", not \"MueLu\"")
+  REGEX "Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\" [(]or \"auto\"[)], not \"MueLu\"")
 signorini_add_driver_test(reproducible_arithmetic_scalar_only EXIT 1
   ARGS --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" --set "Problem/Type=plane strain elasticity"
        ${decks}/good.xml

@@ -116,6 +116,12 @@ Assembled assemble(const Discretisation& d) {
   return {entries(d, *M), entries(d, *K), entries(d, *A), entries(d, load)};
 }
 
+/// Sets core::reproducibleArithmetic() for its lifetime (off again afterwards, also on a throw).
+struct ReproducibleScope {
+  explicit ReproducibleScope(bool on) { core::setReproducibleArithmetic(on); }
+  ~ReproducibleScope() { core::setReproducibleArithmetic(false); }
+};
+
 int sumOverRanks(int local) {
   int global = 0;
   Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
@@ -127,10 +133,12 @@ int sumOverRanks(int local) {
 TEST(ReproducibleAssembly, DistributedEntriesHaveTheBitsOfTheOneRankAssembly) {
   const auto world = Tpetra::getDefaultComm();
   const RCP<const Comm> self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
-  core::setReproducibleArithmetic(true);
   const Discretisation distributed(world), serial(self);
-  const Assembled d = assemble(distributed), s = assemble(serial);
-  core::setReproducibleArithmetic(false);
+  Assembled d, s;
+  {
+    const ReproducibleScope scope(true);
+    d = assemble(distributed), s = assemble(serial);
+  }
   EXPECT_GT(sumOverRanks(static_cast<int>(d.M.size())), 1000);
   EXPECT_EQ(sumOverRanks(differing(d.M, s.M)), 0);
   EXPECT_EQ(sumOverRanks(differing(d.K, s.K)), 0);
@@ -144,9 +152,11 @@ TEST(ReproducibleAssembly, SameValuesAsTheOrdinaryAssemblyToRounding) {
   const auto world = Tpetra::getDefaultComm();
   const Discretisation d(world);
   const Assembled plain = assemble(d);
-  core::setReproducibleArithmetic(true);
-  const Assembled canonical = assemble(d);
-  core::setReproducibleArithmetic(false);
+  Assembled canonical;
+  {
+    const ReproducibleScope scope(true);
+    canonical = assemble(d);
+  }
   auto close = [](const auto& a, const auto& b) {
     int bad = 0;
     for (const auto& [key, value] : a) {
