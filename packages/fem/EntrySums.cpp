@@ -40,17 +40,21 @@ EntrySums::EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<
       for (size_t k = 0; k < lengths[i]; ++k) owner[remote[j++]] = from[i];
     SIGNORINI_ASSERT(j == remote.size(), "EntrySums: remote rows do not match the importer");
   }
-  // The owned rows' contributions, with those received from the other ranks.
+  // The owned rows' contributions (row: the owned local id, which is the overlap one), with those
+  // received from the other ranks (row: the global id until they are bucketed below).
   std::vector<Packed> mine;
   std::vector<std::vector<Packed>> outgoing(size);
   for (const auto& c : contributions) {
     SIGNORINI_ASSERT(c.row >= 0 && static_cast<size_t>(c.row) < owner.size(), "EntrySums: row outside the overlap map");
-    const Packed p{static_cast<long long>(overlap.getGlobalElement(c.row)), static_cast<long long>(c.column), c.value};
-    if (owner[c.row] == rank)
-      mine.push_back(p);
-    else
-      outgoing[owner[c.row]].push_back(p);
+    if (owner[c.row] == rank) {
+      SIGNORINI_ASSERT(c.row < nOwned, "EntrySums: the owned rows must come first in the overlap map");
+      mine.push_back({static_cast<long long>(c.row), static_cast<long long>(c.column), c.value});
+    } else {
+      outgoing[owner[c.row]].push_back(
+          {static_cast<long long>(overlap.getGlobalElement(c.row)), static_cast<long long>(c.column), c.value});
+    }
   }
+  const size_t own = mine.size();
   if (size > 1) {
     std::vector<int> sendCounts(size), recvCounts(size), sendOffsets(size, 0), recvOffsets(size, 0);
     size_t total = 0;
@@ -79,7 +83,7 @@ EntrySums::EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<
   std::vector<size_t> start(nOwned + 1, 0);
   std::vector<LO> rowOf(mine.size());
   for (size_t i = 0; i < mine.size(); ++i) {
-    rowOf[i] = owned.getLocalElement(mine[i].row);
+    rowOf[i] = i < own ? static_cast<LO>(mine[i].row) : owned.getLocalElement(mine[i].row);
     SIGNORINI_ASSERT(rowOf[i] >= 0, "EntrySums: a contribution reached a rank that does not own its row");
     ++start[rowOf[i] + 1];
   }
