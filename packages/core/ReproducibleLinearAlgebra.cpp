@@ -47,14 +47,20 @@ void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
       y[i] = sum;
       continue;
     }
-    // The row's exact sum in three pre-rounded parts (as reproducibleSums, with the row's largest
-    // product as the bound): the same bits in any order of the products.
+    // The row's sum in pre-rounded parts (as reproducibleSums, with the row's largest product as
+    // the bound; two parts of 46 bits for rows of up to 64 entries): the same bits in any order.
     const int exponent = detail::boundExponent(largest);  // largest < 2^exponent
     const bool normal = exponent > -1000 && exponent < 1000;
     const double scale = normal ? detail::powerOfTwo(-exponent) : std::ldexp(1.0, -exponent);
     double folds[3] = {0.0, 0.0, 0.0};
-    for (size_t k = 0; k < n; ++k) detail::addFolded(p[k] * scale, folds);
-    const double sum = (folds[0] + folds[1]) + folds[2];
+    double sum;
+    if (n <= detail::kMaxShortTerms) {
+      for (size_t k = 0; k < n; ++k) detail::addFoldedShort(p[k] * scale, folds);
+      sum = folds[0] + folds[1];
+    } else {
+      for (size_t k = 0; k < n; ++k) detail::addFolded(p[k] * scale, folds);
+      sum = (folds[0] + folds[1]) + folds[2];
+    }
     y[i] = normal ? sum * detail::powerOfTwo(exponent) : std::ldexp(sum, exponent);
   }
 }

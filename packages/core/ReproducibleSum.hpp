@@ -49,6 +49,18 @@ inline void addFolded(double t, double* folds) {
   }
 }
 
+/// Short sums (at most 64 terms, a matrix row): two parts, multiples of 2^-46 and 2^-92, whose sums
+/// of 64 terms stay exact (constants 1.5 * 2^(52 - 46 (f + 1))); the error is below 64 2^-93 max|t|.
+inline constexpr std::size_t kMaxShortTerms = 64;
+inline constexpr double kShortFoldSigma[2] = {1.5 * 64.0, 1.5 / 1099511627776.0};
+inline void addFoldedShort(double t, double* folds) {
+  for (int f = 0; f < 2; ++f) {
+    const double part = (kShortFoldSigma[f] + t) - kShortFoldSigma[f];
+    folds[f] += part;
+    t -= part;
+  }
+}
+
 /// 2^e as a double for e in [-1022, 1023] (exact; built from the exponent bits).
 inline double powerOfTwo(int e) {
   const std::uint64_t bits = static_cast<std::uint64_t>(1023 + e) << 52;
