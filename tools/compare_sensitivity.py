@@ -2,7 +2,8 @@
 """Compares the step tables of run-rank-sensitivity.sh: for each scheme, 2 ranks against 1 rank and a
 1e-12 perturbation of the initial velocity against the unperturbed run (1 rank), in cycles 0 and 1
 (the two-cycle runs write both): the energy relative to its initial value, the probe u(1, 0.5) and
-eta^n relative to its maximum. Usage: compare_sensitivity.py DIR"""
+eta^n relative to its maximum ("reproducible": the paper's scheme under Parallel/Reproducible
+Arithmetic). Usage: compare_sensitivity.py DIR"""
 import sys
 
 import numpy as np
@@ -15,7 +16,7 @@ def table(base, cycle=1):
     return np.genfromtxt(f"{out}/{base}{'.cycle0' if cycle == 0 else ''}.steps.csv", delimiter=",", names=True)
 
 
-for scheme in ["paper", "stabilised"]:
+for scheme in ["paper", "stabilised", "reproducible"]:
     ref = table(f"{scheme}.np1")
     print(f"{scheme} scheme, cycle 1: relative difference of the energy at steps " + " ".join(map(str, steps)))
     for other, label in [("np2", "2 ranks against 1      "), ("perturbed", "v0 * (1 + 1e-12), 1 rank")]:
