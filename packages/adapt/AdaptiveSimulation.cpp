@@ -172,6 +172,8 @@ std::string AdaptiveSimulation::plan() const {
     if (a.get<double>("Maximum Total Unknowns") > 0) os << ", stop at " << a.get<double>("Maximum Total Unknowns") << " total unknowns";
     if (a.get<double>("Tolerance") > 0) os << ", stop at eta <= " << a.get<double>("Tolerance");
   }
+  if (deck_.sublist("Parallel").get<bool>("Reproducible Arithmetic"))
+    os << "\nreproducible arithmetic: the same bits on any number of ranks";
   os << "\noutput: " << sim_->outputBase() << ".*";
   return os.str();
 }
@@ -179,6 +181,9 @@ std::string AdaptiveSimulation::plan() const {
 dynamics::RunSummary AdaptiveSimulation::run() {
   const auto& ap = deck_.sublist("Adaptivity");
   const std::string strategy = ap.get<std::string>("Strategy");
+  if (deck_.sublist("Parallel").get<bool>("Reproducible Arithmetic"))
+    core::rootOut(sim_->comm()->getRank())
+        << "signorini: reproducible arithmetic: the same bits on any number of ranks (slower)" << std::endl;
   if (strategy == "none") return sim_->run();
 
   const auto comm = sim_->comm();

@@ -288,3 +288,6 @@ signorini_add_driver_test(reproducible_arithmetic_scalar_only EXIT 1
   ARGS --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" --set "Problem/Type=plane strain elasticity"
        ${decks}/good.xml
   REGEX "Parallel/Reproducible Arithmetic: available for Problem/Type = \"scalar wave\" only")
+signorini_add_driver_test(check_reproducible_deck EXIT 0
+  ARGS --check --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" ${decks}/good.xml
+  REGEX "good[.]xml is valid; the run would do:" "reproducible arithmetic: the same bits on any number of ranks")
