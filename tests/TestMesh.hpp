@@ -9,6 +9,7 @@
 #include "Forest.hpp"
 #include "MpiComm.hpp"
 #include "Q1Mesh.hpp"
+#include "ReproducibleSum.hpp"
 
 namespace signorini::test {
 
@@ -25,17 +26,21 @@ inline void refineAt(mesh::Forest& f, double s, double r, int times) {
 
 /// A forest on the rectangle with segments "left", "right", "bottom", "top" (one per side).
 struct TestMesh {
+  RCP<const Comm> comm = Tpetra::getDefaultComm();
   std::shared_ptr<mesh::CoarseMesh> coarse;
   std::unique_ptr<mesh::BoundarySegments> segments;
   std::unique_ptr<mesh::Forest> forest;
   std::unique_ptr<mesh::Q1Mesh> mesh;
 
-  TestMesh(double x0, double x1, double y0, double y1, int nx, int ny, int level) {
+  /// On \p comm (all ranks by default; MPI_COMM_SELF gives every rank the whole mesh).
+  TestMesh(double x0, double x1, double y0, double y1, int nx, int ny, int level,
+           RCP<const Comm> onComm = Tpetra::getDefaultComm())
+      : comm(std::move(onComm)) {
     coarse = mesh::CoarseMesh::rectangle(x0, x1, y0, y1, nx, ny);
     segments = std::make_unique<mesh::BoundarySegments>(
         std::vector<std::pair<std::string, std::string>>{{"left", "left"}, {"right", "right"}, {"bottom", "bottom"}, {"top", "top"}},
         *coarse);
-    forest = std::make_unique<mesh::Forest>(coarse, core::rawMpiComm(*Tpetra::getDefaultComm()), level);
+    forest = std::make_unique<mesh::Forest>(coarse, core::rawMpiComm(*comm), level);
   }
   /// A forest on any coarse mesh, with the given segments (name, specification).
   TestMesh(std::shared_ptr<mesh::CoarseMesh> coarseMesh,
@@ -64,9 +69,17 @@ struct TestMesh {
     forest->balance();
   }
   const mesh::Q1Mesh& build() {
-    mesh = std::make_unique<mesh::Q1Mesh>(*forest, *segments, Tpetra::getDefaultComm());
+    mesh = std::make_unique<mesh::Q1Mesh>(*forest, *segments, comm);
     return *mesh;
   }
+};
+
+/// Sets core::reproducibleArithmetic() for its lifetime (off again afterwards, also on a throw).
+struct ReproducibleScope {
+  explicit ReproducibleScope(bool on) { core::setReproducibleArithmetic(on); }
+  ~ReproducibleScope() { core::setReproducibleArithmetic(false); }
+  ReproducibleScope(const ReproducibleScope&) = delete;
+  ReproducibleScope& operator=(const ReproducibleScope&) = delete;
 };
 
 }  // namespace signorini::test

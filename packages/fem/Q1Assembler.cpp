@@ -31,10 +31,13 @@ Q1Assembler::~Q1Assembler() = default;
 
 RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,
                                              const std::vector<char>& lumpMassAt) const {
+  // Under reproducible arithmetic the values come from EntrySums; the pattern still gives the
+  // matrix (and the identity rows of the Dirichlet unknowns).
+  const bool reproducible = core::reproducibleArithmetic();
   auto A = pattern_->begin();
-  assembleInto(A.local, A.local, massCoeff * rho, stiffCoeff * kappa, lumpMassAt);
+  if (!reproducible) assembleInto(A.local, A.local, massCoeff * rho, stiffCoeff * kappa, lumpMassAt);
   auto result = pattern_->end(A, dirichlet_);
-  if (core::reproducibleArithmetic()) {
+  if (reproducible) {
     std::vector<Contribution> both;
     cellContributions(massCoeff * rho, stiffCoeff * kappa, lumpMassAt, &both, &both);
     canonicalSums(both).writeInto(*result, dirichlet_);
@@ -44,10 +47,11 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
 
 std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> Q1Assembler::assembleMassAndStiffness(const ProblemData& problem,
                                                                                 const std::vector<char>& lumpAt) const {
+  const bool reproducible = core::reproducibleArithmetic();  // then the values come from EntrySums
   auto M = pattern_->begin(), K = pattern_->begin();
-  assembleInto(M.local, K.local, problem.density, problem.stiffness, lumpAt);
+  if (!reproducible) assembleInto(M.local, K.local, problem.density, problem.stiffness, lumpAt);
   std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> result{pattern_->end(M, dirichlet_), pattern_->end(K, dirichlet_)};
-  if (core::reproducibleArithmetic()) {
+  if (reproducible) {
     std::vector<Contribution> mass, stiffness;
     cellContributions(problem.density, problem.stiffness, lumpAt, &mass, &stiffness);
     canonicalSums(mass).writeInto(*result.first, dirichlet_);

@@ -223,19 +223,20 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
     if (m > 0)
       MPI_Scatterv(allW.data(), counts.data(), offsets.data(), MPI_DOUBLE, impl_->W.data(), count, MPI_DOUBLE, 0, raw);
   }
-  // Qs = B_s^T W (local sums over owned strip rows, then summed over ranks).
-  std::vector<double> local(static_cast<size_t>(m) * m, 0.0);
-  for (LO s = 0; s < nStrip; ++s)
-    for (int i = 0; i < m; ++i) {
-      const double b = Bs[static_cast<size_t>(s) * m + i];
-      if (b == 0.0) continue;
-      for (int j = 0; j < m; ++j) local[static_cast<size_t>(i) * m + j] += b * impl_->W[static_cast<size_t>(s) * m + j];
-    }
-  Qs_.assign(local.size(), 0.0);
+  // Qs = B_s^T W: local sums over the owned strip rows, then summed over ranks (reproducible: the
+  // sum rank 0 made in strip id order).
+  Qs_.assign(static_cast<size_t>(m) * m, 0.0);
   if (reproducible) {
     if (comm->getRank() == 0) Qs_ = canonicalQs;
     if (!Qs_.empty()) Teuchos::broadcast(*comm, 0, static_cast<int>(Qs_.size()), Qs_.data());
-  } else if (!local.empty()) {
+  } else if (!Qs_.empty()) {
+    std::vector<double> local(Qs_.size(), 0.0);
+    for (LO s = 0; s < nStrip; ++s)
+      for (int i = 0; i < m; ++i) {
+        const double b = Bs[static_cast<size_t>(s) * m + i];
+        if (b == 0.0) continue;
+        for (int j = 0; j < m; ++j) local[static_cast<size_t>(i) * m + j] += b * impl_->W[static_cast<size_t>(s) * m + j];
+      }
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, static_cast<int>(local.size()), local.data(), Qs_.data());
   }
   for (int i = 0; i < m; ++i)  // symmetrise the rounding

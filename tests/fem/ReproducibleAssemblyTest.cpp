@@ -29,21 +29,17 @@ using Point = std::pair<double, double>;
 
 /// One discretisation of the graded test mesh on \p comm.
 struct Discretisation {
-  std::shared_ptr<mesh::CoarseMesh> coarse = mesh::CoarseMesh::rectangle(0.0, 1.5, 0.0, 1.0, 3, 2);
-  std::unique_ptr<mesh::BoundarySegments> segments;
-  std::unique_ptr<mesh::Forest> forest;
-  std::unique_ptr<mesh::Q1Mesh> mesh;
+  test::TestMesh tm;
+  const mesh::Q1Mesh* mesh;
   std::unique_ptr<fem::Q1Assembler> assembler;
-  explicit Discretisation(const RCP<const Comm>& comm) {
-    segments = std::make_unique<mesh::BoundarySegments>(
-        std::vector<std::pair<std::string, std::string>>{{"left", "left"}, {"right", "right"}, {"bottom", "bottom"}, {"top", "top"}},
-        *coarse);
-    forest = std::make_unique<mesh::Forest>(coarse, core::rawMpiComm(*comm), 2);
-    test::refineAt(*forest, 0.4, 0.6, 3);
-    test::refineAt(*forest, 0.999, 0.001, 2);
-    forest->balance();
-    forest->partition();
-    mesh = std::make_unique<mesh::Q1Mesh>(*forest, *segments, comm);
+  const mesh::BoundarySegments* segments;
+  explicit Discretisation(const RCP<const Comm>& comm) : tm(0.0, 1.5, 0.0, 1.0, 3, 2, 2, comm) {
+    test::refineAt(*tm.forest, 0.4, 0.6, 3);
+    test::refineAt(*tm.forest, 0.999, 0.001, 2);
+    tm.forest->balance();
+    tm.forest->partition();
+    mesh = &tm.build();
+    segments = tm.segments.get();
     assembler = std::make_unique<fem::Q1Assembler>(*mesh, mesh->nodesOnSegments(1u << segments->index("left", "test")));
   }
   /// Coordinates of the owned unknowns, imported to \p map.
@@ -116,12 +112,6 @@ Assembled assemble(const Discretisation& d) {
   return {entries(d, *M), entries(d, *K), entries(d, *A), entries(d, load)};
 }
 
-/// Sets core::reproducibleArithmetic() for its lifetime (off again afterwards, also on a throw).
-struct ReproducibleScope {
-  explicit ReproducibleScope(bool on) { core::setReproducibleArithmetic(on); }
-  ~ReproducibleScope() { core::setReproducibleArithmetic(false); }
-};
-
 int sumOverRanks(int local) {
   int global = 0;
   Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
@@ -136,7 +126,7 @@ TEST(ReproducibleAssembly, DistributedEntriesHaveTheBitsOfTheOneRankAssembly) {
   const Discretisation distributed(world), serial(self);
   Assembled d, s;
   {
-    const ReproducibleScope scope(true);
+    const test::ReproducibleScope scope(true);
     d = assemble(distributed), s = assemble(serial);
   }
   EXPECT_GT(sumOverRanks(static_cast<int>(d.M.size())), 1000);
@@ -154,7 +144,7 @@ TEST(ReproducibleAssembly, SameValuesAsTheOrdinaryAssemblyToRounding) {
   const Assembled plain = assemble(d);
   Assembled canonical;
   {
-    const ReproducibleScope scope(true);
+    const test::ReproducibleScope scope(true);
     canonical = assemble(d);
   }
   auto close = [](const auto& a, const auto& b) {

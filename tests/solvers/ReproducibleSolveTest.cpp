@@ -14,6 +14,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "../TestMesh.hpp"
 #include "JacobiCG.hpp"
 #include "LinearSolver.hpp"
 #include "MpiComm.hpp"
@@ -94,15 +95,9 @@ struct Solved {
   int iterations = 0;
 };
 
-/// Sets core::reproducibleArithmetic() for its lifetime (off again afterwards, also on a throw).
-struct ReproducibleScope {
-  explicit ReproducibleScope(bool on) { core::setReproducibleArithmetic(on); }
-  ~ReproducibleScope() { core::setReproducibleArithmetic(false); }
-};
-
 Solved solve(int how, bool reproducible, bool throughLinearSolver = false) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
-  const ReproducibleScope scope(reproducible);
+  const test::ReproducibleScope scope(reproducible);
   const auto map = distribution(how, comm);
   const auto A = matrix(map);
   Vector b(map), x(map), y(map);
