@@ -14,6 +14,7 @@
 
 #include <Tpetra_Core.hpp>
 
+#include "Allocator.hpp"
 #include "DeckReader.hpp"
 #include "Error.hpp"
 #include "ParameterTools.hpp"
@@ -45,6 +46,7 @@ ParameterList readDeck(const std::string& path, const std::vector<std::string>& 
 }  // namespace
 
 int main(int argc, char** argv) {
+  signorini::core::keepFreedMemory();
   Tpetra::ScopeGuard tpetra(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   const int rank = comm->getRank();

@@ -4,13 +4,97 @@
 #include <cmath>
 #include <vector>
 
+#include <Kokkos_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
+
+#include <Teuchos_CommHelpers.hpp>
 
 #include "Error.hpp"
 #include "ReproducibleSum.hpp"
 
 namespace signorini::core {
+
+namespace {
+
+using LocalEntries = CrsMatrix::local_matrix_host_type::index_type;
+
+/// The canonical order of one local graph: order[k] for k in a row's range is the index of the
+/// row's k-th entry by column key. The graph's column indices are kept (a reference that also
+/// keeps their address from being reused while the order is registered).
+struct RowOrder {
+  LocalEntries entries;
+  std::vector<size_t> order;
+};
+
+std::vector<RowOrder>& rowOrders() {
+  static std::vector<RowOrder> orders;
+  static const bool hooked = [] {  // the kept views must go before Kokkos does
+    Kokkos::push_finalize_hook([] { orders.clear(); });
+    return true;
+  }();
+  (void)hooked;
+  return orders;
+}
+
+const RowOrder* findRowOrder(const LocalEntries& entries) {
+  for (const auto& r : rowOrders())
+    if (r.entries.data() == entries.data() && r.entries.extent(0) == entries.extent(0)) return &r;
+  return nullptr;
+}
+
+}  // namespace
+
+void registerCanonicalRowOrder(const CrsMatrix& A, const std::vector<std::array<long long, 3>>& ownedKeys) {
+  SIGNORINI_ASSERT(A.getDomainMap()->isSameAs(*A.getRowMap()), "registerCanonicalRowOrder: the domain map must be the row map");
+  SIGNORINI_ASSERT(ownedKeys.size() == A.getDomainMap()->getNodeNumElements(), "registerCanonicalRowOrder: one key per owned row");
+  auto& orders = rowOrders();
+  // Orders whose graph only the registry still holds are gone with their matrices.
+  orders.erase(std::remove_if(orders.begin(), orders.end(), [](const RowOrder& r) { return r.entries.use_count() <= 1; }),
+               orders.end());
+  const auto matrix = A.getLocalMatrixHost();
+  // Keys travel as doubles: they are integers far below 2^53.
+  Tpetra::MultiVector<Scalar, LO, GO, Node> owned(A.getDomainMap(), 3, false);
+  {
+    auto v = owned.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (size_t i = 0; i < ownedKeys.size(); ++i)
+      for (int c = 0; c < 3; ++c) {
+        SIGNORINI_ASSERT(std::fabs(static_cast<double>(ownedKeys[i][c])) < 0x1p53, "registerCanonicalRowOrder: key too large");
+        v(i, c) = static_cast<double>(ownedKeys[i][c]);
+      }
+  }
+  const auto importer = A.getGraph()->getImporter();
+  Teuchos::RCP<const Tpetra::MultiVector<Scalar, LO, GO, Node>> columns = Teuchos::rcpFromRef(owned);
+  if (!importer.is_null()) {
+    auto imported = Teuchos::rcp(new Tpetra::MultiVector<Scalar, LO, GO, Node>(A.getColMap(), 3, false));
+    imported->doImport(owned, *importer, Tpetra::INSERT);
+    columns = imported;
+  }
+  const bool known = findRowOrder(matrix.graph.entries) != nullptr;
+  auto keys = columns->getLocalViewHost(Tpetra::Access::ReadOnly);
+  const auto* rowMap = matrix.graph.row_map.data();
+  const LO* cols = matrix.graph.entries.data();
+  RowOrder r{matrix.graph.entries, std::vector<size_t>(matrix.graph.entries.extent(0))};
+  auto less = [&](size_t a, size_t b) {
+    for (int c = 0; c < 3; ++c)
+      if (keys(cols[a], c) != keys(cols[b], c)) return keys(cols[a], c) < keys(cols[b], c);
+    return false;
+  };
+  bool distinct = true;
+  for (LO i = 0; i < matrix.numRows(); ++i) {
+    const size_t begin = rowMap[i], end = rowMap[i + 1];
+    for (size_t k = begin; k < end; ++k) r.order[k] = k;
+    std::sort(r.order.begin() + begin, r.order.begin() + end, less);
+    for (size_t k = begin + 1; k < end; ++k) distinct = distinct && less(r.order[k - 1], r.order[k]);
+  }
+  // Every rank registers or none (a rank without an order would sum its rows in another way).
+  int allDistinct = distinct ? 1 : 0, global = 0;
+  Teuchos::reduceAll(*A.getComm(), Teuchos::REDUCE_MIN, 1, &allDistinct, &global);
+  if (global == 1 && !known) orders.push_back(std::move(r));
+}
+
+bool hasCanonicalRowOrder(const CrsMatrix& A) { return findRowOrder(A.getLocalMatrixHost().graph.entries) != nullptr; }
 
 void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
   SIGNORINI_ASSERT(A.getGraph()->getExporter().is_null(), "applyCanonical: the row map must be the range map");
@@ -29,6 +113,15 @@ void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
   const double* values = matrix.values.data();
   const double* x = xv.data();
   double* y = yv.data();
+  if (const auto* canonical = findRowOrder(matrix.graph.entries)) {
+    const size_t* order = canonical->order.data();
+    for (LO i = 0; i < matrix.numRows(); ++i) {
+      double sum = 0.0;
+      for (size_t k = rowMap[i]; k < rowMap[i + 1]; ++k) sum += values[order[k]] * x[cols[order[k]]];
+      y[i] = sum;
+    }
+    return;
+  }
   constexpr size_t kShort = 64;
   double shortRow[kShort];
   std::vector<double> longRow;
@@ -77,8 +170,9 @@ double dot(const Vector& a, const Vector& b) {
   auto av = a.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto bv = b.getLocalViewHost(Tpetra::Access::ReadOnly);
   double sum;
-  reproducibleSums(*a.getMap()->getComm(), 1, av.extent(0), [&](size_t i, double* t) { t[0] = av(i, 0) * bv(i, 0); },
-                         &sum);
+  reproducibleSums(
+      *a.getMap()->getComm(), 1, av.extent(0), [&](size_t i, double* t) { t[0] = av(i, 0) * bv(i, 0); }, &sum,
+      a.getMap()->getGlobalNumElements());
   return sum;
 }
 

@@ -193,13 +193,10 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
   const int nc = unknowns.components, comp = unknowns.component;
   SIGNORINI_ASSERT(dirichlet.size() == overlap->getNodeNumElements(), "Dirichlet flags do not match the unknowns");
   auto row = [&](LO node) { return static_cast<LO>(nc * node + comp); };
-  {
-    const double grid = mesh.hMin() / 64;
-    canonicalKeys_.resize(ownedRows->getNodeNumElements());
-    for (size_t r = 0; r < canonicalKeys_.size(); ++r) {
-      const auto& x = mesh.nodeCoords()[r / nc];
-      canonicalKeys_[r] = {std::llround(x[0] / grid), std::llround(x[1] / grid), static_cast<long long>(r % nc)};
-    }
+  canonicalKeys_.resize(ownedRows->getNodeNumElements());
+  for (size_t r = 0; r < canonicalKeys_.size(); ++r) {
+    const auto key = mesh.canonicalKey(static_cast<LO>(r / nc));
+    canonicalKeys_[r] = {key[0], key[1], static_cast<long long>(r % nc)};
   }
   using Graph = Tpetra::FECrsGraph<LO, GO, Node>;
   using FEMatrix = Tpetra::FECrsMatrix<Scalar, LO, GO, Node>;

@@ -43,6 +43,7 @@ EntrySums::EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<
   // The owned rows' contributions (row: the owned local id, which is the overlap one), with those
   // received from the other ranks (row: the global id until they are bucketed below).
   std::vector<Packed> mine;
+  mine.reserve(contributions.size());
   std::vector<std::vector<Packed>> outgoing(size);
   for (const auto& c : contributions) {
     SIGNORINI_ASSERT(c.row >= 0 && static_cast<size_t>(c.row) < owner.size(), "EntrySums: row outside the overlap map");
@@ -94,6 +95,8 @@ EntrySums::EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<
     for (size_t i = 0; i < mine.size(); ++i) sorted[fill[rowOf[i]]++] = {mine[i].column, mine[i].value};
   }
   rowStart_.assign(nOwned + 1, 0);
+  column_.reserve(sorted.size());
+  value_.reserve(sorted.size());
   for (LO r = 0; r < nOwned; ++r) {
     std::sort(sorted.begin() + start[r], sorted.begin() + start[r + 1]);
     for (size_t i = start[r]; i < start[r + 1];) {

@@ -71,6 +71,7 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
   const auto& dir = newAssembler.dirichletFlags();
   const bool reproducible = core::reproducibleArithmetic();
   std::vector<std::vector<Contribution>> contributions(reproducible ? nf : 0);
+  for (auto& c : contributions) c.reserve(4 * static_cast<size_t>(overlap_->numTargetCells()));
   std::vector<double> treeDeterminant(coarse_.numTrees());
   for (int t = 0; t < coarse_.numTrees(); ++t) treeDeterminant[t] = constantJacobianDeterminant(coarse_, t);
   for (int e = 0; e < overlap_->numTargetCells(); ++e) {

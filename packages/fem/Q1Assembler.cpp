@@ -12,6 +12,7 @@
 #include "Error.hpp"
 #include "MpiComm.hpp"
 #include "Q1Kernels.hpp"
+#include "ReproducibleLinearAlgebra.hpp"
 #include "ReproducibleSum.hpp"
 
 namespace signorini::fem {
@@ -41,6 +42,7 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
     std::vector<Contribution> both;
     cellContributions(massCoeff * rho, stiffCoeff * kappa, lumpMassAt, &both, &both);
     canonicalSums(both).writeInto(*result, dirichlet_);
+    registerCanonicalRowOrder(*result);
   }
   return result;
 }
@@ -56,8 +58,18 @@ std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> Q1Assembler::assembleMassAndStiffness(
     cellContributions(problem.density, problem.stiffness, lumpAt, &mass, &stiffness);
     canonicalSums(mass).writeInto(*result.first, dirichlet_);
     canonicalSums(stiffness).writeInto(*result.second, dirichlet_);
+    registerCanonicalRowOrder(*result.first);  // K shares M's graph
   }
   return result;
+}
+
+void Q1Assembler::registerCanonicalRowOrder(const CrsMatrix& A) const {
+  std::vector<std::array<long long, 3>> keys(mesh_.ownedMap()->getNodeNumElements());
+  for (size_t i = 0; i < keys.size(); ++i) {  // owned nodes come first in the overlap order
+    const auto key = mesh_.canonicalKey(static_cast<LO>(i));
+    keys[i] = {key[0], key[1], 0};
+  }
+  core::registerCanonicalRowOrder(A, keys);
 }
 
 EntrySums Q1Assembler::canonicalSums(const std::vector<Contribution>& contributions) const {
@@ -71,6 +83,9 @@ void Q1Assembler::cellContributions(double cm, double ck, const std::vector<char
   const auto& wts = mesh_.cornerWeightsHost;
   const auto overlap = mesh_.overlapMap();
   const bool anyLump = std::any_of(lumpMassAt.begin(), lumpMassAt.end(), [](char f) { return f != 0; });
+  const size_t perCell = mass == stiffness ? 32 : 16;  // 16 couplings per cell without hanging corners
+  mass->reserve(mass->size() + perCell * static_cast<size_t>(mesh_.numLocalCells()));
+  stiffness->reserve(stiffness->size() + perCell * static_cast<size_t>(mesh_.numLocalCells()));
   for (LO e = 0; e < mesh_.numLocalCells(); ++e) {
     double Xe[4][2], Ke[4][4], Me[4][4];
     for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);

@@ -94,6 +94,9 @@ class Q1Assembler : public Assembler {
   void cellContributions(double cm, double ck, const std::vector<char>& lumpMassAt, std::vector<Contribution>* mass,
                          std::vector<Contribution>* stiffness) const;
   EntrySums canonicalSums(const std::vector<Contribution>& contributions) const;
+  /// Reproducible arithmetic: rows of matrices on the pattern summed in the order of the nodes'
+  /// canonical keys (core::registerCanonicalRowOrder; one order serves M, K and the step matrix).
+  void registerCanonicalRowOrder(const CrsMatrix& A) const;
   RCP<const Tpetra::Export<LO, GO, Node>> exporter_;
   RCP<const Tpetra::Import<LO, GO, Node>> importer_;
 };

@@ -344,4 +344,10 @@ std::vector<char> Q1Mesh::balanceClosure(const std::vector<char>& flagged) const
   return closure;
 }
 
+std::array<long long, 2> Q1Mesh::canonicalKey(LO node) const {
+  const double grid = hMin_ / 64;
+  const auto& x = nodeCoords_[node];
+  return {std::llround(x[0] / grid), std::llround(x[1] / grid)};
+}
+
 }  // namespace signorini::mesh

@@ -82,6 +82,10 @@ class Q1Mesh {
   const std::vector<BoundaryEdge>& boundaryEdges() const { return boundaryEdges_; }
   /// Coordinates of every overlap node.
   const std::vector<std::array<double, 2>>& nodeCoords() const { return nodeCoords_; }
+  /// A partition-independent key of overlap node \p node: its coordinates rounded to the grid of
+  /// spacing hMin() / 64 (the same integers on any partition, where the node's coordinates may
+  /// come from another cell and differ in the last bits; distinct for distinct nodes).
+  std::array<long long, 2> canonicalKey(LO node) const;
   /// Smallest and largest edge length over all cells of all ranks.
   double hMin() const { return hMin_; }
   double hMax() const { return hMax_; }

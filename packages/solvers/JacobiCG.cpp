@@ -250,6 +250,7 @@ int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, do
                               int maxIterations) {
   const Comm& comm = *A.getRangeMap()->getComm();
   const size_t n = A.getRangeMap()->getNodeNumElements();
+  const size_t global = A.getRangeMap()->getGlobalNumElements();  // the same on any partition
   Vector diagonal(A.getRowMap()), r(A.getRangeMap()), p(A.getRangeMap()), q(A.getRangeMap());
   A.getLocalDiagCopy(diagonal);
   core::applyCanonical(A, x, q);
@@ -270,7 +271,7 @@ int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, do
         t[1] = rv(i, 0) * pv(i, 0);
         t[2] = rv(i, 0) * rv(i, 0);
       },
-      start);
+      start, global);
   if (start[0] == 0.0) {
     x.putScalar(0.0);
     return 0;
@@ -282,7 +283,7 @@ int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, do
     core::applyCanonical(A, p, q);
     auto qv = q.getLocalViewHost(Tpetra::Access::ReadOnly);
     double pq;
-    core::reproducibleSums(comm, 1, n, [&](size_t i, double* t) { t[0] = pv(i, 0) * qv(i, 0); }, &pq);
+    core::reproducibleSums(comm, 1, n, [&](size_t i, double* t) { t[0] = pv(i, 0) * qv(i, 0); }, &pq, global);
     const double alpha = rz / pq;
     for (size_t i = 0; i < n; ++i) xv(i, 0) += alpha * pv(i, 0), rv(i, 0) -= alpha * qv(i, 0);
     double sums[2];  // r.r, r.z
@@ -292,7 +293,7 @@ int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, do
           t[0] = rv(i, 0) * rv(i, 0);
           t[1] = rv(i, 0) * (rv(i, 0) / dv(i, 0));
         },
-        sums);
+        sums, global);
     if (std::sqrt(sums[0]) <= target) return it;
     const double beta = sums[1] / rz;
     rz = sums[1];

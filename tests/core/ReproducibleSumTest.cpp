@@ -141,3 +141,40 @@ TEST(ReproducibleSum, SubnormalTermsKeepTheirBitsAndStayFinite) {
   const auto mine = share(tiny, 0, comm->getRank(), comm->getSize());
   EXPECT_EQ(reproducibleSum(*comm, mine.size(), mine.data()), 2 * 4.9406564584124654e-324);
 }
+
+// With the global number of terms given (globalTerms), sums of up to 2^17 terms use two wider
+// parts: still the same bits for every distribution, and within the documented 2^-54 max|term| of
+// the exact sum (a compensated long double sum of the global list stands in for it). Sizes at the
+// edges: 3 terms (the narrowest width), 2^17 (the last with two parts), 2^17 + 1 (three parts).
+// Two kinds of terms: 30 orders of magnitude with cancellation, and positive terms of one size
+// (squares, as in a norm), whose parts' sums grow to the bound that the widths must leave room for.
+TEST(ReproducibleSum, AKnownTermCountKeepsTheBitsAndTheAccuracy) {
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  for (const std::size_t n : {std::size_t(3), std::size_t(5000), std::size_t(1) << 17, (std::size_t(1) << 17) + 1}) {
+    for (const bool positive : {false, true}) {
+      auto all = hardTerms(n, 31 + static_cast<unsigned>(n % 97));
+      if (positive)
+        for (auto& v : all) v = 1.0 + std::fabs(v) * 1e-15;
+      long double sum = 0, compensation = 0;
+      double largest = 0;
+      for (double v : all) {  // Neumaier
+        const long double t = sum + v;
+        compensation += std::fabs(static_cast<double>(sum)) >= std::fabs(v) ? (sum - t) + v : (v - t) + sum;
+        sum = t;
+        largest = std::max(largest, std::fabs(v));
+      }
+      const double exact = static_cast<double>(sum + compensation);
+      std::vector<double> results;
+      for (int how = 0; how < 4; ++how) {
+        const auto mine = share(all, how, comm->getRank(), comm->getSize());
+        double s;
+        reproducibleSums(*comm, 1, mine.size(), [&](std::size_t i, double* t) { t[0] = mine[i]; }, &s, n);
+        results.push_back(s);
+      }
+      for (int how = 1; how < 4; ++how)
+        EXPECT_TRUE(sameBits(results[0], results[how])) << n << (positive ? " positive" : "") << " terms, distribution " << how;
+      // the parts' error, and up to one unit in the last place from adding the parts up
+      EXPECT_LE(std::fabs(results[0] - exact), 0x1p-54 * largest + 0x1p-52 * std::fabs(exact)) << n << " terms";
+    }
+  }
+}

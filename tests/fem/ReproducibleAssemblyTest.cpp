@@ -19,6 +19,7 @@
 #include "Expression.hpp"
 #include "ProblemData.hpp"
 #include "Q1Assembler.hpp"
+#include "ReproducibleLinearAlgebra.hpp"
 #include "ReproducibleSum.hpp"
 
 using namespace signorini;
@@ -169,4 +170,57 @@ TEST(ReproducibleAssembly, OrdinaryAssemblyDiffersOnSeveralRanks) {  // the cont
   const int differ = sumOverRanks(differing(d.M, s.M) + differing(d.K, s.K) + differing(d.A, s.A) + differing(d.load, s.load));
   if (world->getRank() == 0) std::cout << "ordinary assembly: " << differ << " entries differ from one rank's\n";
   if (world->getSize() > 1) EXPECT_GT(differ, 0);
+}
+
+namespace {
+
+/// Rows of A x by row point, x(p) = a smooth function of mixed signs and magnitudes; \p canonical:
+/// core::applyCanonical, otherwise Tpetra's apply (rows summed in the local column order).
+std::map<Point, double> product(const Discretisation& d, const CrsMatrix& A, bool canonical) {
+  Vector x(A.getDomainMap()), y(A.getRangeMap());
+  {
+    auto h = x.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (size_t i = 0; i < h.extent(0); ++i) {
+      const auto& p = d.mesh->nodeCoords()[i];
+      h(i, 0) = 1e3 * std::sin(7 * p[0] + 3 * p[1]) + 1.0 / (1.0 + p[0] * p[1]) - 0.5;
+    }
+  }
+  if (canonical)
+    core::applyCanonical(A, x, y);
+  else
+    A.apply(x, y);
+  return entries(d, y);
+}
+
+}  // namespace
+
+// The assembler registers a canonical row order (rows summed in the order of the column nodes'
+// coordinates) for its matrices under reproducible arithmetic; M, K and the combined operator
+// applied to one vector then give the one-rank result bit for bit, with plain ordered row sums.
+TEST(ReproducibleAssembly, RegisteredRowOrderAppliesWithTheBitsOfOneRank) {
+  const auto world = Tpetra::getDefaultComm();
+  const RCP<const Comm> self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+  const Discretisation distributed(world), serial(self);
+  const test::ReproducibleScope scope(true);
+  auto p = fem::ProblemData::getValidParameters();
+  p.set("Density", 1.3);
+  p.set("Stiffness", 0.7);
+  const fem::ProblemData problem(p, *distributed.segments);
+  const auto lump = [](const Discretisation& d) { return d.mesh->nodesOnSegments(1u << d.segments->index("right", "test")); };
+  const auto [Md, Kd] = distributed.assembler->assembleMassAndStiffness(problem, {});
+  const auto [Ms, Ks] = serial.assembler->assembleMassAndStiffness(problem, {});
+  const auto Ad = distributed.assembler->assembleOperator(1.0, 1.7e-3, 1.3, 0.7, lump(distributed));
+  const auto As = serial.assembler->assembleOperator(1.0, 1.7e-3, 1.3, 0.7, lump(serial));
+  int differ = 0, ordinaryDiffer = 0, unregistered = 0;
+  for (const auto& [dm, sm] : {std::pair{Md, Ms}, std::pair{Kd, Ks}, std::pair{Ad, As}}) {
+    unregistered += !core::hasCanonicalRowOrder(*dm) + !core::hasCanonicalRowOrder(*sm);
+    differ += differing(product(distributed, *dm, true), product(serial, *sm, true));
+    ordinaryDiffer += differing(product(distributed, *dm, false), product(serial, *sm, false));
+  }
+  EXPECT_EQ(sumOverRanks(unregistered), 0);
+  EXPECT_EQ(sumOverRanks(differ), 0);
+  // The control: the same matrices summed in their local column order differ in some rows.
+  const int ordinary = sumOverRanks(ordinaryDiffer);
+  if (world->getRank() == 0) std::cout << "ordinary apply: " << ordinary << " rows differ from one rank's\n";
+  if (world->getSize() > 1) EXPECT_GT(ordinary, 0);
 }
