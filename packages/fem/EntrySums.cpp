@@ -11,6 +11,7 @@
 
 #include "Error.hpp"
 #include "MpiComm.hpp"
+#include "ReproducibleSum.hpp"
 
 namespace signorini::fem {
 
@@ -20,6 +21,8 @@ struct Packed {
   double value;
 };
 }  // namespace
+
+bool needEntrySums(const Comm& comm) { return core::reproducibleArithmetic() && (comm.getSize() > 1 || kAtomicScatter); }
 
 EntrySums::EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<LO, GO, Node>& ownedToOverlap,
                      const std::vector<Contribution>& contributions) {
@@ -55,7 +58,10 @@ EntrySums::EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<
           {static_cast<long long>(overlap.getGlobalElement(c.row)), static_cast<long long>(c.column), c.value});
     }
   }
-  const size_t own = mine.size();
+  // The contributions in the one-rank order: by source rank (p4est's partition splits the
+  // space-filling curve into consecutive pieces), each rank's in the order it made them.
+  std::vector<std::pair<const Packed*, size_t>> pieces;  // (first, count) per source rank
+  std::vector<Packed> received;
   if (size > 1) {
     std::vector<int> sendCounts(size), recvCounts(size), sendOffsets(size, 0), recvOffsets(size, 0);
     size_t total = 0;
@@ -74,31 +80,50 @@ EntrySums::EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<
     for (int r = 0; r < size; ++r) receivedBytes += static_cast<size_t>(recvCounts[r]);
     SIGNORINI_ASSERT(receivedBytes < static_cast<size_t>(std::numeric_limits<int>::max()),
                      "EntrySums: more than 2 GiB of contributions to receive on one rank");
-    const size_t received = receivedBytes / sizeof(Packed);
-    const size_t before = mine.size();
-    mine.resize(before + received);
-    MPI_Alltoallv(send.data(), sendCounts.data(), sendOffsets.data(), MPI_BYTE, mine.data() + before,
-                  recvCounts.data(), recvOffsets.data(), MPI_BYTE, comm);
+    received.resize(receivedBytes / sizeof(Packed));
+    MPI_Alltoallv(send.data(), sendCounts.data(), sendOffsets.data(), MPI_BYTE, received.data(), recvCounts.data(),
+                  recvOffsets.data(), MPI_BYTE, comm);
+    for (int r = 0; r < size; ++r)
+      if (r == rank)
+        pieces.emplace_back(mine.data(), mine.size());
+      else
+        pieces.emplace_back(received.data() + recvOffsets[r] / sizeof(Packed), recvCounts[r] / sizeof(Packed));
+  } else {
+    pieces.emplace_back(mine.data(), mine.size());
   }
-  // Bucket by owned row, then sort each row by (column, value) and add the runs of one column.
+  // Bucket by owned row, keeping that order; sort each row stably by column and add the runs of
+  // one column in order.
+  const size_t count = mine.size() + received.size();
   std::vector<size_t> start(nOwned + 1, 0);
-  std::vector<LO> rowOf(mine.size());
-  for (size_t i = 0; i < mine.size(); ++i) {
-    rowOf[i] = i < own ? static_cast<LO>(mine[i].row) : owned.getLocalElement(mine[i].row);
-    SIGNORINI_ASSERT(rowOf[i] >= 0, "EntrySums: a contribution reached a rank that does not own its row");
-    ++start[rowOf[i] + 1];
+  std::vector<LO> rowOf(count);
+  {
+    size_t i = 0;
+    for (int r = 0; r < static_cast<int>(pieces.size()); ++r)
+      for (size_t k = 0; k < pieces[r].second; ++k, ++i) {
+        const Packed& c = pieces[r].first[k];
+        rowOf[i] = r == rank || size == 1 ? static_cast<LO>(c.row) : owned.getLocalElement(c.row);
+        SIGNORINI_ASSERT(rowOf[i] >= 0, "EntrySums: a contribution reached a rank that does not own its row");
+        ++start[rowOf[i] + 1];
+      }
   }
   for (LO r = 0; r < nOwned; ++r) start[r + 1] += start[r];
-  std::vector<std::pair<GO, double>> sorted(mine.size());
+  std::vector<std::pair<GO, double>> sorted(count);
   {
     std::vector<size_t> fill(start.begin(), start.end() - 1);
-    for (size_t i = 0; i < mine.size(); ++i) sorted[fill[rowOf[i]]++] = {mine[i].column, mine[i].value};
+    size_t i = 0;
+    for (const auto& [first, n] : pieces)
+      for (size_t k = 0; k < n; ++k, ++i) sorted[fill[rowOf[i]]++] = {first[k].column, first[k].value};
   }
   rowStart_.assign(nOwned + 1, 0);
   column_.reserve(sorted.size());
   value_.reserve(sorted.size());
   for (LO r = 0; r < nOwned; ++r) {
-    std::sort(sorted.begin() + start[r], sorted.begin() + start[r + 1]);
+    for (size_t i = start[r] + 1; i < start[r + 1]; ++i) {  // insertion sort: stable, rows are short
+      const auto item = sorted[i];
+      size_t j = i;
+      for (; j > start[r] && sorted[j - 1].first > item.first; --j) sorted[j] = sorted[j - 1];
+      sorted[j] = item;
+    }
     for (size_t i = start[r]; i < start[r + 1];) {
       const GO column = sorted[i].first;
       double sum = 0.0;

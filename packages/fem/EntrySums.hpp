@@ -2,9 +2,12 @@
 /// \file EntrySums.hpp
 /// Partition-independent assembly sums (reproducible arithmetic, docs/reproducibility.md): each
 /// contribution of a cell to an entry (row, column) of a matrix or vector goes to the rank that
-/// owns the row, the contributions of an entry are sorted by value and added in that order. The
-/// bits of every entry then depend only on the multiset of its contributions, which is the same
-/// on any number of ranks; a rank's partial sum, added to the owner's by an export, is not.
+/// owns the row, and the contributions of an entry are added in the order one rank would add them:
+/// by source rank, each rank's in the order of its list. p4est's partition gives each rank a
+/// consecutive piece of the space-filling curve, so when every rank lists its contributions in the
+/// order of its cells, that is the order of the cells along the curve, the same on any number of
+/// ranks, and the order in which the serial assembly kernels add (Serial execution space). A rank's
+/// partial sum, added to the owner's by an export, is not partition-independent.
 #include <vector>
 
 #include <Tpetra_Import.hpp>
@@ -21,10 +24,16 @@ struct Contribution {
   double value;
 };
 
+/// Whether an assembly on \p comm needs EntrySums for partition-independent sums: under
+/// reproducible arithmetic, except on one rank with the Serial execution space, where the ordinary
+/// kernels already add every entry's contributions in the order of the cells.
+bool needEntrySums(const Comm& comm);
+
 class EntrySums {
  public:
-  /// Collective. \p ownedToOverlap tells the owner of every overlap row that is not owned (the
-  /// owned rows come first in the overlap order).
+  /// Collective. \p contributions in the order of this rank's cells (within a cell, in an order
+  /// that does not depend on the partition). \p ownedToOverlap tells the owner of every overlap
+  /// row that is not owned (the owned rows come first in the overlap order).
   EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<LO, GO, Node>& ownedToOverlap,
             const std::vector<Contribution>& contributions);
 

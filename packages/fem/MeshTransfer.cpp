@@ -69,7 +69,7 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
   std::vector<decltype(overlap[0].getLocalViewHost(Tpetra::Access::ReadWrite))> views;
   for (auto& o : overlap) views.push_back(o.getLocalViewHost(Tpetra::Access::ReadWrite));
   const auto& dir = newAssembler.dirichletFlags();
-  const bool reproducible = core::reproducibleArithmetic();
+  const bool reproducible = needEntrySums(*newMesh_.comm());
   std::vector<std::vector<Contribution>> contributions(reproducible ? nf : 0);
   for (auto& c : contributions) c.reserve(4 * static_cast<size_t>(overlap_->numTargetCells()));
   std::vector<double> treeDeterminant(coarse_.numTrees());
@@ -137,7 +137,7 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
         }
   }
   views.clear();
-  if (reproducible) {  // each node's contributions added sorted by value, on its owner (EntrySums)
+  if (reproducible) {  // each node's contributions added in the order of the cells, on its owner (EntrySums)
     for (int f = 0; f < nf; ++f) {
       auto b = Teuchos::rcp(new Vector(newMesh_.ownedMap()));
       EntrySums(*newMesh_.ownedMap(), *newMesh_.overlapMap(), newMesh_.ownedToOverlap(), contributions[f])

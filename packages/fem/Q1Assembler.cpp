@@ -32,34 +32,34 @@ Q1Assembler::~Q1Assembler() = default;
 
 RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,
                                              const std::vector<char>& lumpMassAt) const {
-  // Under reproducible arithmetic the values come from EntrySums; the pattern still gives the
-  // matrix (and the identity rows of the Dirichlet unknowns).
-  const bool reproducible = core::reproducibleArithmetic();
+  // Where EntrySums are needed (reproducible arithmetic on several ranks) the values come from
+  // them; the pattern still gives the matrix (and the identity rows of the Dirichlet unknowns).
+  const bool exchange = needEntrySums(*mesh_.comm());
   auto A = pattern_->begin();
-  if (!reproducible) assembleInto(A.local, A.local, massCoeff * rho, stiffCoeff * kappa, lumpMassAt);
+  if (!exchange) assembleInto(A.local, A.local, massCoeff * rho, stiffCoeff * kappa, lumpMassAt);
   auto result = pattern_->end(A, dirichlet_);
-  if (reproducible) {
+  if (exchange) {
     std::vector<Contribution> both;
     cellContributions(massCoeff * rho, stiffCoeff * kappa, lumpMassAt, &both, &both);
     canonicalSums(both).writeInto(*result, dirichlet_);
-    registerCanonicalRowOrder(*result);
   }
+  if (core::reproducibleArithmetic()) registerCanonicalRowOrder(*result);
   return result;
 }
 
 std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> Q1Assembler::assembleMassAndStiffness(const ProblemData& problem,
                                                                                 const std::vector<char>& lumpAt) const {
-  const bool reproducible = core::reproducibleArithmetic();  // then the values come from EntrySums
+  const bool exchange = needEntrySums(*mesh_.comm());  // then the values come from EntrySums
   auto M = pattern_->begin(), K = pattern_->begin();
-  if (!reproducible) assembleInto(M.local, K.local, problem.density, problem.stiffness, lumpAt);
+  if (!exchange) assembleInto(M.local, K.local, problem.density, problem.stiffness, lumpAt);
   std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> result{pattern_->end(M, dirichlet_), pattern_->end(K, dirichlet_)};
-  if (reproducible) {
+  if (exchange) {
     std::vector<Contribution> mass, stiffness;
     cellContributions(problem.density, problem.stiffness, lumpAt, &mass, &stiffness);
     canonicalSums(mass).writeInto(*result.first, dirichlet_);
     canonicalSums(stiffness).writeInto(*result.second, dirichlet_);
-    registerCanonicalRowOrder(*result.first);  // K shares M's graph
   }
+  if (core::reproducibleArithmetic()) registerCanonicalRowOrder(*result.first);  // K shares M's graph
   return result;
 }
 
@@ -216,7 +216,7 @@ void Q1Assembler::assembleLoad(const core::Expression& f, double t, double scale
           }
         });
   }
-  if (core::reproducibleArithmetic()) {
+  if (needEntrySums(*mesh_.comm())) {
     const auto loads = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cellLoads);
     std::vector<Contribution> contributions;
     for (LO e = 0; e < mesh_.numLocalCells(); ++e)
@@ -278,7 +278,7 @@ void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned 
           }
         });
   }
-  if (core::reproducibleArithmetic()) {
+  if (needEntrySums(*mesh_.comm())) {
     const auto loads = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), edgeLoads);
     const auto nh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), nodes);
     std::vector<Contribution> contributions;
