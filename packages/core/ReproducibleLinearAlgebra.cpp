@@ -22,9 +22,11 @@ using LocalEntries = CrsMatrix::local_matrix_host_type::index_type;
 
 /// The canonical order of one local graph: order[k] for k in a row's range is the index of the
 /// row's k-th entry by column key. The graph's column indices are kept (a reference that also
-/// keeps their address from being reused while the order is registered).
+/// keeps their address from being reused while the order is registered), and the column map the
+/// keys were imported to (a matrix on the same arrays with another column map has no order).
 struct RowOrder {
   LocalEntries entries;
+  Teuchos::RCP<const Map> columns;
   std::vector<size_t> order;
 };
 
@@ -38,9 +40,11 @@ std::vector<RowOrder>& rowOrders() {
   return orders;
 }
 
-const RowOrder* findRowOrder(const LocalEntries& entries) {
+const RowOrder* findRowOrder(const CrsMatrix& A, const LocalEntries& entries) {
   for (const auto& r : rowOrders())
-    if (r.entries.data() == entries.data() && r.entries.extent(0) == entries.extent(0)) return &r;
+    if (r.entries.data() == entries.data() && r.entries.extent(0) == entries.extent(0) &&
+        r.columns.get() == A.getColMap().get())
+      return &r;
   return nullptr;
 }
 
@@ -54,6 +58,11 @@ void registerCanonicalRowOrder(const CrsMatrix& A, const std::vector<std::array<
   orders.erase(std::remove_if(orders.begin(), orders.end(), [](const RowOrder& r) { return r.entries.use_count() <= 1; }),
                orders.end());
   const auto matrix = A.getLocalMatrixHost();
+  {  // a matrix on already registered arrays (K after M): nothing to do, if so on every rank
+    int known = findRowOrder(A, matrix.graph.entries) != nullptr ? 1 : 0, all = 0;
+    Teuchos::reduceAll(*A.getComm(), Teuchos::REDUCE_MIN, 1, &known, &all);
+    if (all == 1) return;
+  }
   // Keys travel as doubles: they are integers far below 2^53.
   Tpetra::MultiVector<Scalar, LO, GO, Node> owned(A.getDomainMap(), 3, false);
   {
@@ -71,11 +80,10 @@ void registerCanonicalRowOrder(const CrsMatrix& A, const std::vector<std::array<
     imported->doImport(owned, *importer, Tpetra::INSERT);
     columns = imported;
   }
-  const bool known = findRowOrder(matrix.graph.entries) != nullptr;
   auto keys = columns->getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto* rowMap = matrix.graph.row_map.data();
   const LO* cols = matrix.graph.entries.data();
-  RowOrder r{matrix.graph.entries, std::vector<size_t>(matrix.graph.entries.extent(0))};
+  RowOrder r{matrix.graph.entries, A.getColMap(), std::vector<size_t>(matrix.graph.entries.extent(0))};
   auto less = [&](size_t a, size_t b) {
     for (int c = 0; c < 3; ++c)
       if (keys(cols[a], c) != keys(cols[b], c)) return keys(cols[a], c) < keys(cols[b], c);
@@ -91,10 +99,13 @@ void registerCanonicalRowOrder(const CrsMatrix& A, const std::vector<std::array<
   // Every rank registers or none (a rank without an order would sum its rows in another way).
   int allDistinct = distinct ? 1 : 0, global = 0;
   Teuchos::reduceAll(*A.getComm(), Teuchos::REDUCE_MIN, 1, &allDistinct, &global);
-  if (global == 1 && !known) orders.push_back(std::move(r));
+  orders.erase(std::remove_if(orders.begin(), orders.end(),
+                              [&](const RowOrder& o) { return o.entries.data() == r.entries.data(); }),
+               orders.end());  // a stale order of these arrays under another column map
+  if (global == 1) orders.push_back(std::move(r));
 }
 
-bool hasCanonicalRowOrder(const CrsMatrix& A) { return findRowOrder(A.getLocalMatrixHost().graph.entries) != nullptr; }
+bool hasCanonicalRowOrder(const CrsMatrix& A) { return findRowOrder(A, A.getLocalMatrixHost().graph.entries) != nullptr; }
 
 void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
   SIGNORINI_ASSERT(A.getGraph()->getExporter().is_null(), "applyCanonical: the row map must be the range map");
@@ -113,7 +124,7 @@ void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
   const double* values = matrix.values.data();
   const double* x = xv.data();
   double* y = yv.data();
-  if (const auto* canonical = findRowOrder(matrix.graph.entries)) {
+  if (const auto* canonical = findRowOrder(A, matrix.graph.entries)) {
     const size_t* order = canonical->order.data();
     for (LO i = 0; i < matrix.numRows(); ++i) {
       double sum = 0.0;

@@ -17,8 +17,8 @@ namespace signorini::core {
 /// a row's products is then independent of their order, at about 3 times the cost).
 void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y);
 
-/// Gives the rows of \p A, and of every matrix built on the same local graph arrays (a
-/// discretisation's M, K, step matrix and estimator operators), a partition-independent order:
+/// Gives the rows of \p A, and of every matrix built on the same local graph arrays and column map
+/// (a discretisation's M, K, step matrix and estimator operators), a partition-independent order:
 /// each row's entries sorted by the keys of their columns. \p ownedKeys holds one key per owned
 /// row (the domain map equals the row map), the same for the same unknown on any partition (a
 /// node's coordinates on a fine grid, then its component); the column keys are imported. Collective.

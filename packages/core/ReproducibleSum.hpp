@@ -84,9 +84,7 @@ inline void addFoldedTwo(double t, const double* sigma, double* folds) {
     t -= part;
   }
 }
-}  // namespace detail
 
-namespace detail {
 /// reproducibleSums with the number of sums known at compile time (kept in registers).
 template <int Count, class Term>
 void reproducibleSumsOf(const Comm& comm, std::size_t n, const Term& term, double* sums, std::size_t globalTerms) {
