@@ -126,9 +126,22 @@ void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
   double* y = yv.data();
   if (const auto* canonical = findRowOrder(A, matrix.graph.entries)) {
     const size_t* order = canonical->order.data();
-    for (LO i = 0; i < matrix.numRows(); ++i) {
+    auto product = [&](size_t k) { return values[order[k]] * x[cols[order[k]]]; };
+    // Two rows side by side (two dependency chains), each summed in its own order.
+    const LO rows = matrix.numRows();
+    LO i = 0;
+    for (; i + 1 < rows; i += 2) {
+      size_t a = rowMap[i], b = rowMap[i + 1];
+      const size_t aEnd = rowMap[i + 1], bEnd = rowMap[i + 2];
+      double first = 0.0, second = 0.0;
+      for (; a < aEnd && b < bEnd; ++a, ++b) first += product(a), second += product(b);
+      for (; a < aEnd; ++a) first += product(a);
+      for (; b < bEnd; ++b) second += product(b);
+      y[i] = first, y[i + 1] = second;
+    }
+    if (i < rows) {
       double sum = 0.0;
-      for (size_t k = rowMap[i]; k < rowMap[i + 1]; ++k) sum += values[order[k]] * x[cols[order[k]]];
+      for (size_t k = rowMap[i]; k < rowMap[i + 1]; ++k) sum += product(k);
       y[i] = sum;
     }
     return;

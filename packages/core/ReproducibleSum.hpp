@@ -85,20 +85,32 @@ inline void addFoldedTwo(double t, const double* sigma, double* folds) {
   }
 }
 
-/// reproducibleSums with the number of sums known at compile time (kept in registers).
+/// reproducibleSums with the number of sums known at compile time (kept in registers). Both passes
+/// run kLanes interleaved accumulators (independent dependency chains); the maximum and the parts'
+/// sums are exact, so how the terms are split between the lanes does not change a bit.
 template <int Count, class Term>
 void reproducibleSumsOf(const Comm& comm, std::size_t n, const Term& term, double* sums, std::size_t globalTerms) {
-  double largest[Count] = {}, t[Count];
-  for (std::size_t i = 0; i < n; ++i) {
-    term(i, t);
-    for (int k = 0; k < Count; ++k) {
-      const double a = std::fabs(t[k]);
-      largest[k] = a > largest[k] || std::isnan(a) ? a : largest[k];
+  constexpr int kLanes = 4;
+  double largestOf[kLanes][Count] = {}, t[kLanes][Count];
+  std::size_t i = 0;
+  // std::max skips a nan term; its parts, and so the sum, are nan.
+  for (; i + kLanes <= n; i += kLanes)
+    for (int l = 0; l < kLanes; ++l) {
+      term(i + l, t[l]);
+      for (int k = 0; k < Count; ++k) largestOf[l][k] = std::max(largestOf[l][k], std::fabs(t[l][k]));
     }
+  for (; i < n; ++i) {
+    term(i, t[0]);
+    for (int k = 0; k < Count; ++k) largestOf[0][k] = std::max(largestOf[0][k], std::fabs(t[0][k]));
+  }
+  double largest[Count];
+  for (int k = 0; k < Count; ++k) {
+    largest[k] = largestOf[0][k];
+    for (int l = 1; l < kLanes; ++l) largest[k] = std::max(largest[k], largestOf[l][k]);
   }
   maxAll(comm, Count, largest);
   int exponent[Count];
-  double scale[Count], folds[3 * Count + 1] = {};
+  double scale[Count], folds[kLanes][3 * Count] = {};
   bool finite = true;
   for (int k = 0; k < Count; ++k) {
     finite = finite && std::isfinite(largest[k]);
@@ -107,9 +119,9 @@ void reproducibleSumsOf(const Comm& comm, std::size_t n, const Term& term, doubl
   }
   if (!finite) {  // the ordinary sums carry the inf or nan
     double plain[Count] = {};
-    for (std::size_t i = 0; i < n; ++i) {
-      term(i, t);
-      for (int k = 0; k < Count; ++k) plain[k] += t[k];
+    for (std::size_t j = 0; j < n; ++j) {
+      term(j, t[0]);
+      for (int k = 0; k < Count; ++k) plain[k] += t[0][k];
     }
     sumAll(comm, Count, plain);
     for (int k = 0; k < Count; ++k) sums[k] = plain[k];
@@ -118,26 +130,37 @@ void reproducibleSumsOf(const Comm& comm, std::size_t n, const Term& term, doubl
   int bits = 0;  // log2 of the bound on the number of terms, when two parts suffice
   if (globalTerms > 0 && globalTerms <= (std::size_t(1) << 17))
     while ((std::size_t(1) << bits) < globalTerms || bits < 3) ++bits;
+  auto foldAll = [&](const auto& add) {
+    std::size_t j = 0;
+    for (; j + kLanes <= n; j += kLanes)
+      for (int l = 0; l < kLanes; ++l) {
+        term(j + l, t[l]);
+        for (int k = 0; k < Count; ++k) add(t[l][k] * scale[k], folds[l] + 3 * k);
+      }
+    for (; j < n; ++j) {
+      term(j, t[0]);
+      for (int k = 0; k < Count; ++k) add(t[0][k] * scale[k], folds[0] + 3 * k);
+    }
+  };
   if (bits > 0) {
     const int width = 53 - bits;
     const double sigma[2] = {std::ldexp(1.5, 52 - width), std::ldexp(1.5, 52 - 2 * width)};
-    for (std::size_t i = 0; i < n; ++i) {
-      term(i, t);
-      for (int k = 0; k < Count; ++k) addFoldedTwo(t[k] * scale[k], sigma, folds + 3 * k);
-    }
+    foldAll([&](double v, double* f) { addFoldedTwo(v, sigma, f); });
   } else {
-    for (std::size_t i = 0; i < n; ++i) {
-      term(i, t);
-      for (int k = 0; k < Count; ++k) addFolded(t[k] * scale[k], folds + 3 * k);
-    }
+    foldAll([](double v, double* f) { addFolded(v, f); });
   }
-  folds[3 * Count] = static_cast<double>(n);
-  sumAll(comm, 3 * Count + 1, folds);
-  SIGNORINI_ASSERT(folds[3 * Count] <= static_cast<double>(kMaxTerms), "reproducibleSums: more than 2^26 terms in one sum");
-  SIGNORINI_ASSERT(globalTerms == 0 || folds[3 * Count] == static_cast<double>(globalTerms),
+  double total[3 * Count + 1];
+  for (int j = 0; j < 3 * Count; ++j) {  // exact: sums of parts
+    total[j] = folds[0][j];
+    for (int l = 1; l < kLanes; ++l) total[j] += folds[l][j];
+  }
+  total[3 * Count] = static_cast<double>(n);
+  sumAll(comm, 3 * Count + 1, total);
+  SIGNORINI_ASSERT(total[3 * Count] <= static_cast<double>(kMaxTerms), "reproducibleSums: more than 2^26 terms in one sum");
+  SIGNORINI_ASSERT(globalTerms == 0 || total[3 * Count] == static_cast<double>(globalTerms),
                    "reproducibleSums: globalTerms is not the number of terms");
   for (int k = 0; k < Count; ++k)
-    sums[k] = std::ldexp((folds[3 * k] + folds[3 * k + 1]) + folds[3 * k + 2], exponent[k]);
+    sums[k] = std::ldexp((total[3 * k] + total[3 * k + 1]) + total[3 * k + 2], exponent[k]);
 }
 }  // namespace detail
 
