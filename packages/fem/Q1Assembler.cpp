@@ -32,16 +32,18 @@ Q1Assembler::~Q1Assembler() = default;
 
 RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,
                                              const std::vector<char>& lumpMassAt) const {
-  // Where EntrySums are needed (reproducible arithmetic on several ranks) the values come from
-  // them; the pattern still gives the matrix (and the identity rows of the Dirichlet unknowns).
+  // Where EntrySums are needed (reproducible arithmetic on several ranks) they give the rows that
+  // other ranks' cells touch (all rows with threads); the pattern still gives the matrix (and the
+  // identity rows of the Dirichlet unknowns).
   const bool exchange = needEntrySums(*mesh_.comm());
+  const auto rows = exchangedRows();
   auto A = pattern_->begin();
-  if (!exchange) assembleInto(A.local, A.local, massCoeff * rho, stiffCoeff * kappa, lumpMassAt);
+  if (!exchange || !rows.empty()) assembleInto(A.local, A.local, massCoeff * rho, stiffCoeff * kappa, lumpMassAt);
   auto result = pattern_->end(A, dirichlet_);
   if (exchange) {
     std::vector<Contribution> both;
-    cellContributions(massCoeff * rho, stiffCoeff * kappa, lumpMassAt, &both, &both);
-    canonicalSums(both).writeInto(*result, dirichlet_);
+    cellContributions(massCoeff * rho, stiffCoeff * kappa, lumpMassAt, &both, &both, rows);
+    canonicalSums(both).writeInto(*result, keptRows(rows));
   }
   if (core::reproducibleArithmetic()) registerCanonicalRowOrder(*result);
   return result;
@@ -49,18 +51,38 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
 
 std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> Q1Assembler::assembleMassAndStiffness(const ProblemData& problem,
                                                                                 const std::vector<char>& lumpAt) const {
-  const bool exchange = needEntrySums(*mesh_.comm());  // then the values come from EntrySums
+  const bool exchange = needEntrySums(*mesh_.comm());  // then the exchanged rows come from EntrySums
+  const auto rows = exchangedRows();
   auto M = pattern_->begin(), K = pattern_->begin();
-  if (!exchange) assembleInto(M.local, K.local, problem.density, problem.stiffness, lumpAt);
+  if (!exchange || !rows.empty()) assembleInto(M.local, K.local, problem.density, problem.stiffness, lumpAt);
   std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> result{pattern_->end(M, dirichlet_), pattern_->end(K, dirichlet_)};
   if (exchange) {
     std::vector<Contribution> mass, stiffness;
-    cellContributions(problem.density, problem.stiffness, lumpAt, &mass, &stiffness);
-    canonicalSums(mass).writeInto(*result.first, dirichlet_);
-    canonicalSums(stiffness).writeInto(*result.second, dirichlet_);
+    cellContributions(problem.density, problem.stiffness, lumpAt, &mass, &stiffness, rows);
+    const auto keep = keptRows(rows);
+    canonicalSums(mass).writeInto(*result.first, keep);
+    canonicalSums(stiffness).writeInto(*result.second, keep);
   }
   if (core::reproducibleArithmetic()) registerCanonicalRowOrder(*result.first);  // K shares M's graph
   return result;
+}
+
+std::vector<char> Q1Assembler::exchangedRows() const {
+  if (!needEntrySums(*mesh_.comm()) || kAtomicScatter) return {};
+  // Rows of nodes shared with another rank: owned ones that other ranks import, and the guests.
+  const size_t nOwned = mesh_.ownedMap()->getNodeNumElements();
+  std::vector<char> rows(mesh_.overlapMap()->getNodeNumElements(), 0);
+  for (size_t i = nOwned; i < rows.size(); ++i) rows[i] = 1;
+  for (const LO i : mesh_.ownedToOverlap().getExportLIDs()) rows[i] = 1;
+  return rows;
+}
+
+std::vector<char> Q1Assembler::keptRows(const std::vector<char>& exchanged) const {
+  const size_t nOwned = mesh_.ownedMap()->getNodeNumElements();
+  std::vector<char> keep(dirichlet_.begin(), dirichlet_.begin() + nOwned);
+  if (!exchanged.empty())
+    for (size_t i = 0; i < nOwned; ++i) keep[i] = keep[i] || !exchanged[i];
+  return keep;
 }
 
 void Q1Assembler::registerCanonicalRowOrder(const CrsMatrix& A) const {
@@ -77,7 +99,8 @@ EntrySums Q1Assembler::canonicalSums(const std::vector<Contribution>& contributi
 }
 
 void Q1Assembler::cellContributions(double cm, double ck, const std::vector<char>& lumpMassAt,
-                                    std::vector<Contribution>* mass, std::vector<Contribution>* stiffness) const {
+                                    std::vector<Contribution>* mass, std::vector<Contribution>* stiffness,
+                                    const std::vector<char>& onlyRows) const {
   const auto& X = mesh_.cornerCoordsHost;
   const auto& dofs = mesh_.cornerDofsHost;
   const auto& wts = mesh_.cornerWeightsHost;
@@ -86,14 +109,19 @@ void Q1Assembler::cellContributions(double cm, double ck, const std::vector<char
   const size_t perCell = mass == stiffness ? 32 : 16;  // 16 couplings per cell without hanging corners
   mass->reserve(mass->size() + perCell * static_cast<size_t>(mesh_.numLocalCells()));
   stiffness->reserve(stiffness->size() + perCell * static_cast<size_t>(mesh_.numLocalCells()));
+  auto wanted = [&](LO row) { return row >= 0 && !dirichlet_[row] && (onlyRows.empty() || onlyRows[row]); };
   for (LO e = 0; e < mesh_.numLocalCells(); ++e) {
+    bool any = false;
+    for (int a = 0; a < 4; ++a)
+      for (int ka = 0; ka < 2; ++ka) any = any || wanted(dofs(e, a, ka));
+    if (!any) continue;
     double Xe[4][2], Ke[4][4], Me[4][4];
     for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
     q1ElementMatrices(Xe, cm, ck, Me, Ke);
     for (int a = 0; a < 4; ++a)
       for (int ka = 0; ka < 2; ++ka) {
         const LO row = dofs(e, a, ka);
-        if (row < 0 || dirichlet_[row]) continue;
+        if (!wanted(row)) continue;
         for (int b = 0; b < 4; ++b)
           for (int kb = 0; kb < 2; ++kb) {
             const LO dof = dofs(e, b, kb);

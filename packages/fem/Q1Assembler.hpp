@@ -90,9 +90,18 @@ class Q1Assembler : public Assembler {
                     const std::vector<char>& lumpMassAt) const;
   /// Reproducible arithmetic (core::reproducibleArithmetic()): the cells' contributions to M
   /// (times cm, lumped at \p lumpMassAt) and K (times ck), one per entry and cell, Dirichlet rows
-  /// and columns left out, for EntrySums; \p mass and \p stiffness may be the same list.
+  /// and columns left out, for EntrySums; \p mass and \p stiffness may be the same list. Only the
+  /// rows flagged in \p onlyRows (overlap ids), when it is not empty.
   void cellContributions(double cm, double ck, const std::vector<char>& lumpMassAt, std::vector<Contribution>* mass,
-                         std::vector<Contribution>* stiffness) const;
+                         std::vector<Contribution>* stiffness, const std::vector<char>& onlyRows = {}) const;
+  /// Reproducible arithmetic on several ranks with the Serial execution space: the overlap rows that
+  /// other ranks' cells also touch (shared nodes). Only they need EntrySums; the ordinary kernel
+  /// adds every other row's contributions in cell order already. Empty where EntrySums give all
+  /// rows (threads) or none are needed.
+  std::vector<char> exchangedRows() const;
+  /// The owned rows EntrySums must leave alone: Dirichlet rows, and those not in \p exchanged
+  /// (empty: none of them).
+  std::vector<char> keptRows(const std::vector<char>& exchanged) const;
   EntrySums canonicalSums(const std::vector<Contribution>& contributions) const;
   /// Reproducible arithmetic: rows of matrices on the pattern summed in the order of the nodes'
   /// canonical keys (core::registerCanonicalRowOrder; one order serves M, K and the step matrix).
