@@ -99,9 +99,6 @@ void registerCanonicalRowOrder(const CrsMatrix& A, const std::vector<std::array<
   // Every rank registers or none (a rank without an order would sum its rows in another way).
   int allDistinct = distinct ? 1 : 0, global = 0;
   Teuchos::reduceAll(*A.getComm(), Teuchos::REDUCE_MIN, 1, &allDistinct, &global);
-  orders.erase(std::remove_if(orders.begin(), orders.end(),
-                              [&](const RowOrder& o) { return o.entries.data() == r.entries.data(); }),
-               orders.end());  // a stale order of these arrays under another column map
   if (global == 1) orders.push_back(std::move(r));
 }
 

@@ -10,7 +10,8 @@
 /// parts, multiples of 2^-27, 2^-54 and 2^-81, by adding and subtracting fixed constants. Sums of
 /// such parts are exact in double precision for up to 2^26 terms, so each part's sum, and their sum
 /// over ranks, has the same bits in any order. The result is (S0 + S1) + S2, scaled back: its error
-/// is at most 2^-54 M (2^26 terms, each off by at most 2^-82 2^e), far below that of an ordinary
+/// is at most 2^-54 M (2^26 terms, each off by at most 2^-82 2^e) plus the rounding of adding the
+/// parts' sums up (half a unit in the last place of each addition), far below that of an ordinary
 /// sum (about n 2^-53 M). Sums of at most 2^17 terms can use two wider parts (globalTerms below).
 ///
 /// Cost: two passes over the terms (the largest term, then the parts) and two global reductions.
@@ -75,6 +76,16 @@ void maxAll(const Comm& comm, int count, double* values);
 /// Global sums of \p count values (in place).
 void sumAll(const Comm& comm, int count, double* values);
 
+/// The width W of the two parts for a sum of \p globalTerms terms (all ranks), or 0 for three parts
+/// of 27 bits: W = 53 - ceil(log2 globalTerms) for 1 <= globalTerms <= 2^17 (at most 50), so that
+/// the sum of globalTerms parts below 1 on the grid 2^-W stays below 2^53 grid units: exact.
+inline int twoPartWidth(std::size_t globalTerms) {
+  if (globalTerms == 0 || globalTerms > (std::size_t(1) << 17)) return 0;
+  int bits = 3;
+  while ((std::size_t(1) << bits) < globalTerms) ++bits;
+  return 53 - bits;
+}
+
 /// Adds the two parts of \p t (|t| < 1; multiples of 2^-W and 2^-2W for the splitting constants
 /// \p sigma = 1.5 * 2^(52 - W), 1.5 * 2^(52 - 2W), 36 <= W <= 50) to folds[0..1].
 inline void addFoldedTwo(double t, const double* sigma, double* folds) {
@@ -127,9 +138,7 @@ void reproducibleSumsOf(const Comm& comm, std::size_t n, const Term& term, doubl
     for (int k = 0; k < Count; ++k) sums[k] = plain[k];
     return;
   }
-  int bits = 0;  // log2 of the bound on the number of terms, when two parts suffice
-  if (globalTerms > 0 && globalTerms <= (std::size_t(1) << 17))
-    while ((std::size_t(1) << bits) < globalTerms || bits < 3) ++bits;
+  const int width = twoPartWidth(globalTerms);
   auto foldAll = [&](const auto& add) {
     std::size_t j = 0;
     for (; j + kLanes <= n; j += kLanes)
@@ -142,8 +151,7 @@ void reproducibleSumsOf(const Comm& comm, std::size_t n, const Term& term, doubl
       for (int k = 0; k < Count; ++k) add(t[0][k] * scale[k], folds[0] + 3 * k);
     }
   };
-  if (bits > 0) {
-    const int width = 53 - bits;
+  if (width > 0) {
     const double sigma[2] = {std::ldexp(1.5, 52 - width), std::ldexp(1.5, 52 - 2 * width)};
     foldAll([&](double v, double* f) { addFoldedTwo(v, sigma, f); });
   } else {
@@ -172,7 +180,7 @@ void reproducibleSumsOf(const Comm& comm, std::size_t n, const Term& term, doubl
 /// \p globalTerms, when known to every rank without communication (a map's global number of
 /// entries), is the number of terms over all ranks (asserted). Up to 2^17 terms the parts are then
 /// two, of 53 - ceil(log2 globalTerms) bits, instead of three of 27 bits (a third less work); the
-/// error bound stays 2^-54 max|term| either way. It must not depend on the partition: the number
+/// parts' error stays below 2^-54 max|term| either way. It must not depend on the partition: the number
 /// of parts is part of the result's bits.
 template <class Term>
 void reproducibleSums(const Comm& comm, int count, std::size_t n, const Term& term, double* sums,

@@ -89,7 +89,8 @@ class Q1Assembler : public Assembler {
   void assembleInto(const LocalMatrix& first, const LocalMatrix& second, double cm, double ck,
                     const std::vector<char>& lumpMassAt) const;
   /// Reproducible arithmetic (core::reproducibleArithmetic()): the cells' contributions to M
-  /// (times cm, lumped at \p lumpMassAt) and K (times ck), one per entry and cell, Dirichlet rows
+  /// (times cm, lumped at \p lumpMassAt) and K (times ck), one per pair of corner unknowns of each
+  /// cell (several per entry and cell at hanging corners), in the kernel's order, Dirichlet rows
   /// and columns left out, for EntrySums; \p mass and \p stiffness may be the same list. Only the
   /// rows flagged in \p onlyRows (overlap ids), when it is not empty.
   void cellContributions(double cm, double ck, const std::vector<char>& lumpMassAt, std::vector<Contribution>* mass,

@@ -145,7 +145,7 @@ TEST(ReproducibleSum, SubnormalTermsKeepTheirBitsAndStayFinite) {
 // With the global number of terms given (globalTerms), sums of up to 2^17 terms use two wider
 // parts: still the same bits for every distribution, and within the documented 2^-54 max|term| of
 // the exact sum (a compensated long double sum of the global list stands in for it). Sizes at the
-// edges: 3 terms (the narrowest width), 2^17 (the last with two parts), 2^17 + 1 (three parts).
+// edges: 3 terms (the widest parts, 50 bits), 2^17 (the last with two parts), 2^17 + 1 (three parts).
 // Two kinds of terms: 30 orders of magnitude with cancellation, and positive terms of one size
 // (squares, as in a norm), whose parts' sums grow to the bound that the widths must leave room for.
 TEST(ReproducibleSum, AKnownTermCountKeepsTheBitsAndTheAccuracy) {
@@ -176,5 +176,47 @@ TEST(ReproducibleSum, AKnownTermCountKeepsTheBitsAndTheAccuracy) {
       // the parts' error, and up to one unit in the last place from adding the parts up
       EXPECT_LE(std::fabs(results[0] - exact), 0x1p-54 * largest + 0x1p-52 * std::fabs(exact)) << n << " terms";
     }
+  }
+}
+
+// The width of the two parts (detail::twoPartWidth) leaves exactly enough room: N terms just
+// below 1 with full mantissas, folded into one accumulator in one order (no lanes, no ranks to
+// split the sum), give parts' sums equal to their exact integer sums. The control: one more bit of
+// width makes the same sums inexact for every N whose bound is filled, so the test sees a width
+// that is too large by a single bit.
+TEST(ReproducibleSum, TwoPartWidthKeepsTheFoldSumsExact) {
+  using signorini::core::detail::addFoldedTwo;
+  using signorini::core::detail::twoPartWidth;
+  EXPECT_EQ(twoPartWidth(0), 0);
+  EXPECT_EQ(twoPartWidth((std::size_t(1) << 17) + 1), 0);
+  auto exact = [](std::size_t n, int width) {  // whether both folds equal their exact sums
+    std::mt19937_64 gen(99 + n);
+    std::uniform_real_distribution<double> unit(0.0, 1.0);
+    const double sigma[2] = {std::ldexp(1.5, 52 - width), std::ldexp(1.5, 52 - 2 * width)};
+    double folds[2] = {0.0, 0.0};
+    __int128 sums[2] = {0, 0};
+    for (std::size_t i = 0; i < n; ++i) {
+      const double t = 1.0 - std::ldexp(unit(gen), -10);  // in [1 - 2^-10, 1), random low bits
+      double rest = t;
+      for (int f = 0; f < 2; ++f) {
+        const double part = (sigma[f] + rest) - sigma[f];
+        sums[f] += static_cast<__int128>(std::ldexp(part, width * (f + 1)));  // an integer below 2^51
+        rest -= part;
+      }
+      addFoldedTwo(t, sigma, folds);
+    }
+    return static_cast<__int128>(std::ldexp(folds[0], width)) == sums[0] &&
+           static_cast<__int128>(std::ldexp(folds[1], 2 * width)) == sums[1];
+  };
+  for (const std::size_t n : {std::size_t(3), std::size_t(5), std::size_t(1000), std::size_t(5000),
+                              std::size_t(65537), std::size_t(131071), std::size_t(1) << 17}) {
+    const int width = twoPartWidth(n);
+    ASSERT_GE(width, 36) << n;
+    ASSERT_LE(width, 50) << n;
+    EXPECT_TRUE(exact(n, width)) << n << " terms, width " << width;
+    // One bit wider halves the room, 2^(52 - width): the parts' sum (about 0.9995 n) passes it for
+    // every n here but the smallest and 65537 (which sits just above 2^16).
+    if (n >= 1000 && 0.999 * static_cast<double>(n) > std::ldexp(1.0, 52 - width))
+      EXPECT_FALSE(exact(n, width + 1)) << n << " terms";
   }
 }
