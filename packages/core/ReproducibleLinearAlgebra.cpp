@@ -48,6 +48,15 @@ const RowOrder* findRowOrder(const CrsMatrix& A, const LocalEntries& entries) {
   return nullptr;
 }
 
+/// \p X (on A's domain map) on A's column map: X itself without an importer, else imported.
+Teuchos::RCP<const MultiVector> onColumnMap(const CrsMatrix& A, const MultiVector& X) {
+  const auto importer = A.getGraph()->getImporter();
+  if (importer.is_null()) return Teuchos::rcpFromRef(X);
+  auto imported = Teuchos::rcp(new MultiVector(A.getColMap(), X.getNumVectors(), false));
+  imported->doImport(X, *importer, Tpetra::INSERT);
+  return imported;
+}
+
 }  // namespace
 
 void registerCanonicalRowOrder(const CrsMatrix& A, const std::vector<std::array<long long, 3>>& ownedKeys) {
@@ -64,7 +73,7 @@ void registerCanonicalRowOrder(const CrsMatrix& A, const std::vector<std::array<
     if (all == 1) return;
   }
   // Keys travel as doubles: they are integers far below 2^53.
-  Tpetra::MultiVector<Scalar, LO, GO, Node> owned(A.getDomainMap(), 3, false);
+  MultiVector owned(A.getDomainMap(), 3, false);
   {
     auto v = owned.getLocalViewHost(Tpetra::Access::OverwriteAll);
     for (size_t i = 0; i < ownedKeys.size(); ++i)
@@ -73,13 +82,7 @@ void registerCanonicalRowOrder(const CrsMatrix& A, const std::vector<std::array<
         v(i, c) = static_cast<double>(ownedKeys[i][c]);
       }
   }
-  const auto importer = A.getGraph()->getImporter();
-  Teuchos::RCP<const Tpetra::MultiVector<Scalar, LO, GO, Node>> columns = Teuchos::rcpFromRef(owned);
-  if (!importer.is_null()) {
-    auto imported = Teuchos::rcp(new Tpetra::MultiVector<Scalar, LO, GO, Node>(A.getColMap(), 3, false));
-    imported->doImport(owned, *importer, Tpetra::INSERT);
-    columns = imported;
-  }
+  const auto columns = onColumnMap(A, owned);
   auto keys = columns->getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto* rowMap = matrix.graph.row_map.data();
   const LO* cols = matrix.graph.entries.data();
@@ -106,13 +109,7 @@ bool hasCanonicalRowOrder(const CrsMatrix& A) { return findRowOrder(A, A.getLoca
 
 void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
   SIGNORINI_ASSERT(A.getGraph()->getExporter().is_null(), "applyCanonical: the row map must be the range map");
-  const auto importer = A.getGraph()->getImporter();
-  Teuchos::RCP<const Vector> columns = Teuchos::rcpFromRef(X);
-  if (!importer.is_null()) {
-    auto imported = Teuchos::rcp(new Vector(A.getColMap(), false));
-    imported->doImport(X, *importer, Tpetra::INSERT);
-    columns = imported;
-  }
+  const auto columns = onColumnMap(A, X);
   const auto matrix = A.getLocalMatrixHost();
   auto xv = columns->getLocalViewHost(Tpetra::Access::ReadOnly);
   auto yv = Y.getLocalViewHost(Tpetra::Access::OverwriteAll);

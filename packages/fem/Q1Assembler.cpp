@@ -37,8 +37,9 @@ RCP<CrsMatrix> Q1Assembler::assembleOperator(double massCoeff, double stiffCoeff
   // identity rows of the Dirichlet unknowns).
   const bool exchange = needEntrySums(*mesh_.comm());
   const auto rows = exchangedRows();
+  const bool kernel = !exchange || !rows.empty();  // not when EntrySums give every row (threads)
   auto A = pattern_->begin();
-  if (!exchange || !rows.empty()) assembleInto(A.local, A.local, massCoeff * rho, stiffCoeff * kappa, lumpMassAt);
+  if (kernel) assembleInto(A.local, A.local, massCoeff * rho, stiffCoeff * kappa, lumpMassAt);
   auto result = pattern_->end(A, dirichlet_);
   if (exchange) {
     std::vector<Contribution> both;
@@ -53,8 +54,9 @@ std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> Q1Assembler::assembleMassAndStiffness(
                                                                                 const std::vector<char>& lumpAt) const {
   const bool exchange = needEntrySums(*mesh_.comm());  // then the exchanged rows come from EntrySums
   const auto rows = exchangedRows();
+  const bool kernel = !exchange || !rows.empty();  // not when EntrySums give every row (threads)
   auto M = pattern_->begin(), K = pattern_->begin();
-  if (!exchange || !rows.empty()) assembleInto(M.local, K.local, problem.density, problem.stiffness, lumpAt);
+  if (kernel) assembleInto(M.local, K.local, problem.density, problem.stiffness, lumpAt);
   std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> result{pattern_->end(M, dirichlet_), pattern_->end(K, dirichlet_)};
   if (exchange) {
     std::vector<Contribution> mass, stiffness;
