@@ -176,6 +176,53 @@ void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
   }
 }
 
+namespace {
+
+/// The columns' rows of A X in the registered \p order, each summed left to right as applyCanonical
+/// sums it; NC columns per row are NC independent dependency chains.
+template <int NC>
+void applyOrdered(const CrsMatrix::local_matrix_host_type& matrix, const size_t* order, const double* x, size_t xStride,
+                  double* y, size_t yStride, const int* columns) {
+  const auto* rowMap = matrix.graph.row_map.data();
+  const LO* cols = matrix.graph.entries.data();
+  const double* values = matrix.values.data();
+  const double* xc[NC];
+  double* yc[NC];
+  for (int c = 0; c < NC; ++c) xc[c] = x + columns[c] * xStride, yc[c] = y + columns[c] * yStride;
+  for (LO i = 0; i < matrix.numRows(); ++i) {
+    double sum[NC] = {};
+    for (size_t k = rowMap[i]; k < rowMap[i + 1]; ++k) {
+      const double value = values[order[k]];
+      const LO col = cols[order[k]];
+      for (int c = 0; c < NC; ++c) sum[c] += value * xc[c][col];
+    }
+    for (int c = 0; c < NC; ++c) yc[c][i] = sum[c];
+  }
+}
+
+}  // namespace
+
+void applyCanonicalColumns(const CrsMatrix& A, const MultiVector& X, MultiVector& Y, const std::vector<int>& columns) {
+  SIGNORINI_ASSERT(!columns.empty() && columns.size() <= 3, "applyCanonicalColumns: 1 to 3 columns");
+  SIGNORINI_ASSERT(X.getNumVectors() == Y.getNumVectors(), "applyCanonicalColumns: X and Y differ in columns");
+  const auto matrix = A.getLocalMatrixHost();
+  const auto* canonical = findRowOrder(A, matrix.graph.entries);
+  if (!canonical || columns.size() == 1) {
+    for (const int c : columns) applyCanonical(A, *X.getVector(c), *Y.getVectorNonConst(c));
+    return;
+  }
+  SIGNORINI_ASSERT(A.getGraph()->getExporter().is_null(), "applyCanonicalColumns: the row map must be the range map");
+  const auto onColumns = onColumnMap(A, X);
+  auto xv = onColumns->getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto yv = Y.getLocalViewHost(Tpetra::Access::ReadWrite);
+  SIGNORINI_ASSERT(X.getNumVectors() == 1 || (xv.stride(1) > 0 && yv.stride(1) > 0), "applyCanonicalColumns: strided views");
+  const size_t xStride = xv.stride(1), yStride = yv.stride(1);
+  if (columns.size() == 2)
+    applyOrdered<2>(matrix, canonical->order.data(), xv.data(), xStride, yv.data(), yStride, columns.data());
+  else
+    applyOrdered<3>(matrix, canonical->order.data(), xv.data(), xStride, yv.data(), yStride, columns.data());
+}
+
 void apply(const CrsMatrix& A, const Vector& x, Vector& y) {
   if (reproducibleArithmetic())
     applyCanonical(A, x, y);

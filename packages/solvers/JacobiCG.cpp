@@ -248,11 +248,17 @@ std::vector<int> solveGroup(const CrsMatrix& A, const std::vector<const Vector*>
 
 int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativeTolerance,
                               int maxIterations) {
+  Vector diagonal(A.getRowMap());
+  A.getLocalDiagCopy(diagonal);
+  return solveReproducibleJacobiCG(A, diagonal, b, x, relativeTolerance, maxIterations);
+}
+
+int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& diagonal, const Vector& b, Vector& x,
+                              double relativeTolerance, int maxIterations) {
   const Comm& comm = *A.getRangeMap()->getComm();
   const size_t n = A.getRangeMap()->getNodeNumElements();
   const size_t global = A.getRangeMap()->getGlobalNumElements();  // the same on any partition
-  Vector diagonal(A.getRowMap()), r(A.getRangeMap()), p(A.getRangeMap()), q(A.getRangeMap());
-  A.getLocalDiagCopy(diagonal);
+  Vector r(A.getRangeMap()), p(A.getRangeMap()), q(A.getRangeMap());
   core::applyCanonical(A, x, q);
   auto dv = diagonal.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto bv = b.getLocalViewHost(Tpetra::Access::ReadOnly);
@@ -303,24 +309,117 @@ int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, do
                           std::to_string(maxIterations) + " iterations");
 }
 
+namespace {
+
+/// solveReproducibleJacobiCG for NF fields at once: every field takes the operations of its own
+/// solve in the same order, so it gets their bits and iteration count; the fields share the
+/// matrix sweeps (core::applyCanonicalColumns) and the diagonal.
+template <int NF>
+std::vector<int> solveReproducibleGroup(const CrsMatrix& A, const std::vector<const Vector*>& b,
+                                        const std::vector<Vector*>& x, double relativeTolerance, int maxIterations) {
+  const Comm& comm = *A.getRangeMap()->getComm();
+  const size_t n = A.getRangeMap()->getNodeNumElements();
+  const size_t global = A.getRangeMap()->getGlobalNumElements();
+  Vector diagonal(A.getRowMap());
+  A.getLocalDiagCopy(diagonal);
+  MultiVector B(A.getRangeMap(), NF, false), X(A.getRangeMap(), NF, false), R(A.getRangeMap(), NF, false),
+      P(A.getRangeMap(), NF, false), Q(A.getRangeMap(), NF, false);
+  for (int f = 0; f < NF; ++f) B.getVectorNonConst(f)->assign(*b[f]), X.getVectorNonConst(f)->assign(*x[f]);
+  std::vector<int> columns(NF), iterations(NF, 0);
+  for (int f = 0; f < NF; ++f) columns[f] = f;
+  core::applyCanonicalColumns(A, X, Q, columns);
+  auto dv = diagonal.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto bv = B.getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto xv = X.getLocalViewHost(Tpetra::Access::ReadWrite);
+  auto rv = R.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  auto pv = P.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  {
+    auto qv = Q.getLocalViewHost(Tpetra::Access::ReadOnly);
+    for (int f = 0; f < NF; ++f)
+      for (size_t i = 0; i < n; ++i) rv(i, f) = bv(i, f) - qv(i, f), pv(i, f) = rv(i, f) / dv(i, 0);
+  }
+  // Each field's sums are summed as in its own solve (the bits of a sum do not depend on the
+  // others summed with it, but one field per call keeps the accumulators in registers).
+  double start[NF][3];  // ||b||^2, r.z, ||r||^2
+  for (int f = 0; f < NF; ++f)
+    core::reproducibleSums(
+        comm, 3, n,
+        [&](size_t i, double* t) {
+          t[0] = bv(i, f) * bv(i, f);
+          t[1] = rv(i, f) * pv(i, f);
+          t[2] = rv(i, f) * rv(i, f);
+        },
+        start[f], global);
+  double target[NF], rz[NF];
+  std::vector<int> running;
+  for (int f = 0; f < NF; ++f) {
+    target[f] = relativeTolerance * std::sqrt(start[f][0]);
+    rz[f] = start[f][1];
+    if (start[f][0] == 0.0)
+      x[f]->putScalar(0.0);
+    else if (std::sqrt(start[f][2]) > target[f])
+      running.push_back(f);
+  }
+  for (int it = 1; it <= maxIterations && !running.empty(); ++it) {
+    core::applyCanonicalColumns(A, P, Q, running);
+    auto qv = Q.getLocalViewHost(Tpetra::Access::ReadOnly);
+    std::vector<int> still;
+    for (const int f : running) {
+      double pq;
+      core::reproducibleSums(comm, 1, n, [&](size_t i, double* t) { t[0] = pv(i, f) * qv(i, f); }, &pq, global);
+      const double alpha = rz[f] / pq;
+      for (size_t i = 0; i < n; ++i) xv(i, f) += alpha * pv(i, f), rv(i, f) -= alpha * qv(i, f);
+      double sums[2];  // r.r, r.z
+      core::reproducibleSums(
+          comm, 2, n,
+          [&](size_t i, double* t) {
+            t[0] = rv(i, f) * rv(i, f);
+            t[1] = rv(i, f) * (rv(i, f) / dv(i, 0));
+          },
+          sums, global);
+      if (std::sqrt(sums[0]) <= target[f]) {
+        iterations[f] = it;
+        continue;
+      }
+      const double beta = sums[1] / rz[f];
+      rz[f] = sums[1];
+      for (size_t i = 0; i < n; ++i) pv(i, f) = rv(i, f) / dv(i, 0) + beta * pv(i, f);
+      still.push_back(f);
+    }
+    running = still;
+  }
+  if (!running.empty())
+    throw core::SolverError("Jacobi CG: no convergence to " + std::to_string(relativeTolerance) + " in " +
+                            std::to_string(maxIterations) + " iterations");
+  for (int f = 0; f < NF; ++f)
+    if (start[f][0] != 0.0) x[f]->assign(*X.getVector(f));
+  return iterations;
+}
+
+}  // namespace
+
 std::vector<int> solveJacobiCG(const CrsMatrix& A, const std::vector<const Vector*>& b, const std::vector<Vector*>& x,
                                double relativeTolerance, int maxIterations) {
   SIGNORINI_ASSERT(b.size() == x.size(), "one initial guess per right-hand side");
-  if (core::reproducibleArithmetic()) {
-    std::vector<int> iterations;
-    for (size_t f = 0; f < b.size(); ++f)
-      iterations.push_back(solveReproducibleJacobiCG(A, *b[f], *x[f], relativeTolerance, maxIterations));
-    return iterations;
-  }
+  const bool reproducible = core::reproducibleArithmetic();
   std::vector<int> iterations;
   for (size_t first = 0; first < b.size(); first += kMaxFields) {
     const size_t count = std::min<size_t>(b.size() - first, kMaxFields);
     const std::vector<const Vector*> groupB(b.begin() + first, b.begin() + first + count);
     const std::vector<Vector*> groupX(x.begin() + first, x.begin() + first + count);
     std::vector<int> group;
-    if (count == 1) group = solveGroup<1>(A, groupB, groupX, relativeTolerance, maxIterations);
-    if (count == 2) group = solveGroup<2>(A, groupB, groupX, relativeTolerance, maxIterations);
-    if (count == 3) group = solveGroup<3>(A, groupB, groupX, relativeTolerance, maxIterations);
+    if (reproducible && count == 1)
+      group = {solveReproducibleJacobiCG(A, *groupB[0], *groupX[0], relativeTolerance, maxIterations)};
+    else if (reproducible && count == 2)
+      group = solveReproducibleGroup<2>(A, groupB, groupX, relativeTolerance, maxIterations);
+    else if (reproducible)
+      group = solveReproducibleGroup<3>(A, groupB, groupX, relativeTolerance, maxIterations);
+    else if (count == 1)
+      group = solveGroup<1>(A, groupB, groupX, relativeTolerance, maxIterations);
+    else if (count == 2)
+      group = solveGroup<2>(A, groupB, groupX, relativeTolerance, maxIterations);
+    else
+      group = solveGroup<3>(A, groupB, groupX, relativeTolerance, maxIterations);
     iterations.insert(iterations.end(), group.begin(), group.end());
   }
   return iterations;

@@ -20,6 +20,9 @@ int solveJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativ
 /// operations in the same order on one rank), but the fields share the matrix applies (one
 /// multi-vector apply while all iterate), the vector kernels and the global sums. Returns each
 /// field's iterations; throws core::SolverError when a field has not converged after \p maxIterations.
+/// Under core::reproducibleArithmetic() each field gets exactly the bits of its own
+/// solveReproducibleJacobiCG (on any number of ranks), the fields again sharing the matrix sweeps
+/// (core::applyCanonicalColumns).
 std::vector<int> solveJacobiCG(const CrsMatrix& A, const std::vector<const Vector*>& b, const std::vector<Vector*>& x,
                                double relativeTolerance, int maxIterations);
 
@@ -29,5 +32,9 @@ std::vector<int> solveJacobiCG(const CrsMatrix& A, const std::vector<const Vecto
 /// core::reproducibleArithmetic() is on.
 int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativeTolerance,
                               int maxIterations);
+/// The same with A's diagonal given (\p diagonal on A's row map, as A.getLocalDiagCopy gives it),
+/// for a caller that solves with one matrix many times.
+int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& diagonal, const Vector& b, Vector& x,
+                              double relativeTolerance, int maxIterations);
 
 }  // namespace signorini::solvers

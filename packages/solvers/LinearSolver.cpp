@@ -61,6 +61,7 @@ struct LinearSolver::Impl {
   RCP<MultiVector> nullspace;
   int equationsPerNode = 1;
   bool reproducible = false;  ///< core::reproducibleArithmetic() when the operator was set
+  RCP<Vector> diagonal;       ///< A's diagonal for the reproducible Jacobi CG
 };
 
 core::ParameterList LinearSolver::getValidParameters() {
@@ -106,6 +107,8 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
     if (choice != "Jacobi")
       SIGNORINI_USER_ERROR("Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\", not \"" << choice
                                                                                                        << "\"");
+    I.diagonal = Teuchos::rcp(new Vector(A->getRowMap()));
+    A->getLocalDiagCopy(*I.diagonal);
     return;
   }
   auto Anc = Teuchos::rcp_const_cast<CrsMatrix>(A);
@@ -152,7 +155,7 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
   if (I.reproducible) {
     int its = 0;
     try {
-      its = solveReproducibleJacobiCG(*I.A, b, x, I.params.get<double>("Relative Tolerance"),
+      its = solveReproducibleJacobiCG(*I.A, *I.diagonal, b, x, I.params.get<double>("Relative Tolerance"),
                                       I.params.get<int>("Maximum Iterations"));
     } catch (const core::SolverError&) {
       std::ostringstream os;
