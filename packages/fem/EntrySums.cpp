@@ -24,6 +24,14 @@ struct Packed {
 
 bool needEntrySums(const Comm& comm) { return core::reproducibleArithmetic() && (comm.getSize() > 1 || kAtomicScatter); }
 
+std::vector<char> sharedRows(const Map& overlap, const Tpetra::Import<LO, GO, Node>& ownedToOverlap) {
+  const size_t nOwned = ownedToOverlap.getSourceMap()->getNodeNumElements();
+  std::vector<char> rows(overlap.getNodeNumElements(), 0);
+  for (size_t i = nOwned; i < rows.size(); ++i) rows[i] = 1;
+  for (const LO i : ownedToOverlap.getExportLIDs()) rows[i] = 1;
+  return rows;
+}
+
 EntrySums::EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<LO, GO, Node>& ownedToOverlap,
                      const std::vector<Contribution>& contributions) {
   const LO nOwned = static_cast<LO>(owned.getNodeNumElements());
@@ -41,7 +49,7 @@ EntrySums::EntrySums(const Map& owned, const Map& overlap, const Tpetra::Import<
     size_t j = 0;
     for (size_t i = 0; i < distributor.getNumReceives(); ++i)
       for (size_t k = 0; k < lengths[i]; ++k) owner[remote[j++]] = from[i];
-    SIGNORINI_ASSERT(j == remote.size(), "EntrySums: remote rows do not match the importer");
+    SIGNORINI_ASSERT(j == static_cast<size_t>(remote.size()), "EntrySums: remote rows do not match the importer");
   }
   // The owned rows' contributions (row: the owned local id, which is the overlap one), with those
   // received from the other ranks (row: the global id until they are bucketed below).
@@ -157,6 +165,17 @@ void EntrySums::writeInto(Vector& out, bool accumulate) const {
   SIGNORINI_ASSERT(h.extent(0) + 1 == rowStart_.size(), "EntrySums: rows do not match");
   for (size_t r = 0; r < h.extent(0); ++r) {
     const double s = (*this)(static_cast<LO>(r), 0);
+    h(r, 0) = accumulate ? h(r, 0) + s : s;
+  }
+}
+
+void EntrySums::writeInto(Vector& out, bool accumulate, const std::vector<char>& shared, const Vector& localSums) const {
+  auto h = out.getLocalViewHost(Tpetra::Access::ReadWrite);
+  auto l = localSums.getLocalViewHost(Tpetra::Access::ReadOnly);
+  SIGNORINI_ASSERT(h.extent(0) + 1 == rowStart_.size() && l.extent(0) >= h.extent(0) && shared.size() >= h.extent(0),
+                   "EntrySums: rows do not match");
+  for (size_t r = 0; r < h.extent(0); ++r) {
+    const double s = shared[r] ? (*this)(static_cast<LO>(r), 0) : l(r, 0);
     h(r, 0) = accumulate ? h(r, 0) + s : s;
   }
 }

@@ -29,6 +29,12 @@ struct Contribution {
 /// kernels already add every entry's contributions in the order of the cells.
 bool needEntrySums(const Comm& comm);
 
+/// Flags, per overlap row, the rows other ranks' cells contribute to as well: the owned rows that
+/// other ranks import (export ids of \p ownedToOverlap) and the rows this rank does not own. Only
+/// these need EntrySums; every other row gets contributions from this rank's cells alone, and a
+/// kernel that adds them in the order of the cells (serial) already sums them as one rank would.
+std::vector<char> sharedRows(const Map& overlap, const Tpetra::Import<LO, GO, Node>& ownedToOverlap);
+
 class EntrySums {
  public:
   /// Collective. \p contributions in the order of this rank's cells (within a cell, in an order
@@ -44,6 +50,10 @@ class EntrySums {
   void writeInto(CrsMatrix& A, const std::vector<char>& keepRows) const;
   /// out = sums (or out + sums when \p accumulate) for every owned row.
   void writeInto(Vector& out, bool accumulate) const;
+  /// The same for the owned rows flagged in \p shared (sharedRows); every other owned row takes
+  /// its value from \p localSums instead (this rank's contributions summed in cell order, on the
+  /// overlap map or the owned map: the owned rows come first).
+  void writeInto(Vector& out, bool accumulate, const std::vector<char>& shared, const Vector& localSums) const;
 
  private:
   std::vector<size_t> rowStart_;

@@ -69,9 +69,11 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
   std::vector<decltype(overlap[0].getLocalViewHost(Tpetra::Access::ReadWrite))> views;
   for (auto& o : overlap) views.push_back(o.getLocalViewHost(Tpetra::Access::ReadWrite));
   const auto& dir = newAssembler.dirichletFlags();
+  // Reproducible arithmetic on several ranks: the rows of shared nodes are summed by EntrySums;
+  // every other row adds this rank's cells in their order below, as one rank would.
   const bool reproducible = needEntrySums(*newMesh_.comm());
+  const auto shared = reproducible ? sharedRows(*newMesh_.overlapMap(), newMesh_.ownedToOverlap()) : std::vector<char>();
   std::vector<std::vector<Contribution>> contributions(reproducible ? nf : 0);
-  for (auto& c : contributions) c.reserve(4 * static_cast<size_t>(overlap_->numTargetCells()));
   std::vector<double> treeDeterminant(coarse_.numTrees());
   for (int t = 0; t < coarse_.numTrees(); ++t) treeDeterminant[t] = constantJacobianDeterminant(coarse_, t);
   for (int e = 0; e < overlap_->numTargetCells(); ++e) {
@@ -130,7 +132,7 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
         for (int k = 0; k < 2; ++k) {
           const LO d = D(e, c, k);
           if (d < 0 || dir[d]) continue;
-          if (reproducible)
+          if (reproducible && shared[d])
             contributions[f].push_back({d, 0, W(e, c, k) * be[f][c]});
           else
             views[f](d, 0) += W(e, c, k) * be[f][c];
@@ -141,7 +143,7 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
     for (int f = 0; f < nf; ++f) {
       auto b = Teuchos::rcp(new Vector(newMesh_.ownedMap()));
       EntrySums(*newMesh_.ownedMap(), *newMesh_.overlapMap(), newMesh_.ownedToOverlap(), contributions[f])
-          .writeInto(*b, false);
+          .writeInto(*b, false, shared, overlap[f]);
       loads.push_back(b);
     }
     return loads;

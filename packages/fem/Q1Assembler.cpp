@@ -71,12 +71,7 @@ std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> Q1Assembler::assembleMassAndStiffness(
 
 std::vector<char> Q1Assembler::exchangedRows() const {
   if (!needEntrySums(*mesh_.comm()) || kAtomicScatter) return {};
-  // Rows of nodes shared with another rank: owned ones that other ranks import, and the guests.
-  const size_t nOwned = mesh_.ownedMap()->getNodeNumElements();
-  std::vector<char> rows(mesh_.overlapMap()->getNodeNumElements(), 0);
-  for (size_t i = nOwned; i < rows.size(); ++i) rows[i] = 1;
-  for (const LO i : mesh_.ownedToOverlap().getExportLIDs()) rows[i] = 1;
-  return rows;
+  return sharedRows(*mesh_.overlapMap(), mesh_.ownedToOverlap());
 }
 
 std::vector<char> Q1Assembler::keptRows(const std::vector<char>& exchanged) const {
@@ -98,6 +93,15 @@ void Q1Assembler::registerCanonicalRowOrder(const CrsMatrix& A) const {
 
 EntrySums Q1Assembler::canonicalSums(const std::vector<Contribution>& contributions) const {
   return EntrySums(*mesh_.ownedMap(), *mesh_.overlapMap(), mesh_.ownedToOverlap(), contributions);
+}
+
+void Q1Assembler::writeSums(const std::vector<Contribution>& contributions, const std::vector<char>& shared,
+                            const Vector& kernelSums, Vector& out, bool accumulate) const {
+  const auto sums = canonicalSums(contributions);
+  if (shared.empty())
+    sums.writeInto(out, accumulate);
+  else
+    sums.writeInto(out, accumulate, shared, kernelSums);
 }
 
 void Q1Assembler::cellContributions(double cm, double ck, const std::vector<char>& lumpMassAt,
@@ -248,14 +252,16 @@ void Q1Assembler::assembleLoad(const core::Expression& f, double t, double scale
   }
   if (needEntrySums(*mesh_.comm())) {
     const auto loads = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cellLoads);
+    const auto shared = exchangedRows();  // empty: EntrySums give every row
     std::vector<Contribution> contributions;
     for (LO e = 0; e < mesh_.numLocalCells(); ++e)
       for (int a = 0; a < 4; ++a)
         for (int k = 0; k < 2; ++k) {
           const LO row = mesh_.cornerDofsHost(e, a, k);
-          if (row >= 0 && !dirichlet_[row]) contributions.push_back({row, 0, mesh_.cornerWeightsHost(e, a, k) * loads(e, a)});
+          if (row >= 0 && !dirichlet_[row] && (shared.empty() || shared[row]))
+            contributions.push_back({row, 0, mesh_.cornerWeightsHost(e, a, k) * loads(e, a)});
         }
-    canonicalSums(contributions).writeInto(out, accumulate);
+    writeSums(contributions, shared, overlap, out, accumulate);
     return;
   }
   addExported(overlap, *exporter_, out, accumulate);
@@ -311,12 +317,15 @@ void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned 
   if (needEntrySums(*mesh_.comm())) {
     const auto loads = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), edgeLoads);
     const auto nh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), nodes);
+    const auto shared = exchangedRows();  // empty: EntrySums give every row
     std::vector<Contribution> contributions;
     for (LO k = 0; k < ne; ++k)
       for (int g = 0; g < 2; ++g)
-        for (int end = 0; end < 2; ++end)
-          if (!dirichlet_[nh(k, end)]) contributions.push_back({nh(k, end), 0, loads(k, g, end)});
-    canonicalSums(contributions).writeInto(out, true);
+        for (int end = 0; end < 2; ++end) {
+          const LO row = nh(k, end);
+          if (!dirichlet_[row] && (shared.empty() || shared[row])) contributions.push_back({row, 0, loads(k, g, end)});
+        }
+    writeSums(contributions, shared, overlap, out, true);
     return;
   }
   addExported(overlap, *exporter_, out, true);
