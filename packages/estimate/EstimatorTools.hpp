@@ -4,6 +4,7 @@
 /// face geometry, the positive-part integral of s0, and the iteration over the interior faces of
 /// a forest with p4est's face ghost layer (hanging faces split into their fine edges).
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <vector>
 
@@ -297,28 +298,41 @@ void forEachInteriorFace(const mesh::Forest& forest, const std::vector<Payload>&
 class CellSums {
  public:
   explicit CellSums(size_t n) : sum_(n, 0.0), ordered_(core::reproducibleArithmetic()) {
-    if (ordered_) terms_.resize(n);
+    if (ordered_) terms_.resize(kSlots * n), count_.assign(n, 0);
   }
   void add(LO cell, double value) {
-    if (ordered_)
-      terms_[cell].push_back(value);
-    else
+    if (!ordered_) {
       sum_[cell] += value;
+    } else if (count_[cell] < kSlots) {
+      terms_[kSlots * cell + count_[cell]++] = value;
+    } else {
+      more_.emplace_back(cell, value);
+    }
   }
   /// The sums (call once).
   std::vector<double>& finish() {
-    if (ordered_)
-      for (size_t e = 0; e < terms_.size(); ++e) {
-        std::sort(terms_[e].begin(), terms_[e].end());
-        for (double v : terms_[e]) sum_[e] += v;
-      }
+    if (!ordered_) return sum_;
+    std::sort(more_.begin(), more_.end());  // by cell, then value
+    size_t next = 0;
+    std::vector<double> terms;
+    for (size_t e = 0; e < sum_.size(); ++e) {
+      terms.assign(terms_.begin() + kSlots * e, terms_.begin() + kSlots * e + count_[e]);
+      for (; next < more_.size() && more_[next].first == static_cast<LO>(e); ++next) terms.push_back(more_[next].second);
+      std::sort(terms.begin(), terms.end());
+      for (double v : terms) sum_[e] += v;
+    }
     return sum_;
   }
 
  private:
+  /// Terms kept in place per cell (a cell has four faces, each with at most two neighbours); any
+  /// further ones go to more_.
+  static constexpr size_t kSlots = 8;
   std::vector<double> sum_;
   bool ordered_;
-  std::vector<std::vector<double>> terms_;
+  std::vector<double> terms_;
+  std::vector<unsigned char> count_;
+  std::vector<std::pair<LO, double>> more_;
 };
 
 /// eta_*, s0 and the cell indicators eta_K^2 + (s0 share) from the per-cell parts (DESIGN 1.3),
