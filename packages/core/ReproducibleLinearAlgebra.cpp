@@ -107,18 +107,15 @@ void registerCanonicalRowOrder(const CrsMatrix& A, const std::vector<std::array<
 
 bool hasCanonicalRowOrder(const CrsMatrix& A) { return findRowOrder(A, A.getLocalMatrixHost().graph.entries) != nullptr; }
 
-void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
-  SIGNORINI_ASSERT(A.getGraph()->getExporter().is_null(), "applyCanonical: the row map must be the range map");
-  const auto columns = onColumnMap(A, X);
-  const auto matrix = A.getLocalMatrixHost();
-  auto xv = columns->getLocalViewHost(Tpetra::Access::ReadOnly);
-  auto yv = Y.getLocalViewHost(Tpetra::Access::OverwriteAll);
+namespace {
+
+/// One column of A X (\p x on A's column map, local) into \p y: each row summed left to right in
+/// the registered order \p canonical, or, without one, in exact pre-rounded parts.
+void applyColumn(const CrsMatrix::local_matrix_host_type& matrix, const RowOrder* canonical, const double* x, double* y) {
   const auto* rowMap = matrix.graph.row_map.data();
   const LO* cols = matrix.graph.entries.data();
   const double* values = matrix.values.data();
-  const double* x = xv.data();
-  double* y = yv.data();
-  if (const auto* canonical = findRowOrder(A, matrix.graph.entries)) {
+  if (canonical) {
     const size_t* order = canonical->order.data();
     auto product = [&](size_t k) { return values[order[k]] * x[cols[order[k]]]; };
     // Two rows side by side (two dependency chains), each summed in its own order.
@@ -176,10 +173,8 @@ void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
   }
 }
 
-namespace {
-
-/// The columns' rows of A X in the registered \p order, each summed left to right as applyCanonical
-/// sums it; NC columns per row are NC independent dependency chains.
+/// NC columns of A X in the registered \p order, each row summed left to right as applyColumn sums
+/// it; the NC columns of a row are NC independent dependency chains.
 template <int NC>
 void applyOrdered(const CrsMatrix::local_matrix_host_type& matrix, const size_t* order, const double* x, size_t xStride,
                   double* y, size_t yStride, const int* columns) {
@@ -202,25 +197,38 @@ void applyOrdered(const CrsMatrix::local_matrix_host_type& matrix, const size_t*
 
 }  // namespace
 
-void applyCanonicalColumns(const CrsMatrix& A, const MultiVector& X, MultiVector& Y, const std::vector<int>& columns) {
-  SIGNORINI_ASSERT(!columns.empty() && columns.size() <= 3, "applyCanonicalColumns: 1 to 3 columns");
-  SIGNORINI_ASSERT(X.getNumVectors() == Y.getNumVectors(), "applyCanonicalColumns: X and Y differ in columns");
+void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y) {
+  SIGNORINI_ASSERT(A.getGraph()->getExporter().is_null(), "applyCanonical: the row map must be the range map");
+  const auto columns = onColumnMap(A, X);
   const auto matrix = A.getLocalMatrixHost();
-  const auto* canonical = findRowOrder(A, matrix.graph.entries);
-  if (!canonical || columns.size() == 1) {
-    for (const int c : columns) applyCanonical(A, *X.getVector(c), *Y.getVectorNonConst(c));
-    return;
-  }
+  auto xv = columns->getLocalViewHost(Tpetra::Access::ReadOnly);
+  auto yv = Y.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  applyColumn(matrix, findRowOrder(A, matrix.graph.entries), xv.data(), yv.data());
+}
+
+void applyCanonicalColumns(const CrsMatrix& A, const MultiVector& X, MultiVector& Y, const std::vector<int>& columns) {
   SIGNORINI_ASSERT(A.getGraph()->getExporter().is_null(), "applyCanonicalColumns: the row map must be the range map");
+  SIGNORINI_ASSERT(!columns.empty() && columns.size() <= 3, "applyCanonicalColumns: 1 to 3 columns");
+  SIGNORINI_ASSERT(&X != &Y && X.getNumVectors() == Y.getNumVectors() && X.isConstantStride() && Y.isConstantStride(),
+                   "applyCanonicalColumns: X and Y distinct, with the same columns at a constant stride");
+  for (const int c : columns)
+    SIGNORINI_ASSERT(c >= 0 && static_cast<size_t>(c) < X.getNumVectors() && std::count(columns.begin(), columns.end(), c) == 1,
+                     "applyCanonicalColumns: distinct columns of X");
+  // One import of X on every rank, whichever path the rank takes below (an import is collective
+  // between neighbours, and whether a rank finds a registered order is its own lookup).
   const auto onColumns = onColumnMap(A, X);
+  const auto matrix = A.getLocalMatrixHost();
+  if (matrix.numRows() == 0) return;
+  const auto* canonical = findRowOrder(A, matrix.graph.entries);
   auto xv = onColumns->getLocalViewHost(Tpetra::Access::ReadOnly);
   auto yv = Y.getLocalViewHost(Tpetra::Access::ReadWrite);
-  SIGNORINI_ASSERT(X.getNumVectors() == 1 || (xv.stride(1) > 0 && yv.stride(1) > 0), "applyCanonicalColumns: strided views");
-  const size_t xStride = xv.stride(1), yStride = yv.stride(1);
-  if (columns.size() == 2)
+  const size_t xStride = onColumns->getStride(), yStride = Y.getStride();
+  if (canonical && columns.size() == 2)
     applyOrdered<2>(matrix, canonical->order.data(), xv.data(), xStride, yv.data(), yStride, columns.data());
-  else
+  else if (canonical && columns.size() == 3)
     applyOrdered<3>(matrix, canonical->order.data(), xv.data(), xStride, yv.data(), yStride, columns.data());
+  else
+    for (const int c : columns) applyColumn(matrix, canonical, xv.data() + c * xStride, yv.data() + c * yStride);
 }
 
 void apply(const CrsMatrix& A, const Vector& x, Vector& y) {

@@ -17,10 +17,11 @@ namespace signorini::core {
 /// a row's products is then independent of their order, at about 3 times the cost).
 void applyCanonical(const CrsMatrix& A, const Vector& X, Vector& Y);
 
-/// Y(:, c) = A X(:, c) for the columns c in \p columns (1 to 3 of them; X and Y have the same number
-/// of columns), each with exactly the bits applyCanonical gives that column alone. With a registered
-/// order the columns share one sweep over the matrix (each entry and its place in the order read
-/// once); otherwise they are applied one after the other.
+/// Y(:, c) = A X(:, c) for the columns c in \p columns (1 to 3 distinct ones; X and Y distinct, with
+/// the same number of columns at a constant stride; Y's other columns are left alone), each with
+/// exactly the bits applyCanonical gives that column alone. X is imported once (collective). With a
+/// registered order the columns share one sweep over the matrix (each entry and its place in the
+/// order read once); otherwise they are applied one after the other.
 void applyCanonicalColumns(const CrsMatrix& A, const MultiVector& X, MultiVector& Y, const std::vector<int>& columns);
 
 /// Gives the rows of \p A, and of every matrix built on the same local graph arrays and column map

@@ -26,6 +26,7 @@ bool needEntrySums(const Comm& comm) { return core::reproducibleArithmetic() && 
 
 std::vector<char> sharedRows(const Map& overlap, const Tpetra::Import<LO, GO, Node>& ownedToOverlap) {
   const size_t nOwned = ownedToOverlap.getSourceMap()->getNodeNumElements();
+  SIGNORINI_ASSERT(ownedToOverlap.getNumSameIDs() == nOwned, "sharedRows: the owned rows must come first in the overlap map");
   std::vector<char> rows(overlap.getNodeNumElements(), 0);
   for (size_t i = nOwned; i < rows.size(); ++i) rows[i] = 1;
   for (const LO i : ownedToOverlap.getExportLIDs()) rows[i] = 1;
@@ -160,22 +161,16 @@ void EntrySums::writeInto(CrsMatrix& A, const std::vector<char>& keepRows) const
   }
 }
 
-void EntrySums::writeInto(Vector& out, bool accumulate) const {
+void EntrySums::writeInto(Vector& out, bool accumulate, const std::vector<char>& shared, const Vector* localSums) const {
   auto h = out.getLocalViewHost(Tpetra::Access::ReadWrite);
   SIGNORINI_ASSERT(h.extent(0) + 1 == rowStart_.size(), "EntrySums: rows do not match");
+  const bool all = shared.empty();
+  SIGNORINI_ASSERT(all || (localSums && localSums->getLocalLength() >= h.extent(0) && shared.size() >= h.extent(0)),
+                   "EntrySums: the local sums do not cover the owned rows");
+  decltype(localSums->getLocalViewHost(Tpetra::Access::ReadOnly)) local;
+  if (!all) local = localSums->getLocalViewHost(Tpetra::Access::ReadOnly);
   for (size_t r = 0; r < h.extent(0); ++r) {
-    const double s = (*this)(static_cast<LO>(r), 0);
-    h(r, 0) = accumulate ? h(r, 0) + s : s;
-  }
-}
-
-void EntrySums::writeInto(Vector& out, bool accumulate, const std::vector<char>& shared, const Vector& localSums) const {
-  auto h = out.getLocalViewHost(Tpetra::Access::ReadWrite);
-  auto l = localSums.getLocalViewHost(Tpetra::Access::ReadOnly);
-  SIGNORINI_ASSERT(h.extent(0) + 1 == rowStart_.size() && l.extent(0) >= h.extent(0) && shared.size() >= h.extent(0),
-                   "EntrySums: rows do not match");
-  for (size_t r = 0; r < h.extent(0); ++r) {
-    const double s = shared[r] ? (*this)(static_cast<LO>(r), 0) : l(r, 0);
+    const double s = all || shared[r] ? (*this)(static_cast<LO>(r), 0) : local(r, 0);
     h(r, 0) = accumulate ? h(r, 0) + s : s;
   }
 }

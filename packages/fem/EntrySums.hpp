@@ -48,12 +48,12 @@ class EntrySums {
   /// Overwrites the values of \p A (rows: the owned map) with the sums, except in the rows flagged
   /// in \p keepRows (owned local ids; an empty vector keeps none).
   void writeInto(CrsMatrix& A, const std::vector<char>& keepRows) const;
-  /// out = sums (or out + sums when \p accumulate) for every owned row.
-  void writeInto(Vector& out, bool accumulate) const;
-  /// The same for the owned rows flagged in \p shared (sharedRows); every other owned row takes
-  /// its value from \p localSums instead (this rank's contributions summed in cell order, on the
+  /// out = sums (or out + sums when \p accumulate) for the owned rows: for all of them when
+  /// \p shared is empty, else for those flagged in \p shared (sharedRows), every other row taking
+  /// its sum from \p localSums instead (this rank's contributions summed in cell order, on the
   /// overlap map or the owned map: the owned rows come first).
-  void writeInto(Vector& out, bool accumulate, const std::vector<char>& shared, const Vector& localSums) const;
+  void writeInto(Vector& out, bool accumulate, const std::vector<char>& shared = {},
+                 const Vector* localSums = nullptr) const;
 
  private:
   std::vector<size_t> rowStart_;

@@ -143,7 +143,7 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
     for (int f = 0; f < nf; ++f) {
       auto b = Teuchos::rcp(new Vector(newMesh_.ownedMap()));
       EntrySums(*newMesh_.ownedMap(), *newMesh_.overlapMap(), newMesh_.ownedToOverlap(), contributions[f])
-          .writeInto(*b, false, shared, overlap[f]);
+          .writeInto(*b, false, shared, &overlap[f]);
       loads.push_back(b);
     }
     return loads;

@@ -95,14 +95,6 @@ EntrySums Q1Assembler::canonicalSums(const std::vector<Contribution>& contributi
   return EntrySums(*mesh_.ownedMap(), *mesh_.overlapMap(), mesh_.ownedToOverlap(), contributions);
 }
 
-void Q1Assembler::writeSums(const std::vector<Contribution>& contributions, const std::vector<char>& shared,
-                            const Vector& kernelSums, Vector& out, bool accumulate) const {
-  const auto sums = canonicalSums(contributions);
-  if (shared.empty())
-    sums.writeInto(out, accumulate);
-  else
-    sums.writeInto(out, accumulate, shared, kernelSums);
-}
 
 void Q1Assembler::cellContributions(double cm, double ck, const std::vector<char>& lumpMassAt,
                                     std::vector<Contribution>* mass, std::vector<Contribution>* stiffness,
@@ -261,7 +253,7 @@ void Q1Assembler::assembleLoad(const core::Expression& f, double t, double scale
           if (row >= 0 && !dirichlet_[row] && (shared.empty() || shared[row]))
             contributions.push_back({row, 0, mesh_.cornerWeightsHost(e, a, k) * loads(e, a)});
         }
-    writeSums(contributions, shared, overlap, out, accumulate);
+    canonicalSums(contributions).writeInto(out, accumulate, shared, &overlap);
     return;
   }
   addExported(overlap, *exporter_, out, accumulate);
@@ -325,7 +317,7 @@ void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned 
           const LO row = nh(k, end);
           if (!dirichlet_[row] && (shared.empty() || shared[row])) contributions.push_back({row, 0, loads(k, g, end)});
         }
-    writeSums(contributions, shared, overlap, out, true);
+    canonicalSums(contributions).writeInto(out, true, shared, &overlap);
     return;
   }
   addExported(overlap, *exporter_, out, true);

@@ -103,11 +103,6 @@ class Q1Assembler : public Assembler {
   /// The owned rows EntrySums must leave alone: Dirichlet rows, and those not in \p exchanged
   /// (empty: none of them).
   std::vector<char> keptRows(const std::vector<char>& exchanged) const;
-  /// out (owned rows; out + them when \p accumulate) = the vector sums: EntrySums of
-  /// \p contributions in the \p shared rows (exchangedRows(); every row when it is empty), the
-  /// kernel's own cell-order sums (\p kernelSums, on the overlap map) in the others.
-  void writeSums(const std::vector<Contribution>& contributions, const std::vector<char>& shared, const Vector& kernelSums,
-                 Vector& out, bool accumulate) const;
   EntrySums canonicalSums(const std::vector<Contribution>& contributions) const;
   /// Reproducible arithmetic: rows of matrices on the pattern summed in the order of the nodes'
   /// canonical keys (core::registerCanonicalRowOrder; one order serves M, K and the step matrix).

@@ -246,119 +246,59 @@ std::vector<int> solveGroup(const CrsMatrix& A, const std::vector<const Vector*>
 
 }  // namespace
 
-int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativeTolerance,
-                              int maxIterations) {
-  Vector diagonal(A.getRowMap());
-  A.getLocalDiagCopy(diagonal);
-  return solveReproducibleJacobiCG(A, diagonal, b, x, relativeTolerance, maxIterations);
-}
+namespace {
 
-int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& diagonal, const Vector& b, Vector& x,
-                              double relativeTolerance, int maxIterations) {
+/// Jacobi CG with partition-independent applies and sums for NF fields (right-hand sides) of one
+/// matrix: each field takes the operations of its own solve (NF = 1), in the same order, so it gets
+/// the same iterates, bits and iteration count; the fields share the sweeps over the matrix
+/// (core::applyCanonicalColumns) and the diagonal. Each x_f is updated in place: it holds the last
+/// iterate if the solve throws.
+template <int NF>
+std::vector<int> solveReproducibleGroup(const CrsMatrix& A, const Vector& diagonal, const std::vector<const Vector*>& b,
+                                        const std::vector<Vector*>& x, double relativeTolerance, int maxIterations) {
+  SIGNORINI_ASSERT(b.size() == NF && x.size() == NF, "solveReproducibleGroup: NF right-hand sides and guesses");
   const Comm& comm = *A.getRangeMap()->getComm();
   const size_t n = A.getRangeMap()->getNodeNumElements();
   const size_t global = A.getRangeMap()->getGlobalNumElements();  // the same on any partition
-  Vector r(A.getRangeMap()), p(A.getRangeMap()), q(A.getRangeMap());
-  core::applyCanonical(A, x, q);
+  SIGNORINI_ASSERT(diagonal.getLocalLength() == n, "solveReproducibleJacobiCG: the diagonal is not on A's rows");
+  MultiVector R(A.getRangeMap(), NF, false), P(A.getRangeMap(), NF, false), Q(A.getRangeMap(), NF, false);
+  std::vector<int> all(NF), running, iterations(NF, 0);
+  for (int f = 0; f < NF; ++f) all[f] = f, P.getVectorNonConst(f)->assign(*x[f]);
+  core::applyCanonicalColumns(A, P, Q, all);  // A x
   auto dv = diagonal.getLocalViewHost(Tpetra::Access::ReadOnly);
-  auto bv = b.getLocalViewHost(Tpetra::Access::ReadOnly);
-  auto xv = x.getLocalViewHost(Tpetra::Access::ReadWrite);
-  auto rv = r.getLocalViewHost(Tpetra::Access::OverwriteAll);
-  auto pv = p.getLocalViewHost(Tpetra::Access::OverwriteAll);
-  {
-    auto qv = q.getLocalViewHost(Tpetra::Access::ReadOnly);
-    for (size_t i = 0; i < n; ++i) rv(i, 0) = bv(i, 0) - qv(i, 0), pv(i, 0) = rv(i, 0) / dv(i, 0);
-  }
-  double start[3];  // ||b||^2, r.z, ||r||^2
-  core::reproducibleSums(
-      comm, 3, n,
-      [&](size_t i, double* t) {
-        t[0] = bv(i, 0) * bv(i, 0);
-        t[1] = rv(i, 0) * pv(i, 0);
-        t[2] = rv(i, 0) * rv(i, 0);
-      },
-      start, global);
-  if (start[0] == 0.0) {
-    x.putScalar(0.0);
-    return 0;
-  }
-  const double target = relativeTolerance * std::sqrt(start[0]);
-  if (std::sqrt(start[2]) <= target) return 0;
-  double rz = start[1];
-  for (int it = 1; it <= maxIterations; ++it) {
-    core::applyCanonical(A, p, q);
-    auto qv = q.getLocalViewHost(Tpetra::Access::ReadOnly);
-    double pq;
-    core::reproducibleSums(comm, 1, n, [&](size_t i, double* t) { t[0] = pv(i, 0) * qv(i, 0); }, &pq, global);
-    const double alpha = rz / pq;
-    for (size_t i = 0; i < n; ++i) xv(i, 0) += alpha * pv(i, 0), rv(i, 0) -= alpha * qv(i, 0);
-    double sums[2];  // r.r, r.z
-    core::reproducibleSums(
-        comm, 2, n,
-        [&](size_t i, double* t) {
-          t[0] = rv(i, 0) * rv(i, 0);
-          t[1] = rv(i, 0) * (rv(i, 0) / dv(i, 0));
-        },
-        sums, global);
-    if (std::sqrt(sums[0]) <= target) return it;
-    const double beta = sums[1] / rz;
-    rz = sums[1];
-    for (size_t i = 0; i < n; ++i) pv(i, 0) = rv(i, 0) / dv(i, 0) + beta * pv(i, 0);
-  }
-  throw core::SolverError("Jacobi CG: no convergence to " + std::to_string(relativeTolerance) + " in " +
-                          std::to_string(maxIterations) + " iterations");
-}
-
-namespace {
-
-/// solveReproducibleJacobiCG for NF fields at once: every field takes the operations of its own
-/// solve in the same order, so it gets their bits and iteration count; the fields share the
-/// matrix sweeps (core::applyCanonicalColumns) and the diagonal.
-template <int NF>
-std::vector<int> solveReproducibleGroup(const CrsMatrix& A, const std::vector<const Vector*>& b,
-                                        const std::vector<Vector*>& x, double relativeTolerance, int maxIterations) {
-  const Comm& comm = *A.getRangeMap()->getComm();
-  const size_t n = A.getRangeMap()->getNodeNumElements();
-  const size_t global = A.getRangeMap()->getGlobalNumElements();
-  Vector diagonal(A.getRowMap());
-  A.getLocalDiagCopy(diagonal);
-  MultiVector B(A.getRangeMap(), NF, false), X(A.getRangeMap(), NF, false), R(A.getRangeMap(), NF, false),
-      P(A.getRangeMap(), NF, false), Q(A.getRangeMap(), NF, false);
-  for (int f = 0; f < NF; ++f) B.getVectorNonConst(f)->assign(*b[f]), X.getVectorNonConst(f)->assign(*x[f]);
-  std::vector<int> columns(NF), iterations(NF, 0);
-  for (int f = 0; f < NF; ++f) columns[f] = f;
-  core::applyCanonicalColumns(A, X, Q, columns);
-  auto dv = diagonal.getLocalViewHost(Tpetra::Access::ReadOnly);
-  auto bv = B.getLocalViewHost(Tpetra::Access::ReadOnly);
-  auto xv = X.getLocalViewHost(Tpetra::Access::ReadWrite);
   auto rv = R.getLocalViewHost(Tpetra::Access::OverwriteAll);
-  auto pv = P.getLocalViewHost(Tpetra::Access::OverwriteAll);
+  auto pv = P.getLocalViewHost(Tpetra::Access::ReadWrite);
+  using HostView = decltype(x[0]->getLocalViewHost(Tpetra::Access::ReadWrite));
+  using ConstHostView = decltype(b[0]->getLocalViewHost(Tpetra::Access::ReadOnly));
+  std::vector<ConstHostView> bv;
+  std::vector<HostView> xv;
+  for (int f = 0; f < NF; ++f)
+    bv.push_back(b[f]->getLocalViewHost(Tpetra::Access::ReadOnly)), xv.push_back(x[f]->getLocalViewHost(Tpetra::Access::ReadWrite));
   {
     auto qv = Q.getLocalViewHost(Tpetra::Access::ReadOnly);
     for (int f = 0; f < NF; ++f)
-      for (size_t i = 0; i < n; ++i) rv(i, f) = bv(i, f) - qv(i, f), pv(i, f) = rv(i, f) / dv(i, 0);
+      for (size_t i = 0; i < n; ++i) rv(i, f) = bv[f](i, 0) - qv(i, f), pv(i, f) = rv(i, f) / dv(i, 0);
   }
-  // Each field's sums are summed as in its own solve (the bits of a sum do not depend on the
-  // others summed with it, but one field per call keeps the accumulators in registers).
-  double start[NF][3];  // ||b||^2, r.z, ||r||^2
-  for (int f = 0; f < NF; ++f)
+  // Each field's sums are summed by themselves (their bits would not depend on the other fields',
+  // but one field per call keeps the accumulators in registers).
+  double target[NF], rz[NF];
+  for (int f = 0; f < NF; ++f) {
+    double start[3];  // ||b||^2, r.z, ||r||^2
     core::reproducibleSums(
         comm, 3, n,
         [&](size_t i, double* t) {
-          t[0] = bv(i, f) * bv(i, f);
+          t[0] = bv[f](i, 0) * bv[f](i, 0);
           t[1] = rv(i, f) * pv(i, f);
           t[2] = rv(i, f) * rv(i, f);
         },
-        start[f], global);
-  double target[NF], rz[NF];
-  std::vector<int> running;
-  for (int f = 0; f < NF; ++f) {
-    target[f] = relativeTolerance * std::sqrt(start[f][0]);
-    rz[f] = start[f][1];
-    if (start[f][0] == 0.0)
-      x[f]->putScalar(0.0);
-    else if (std::sqrt(start[f][2]) > target[f])
+        start, global);
+    target[f] = relativeTolerance * std::sqrt(start[0]);
+    rz[f] = start[1];
+    if (start[0] == 0.0) {  // x = 0
+      for (size_t i = 0; i < n; ++i) xv[f](i, 0) = 0.0;
+    } else if (!(std::sqrt(start[2]) <= target[f])) {  // a nan iterates, and fails
       running.push_back(f);
+    }
   }
   for (int it = 1; it <= maxIterations && !running.empty(); ++it) {
     core::applyCanonicalColumns(A, P, Q, running);
@@ -368,7 +308,7 @@ std::vector<int> solveReproducibleGroup(const CrsMatrix& A, const std::vector<co
       double pq;
       core::reproducibleSums(comm, 1, n, [&](size_t i, double* t) { t[0] = pv(i, f) * qv(i, f); }, &pq, global);
       const double alpha = rz[f] / pq;
-      for (size_t i = 0; i < n; ++i) xv(i, f) += alpha * pv(i, f), rv(i, f) -= alpha * qv(i, f);
+      for (size_t i = 0; i < n; ++i) xv[f](i, 0) += alpha * pv(i, f), rv(i, f) -= alpha * qv(i, f);
       double sums[2];  // r.r, r.z
       core::reproducibleSums(
           comm, 2, n,
@@ -391,12 +331,22 @@ std::vector<int> solveReproducibleGroup(const CrsMatrix& A, const std::vector<co
   if (!running.empty())
     throw core::SolverError("Jacobi CG: no convergence to " + std::to_string(relativeTolerance) + " in " +
                             std::to_string(maxIterations) + " iterations");
-  for (int f = 0; f < NF; ++f)
-    if (start[f][0] != 0.0) x[f]->assign(*X.getVector(f));
   return iterations;
 }
 
 }  // namespace
+
+int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& b, Vector& x, double relativeTolerance,
+                              int maxIterations) {
+  Vector diagonal(A.getRowMap());
+  A.getLocalDiagCopy(diagonal);
+  return solveReproducibleJacobiCG(A, diagonal, b, x, relativeTolerance, maxIterations);
+}
+
+int solveReproducibleJacobiCG(const CrsMatrix& A, const Vector& diagonal, const Vector& b, Vector& x,
+                              double relativeTolerance, int maxIterations) {
+  return solveReproducibleGroup<1>(A, diagonal, {&b}, {&x}, relativeTolerance, maxIterations)[0];
+}
 
 std::vector<int> solveJacobiCG(const CrsMatrix& A, const std::vector<const Vector*>& b, const std::vector<Vector*>& x,
                                double relativeTolerance, int maxIterations) {
@@ -408,13 +358,13 @@ std::vector<int> solveJacobiCG(const CrsMatrix& A, const std::vector<const Vecto
     const std::vector<const Vector*> groupB(b.begin() + first, b.begin() + first + count);
     const std::vector<Vector*> groupX(x.begin() + first, x.begin() + first + count);
     std::vector<int> group;
-    if (reproducible && count == 1)
-      group = {solveReproducibleJacobiCG(A, *groupB[0], *groupX[0], relativeTolerance, maxIterations)};
-    else if (reproducible && count == 2)
-      group = solveReproducibleGroup<2>(A, groupB, groupX, relativeTolerance, maxIterations);
-    else if (reproducible)
-      group = solveReproducibleGroup<3>(A, groupB, groupX, relativeTolerance, maxIterations);
-    else if (count == 1)
+    if (reproducible) {
+      Vector diagonal(A.getRowMap());
+      A.getLocalDiagCopy(diagonal);
+      if (count == 1) group = solveReproducibleGroup<1>(A, diagonal, groupB, groupX, relativeTolerance, maxIterations);
+      if (count == 2) group = solveReproducibleGroup<2>(A, diagonal, groupB, groupX, relativeTolerance, maxIterations);
+      if (count == 3) group = solveReproducibleGroup<3>(A, diagonal, groupB, groupX, relativeTolerance, maxIterations);
+    } else if (count == 1)
       group = solveGroup<1>(A, groupB, groupX, relativeTolerance, maxIterations);
     else if (count == 2)
       group = solveGroup<2>(A, groupB, groupX, relativeTolerance, maxIterations);

@@ -25,6 +25,8 @@ class LinearSolver {
   void setNearNullspace(RCP<MultiVector> modes, int equationsPerNode);
   /// Sets A and (re)builds the preconditioner. \p courant = c k / h_min chooses the
   /// preconditioner when "Preconditioner" is "auto" (Jacobi below the threshold, MueLu above).
+  /// The preconditioner (under reproducible arithmetic: A's diagonal) is taken from A's values
+  /// now: call setOperator again after changing them.
   void setOperator(RCP<const CrsMatrix> A, double courant);
   /// Solves A x = b to the relative tolerance ||b - A x|| <= tol ||b||, starting from x.
   /// Returns the number of iterations; throws core::SolverError if not converged.

@@ -670,16 +670,18 @@ TEST(ResidualEstimatorParameters, ValidListIsDocumentedAndChecked) {
 }  // namespace
 
 // The per-cell sums of edge terms under reproducible arithmetic: the faces arrive in another order
-// on every partition, the sums must not change a bit; a cell with more terms than kept in place
-// (11 here, as no mesh gives) included. The control: ordinary sums of the same terms in the two
-// orders differ.
+// on every partition, the sums must not change a bit; two cells with more terms than kept in place
+// (11 and 10 here, as no mesh gives), their terms interleaved, and a cell without terms included.
+// The control: ordinary sums of the same terms in the two orders differ.
 TEST(CellSums, ReproducibleSumsDoNotDependOnTheOrderOfTheTerms) {
+  constexpr LO kCells = 5;
   const std::vector<std::pair<LO, double>> terms = {
-      {0, 1e16}, {1, 0.5}, {0, 1.0}, {2, 3.0}, {0, -1e16}, {1, 1e-20}, {0, 1.0}, {1, 0.25},
-      {0, 2.0}, {0, 1e-3}, {0, 7.0}, {0, 1e15}, {0, 0.0}, {0, 3.5}, {0, -1e15}, {2, 1e-8}};
+      {0, 1e16}, {1, 0.5}, {0, 1.0}, {2, 3.0}, {0, -1e16}, {4, 1e16}, {1, 1e-20}, {0, 1.0}, {4, 1.0},
+      {1, 0.25}, {0, 2.0}, {4, -1e16}, {0, 1e-3}, {4, 1.0}, {0, 7.0}, {4, 2.0}, {0, 1e15}, {4, 5.0},
+      {0, 0.0}, {4, 1e15}, {0, 3.5}, {4, -1e15}, {0, -1e15}, {4, 0.125}, {2, 1e-8}, {4, 9.0}};
   auto sums = [&](bool reproducible, bool reversed) {
     const test::ReproducibleScope scope(reproducible);
-    estimate::CellSums cells(3);
+    estimate::CellSums cells(kCells);
     for (size_t i = 0; i < terms.size(); ++i) {
       const auto& [cell, value] = terms[reversed ? terms.size() - 1 - i : i];
       cells.add(cell, value);
@@ -687,7 +689,8 @@ TEST(CellSums, ReproducibleSumsDoNotDependOnTheOrderOfTheTerms) {
     return cells.finish();
   };
   const auto forward = sums(true, false), backward = sums(true, true);
-  for (LO e = 0; e < 3; ++e) {
+  EXPECT_EQ(forward[3], 0.0);
+  for (LO e = 0; e < kCells; ++e) {
     std::vector<double> sorted;
     for (const auto& [cell, value] : terms)
       if (cell == e) sorted.push_back(value);
@@ -699,4 +702,5 @@ TEST(CellSums, ReproducibleSumsDoNotDependOnTheOrderOfTheTerms) {
   }
   const auto plainForward = sums(false, false), plainBackward = sums(false, true);
   EXPECT_NE(plainForward[0], plainBackward[0]);  // the control
+  EXPECT_NE(plainForward[4], plainBackward[4]);
 }
