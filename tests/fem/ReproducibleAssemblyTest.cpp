@@ -2,7 +2,8 @@
 // stiffness matrices, a combined operator with lumped mass on a boundary, and body and boundary
 // loads, assembled on a graded mesh with hanging nodes distributed over all ranks, have exactly
 // the bits of the same assembly on one rank (the same forest, built on MPI_COMM_SELF on every
-// rank). Entries are matched through the nodes' coordinates (dyadic, so exact).
+// rank). Entries are matched through the nodes' coordinates (dyadic, so exact). Likewise the L2
+// projection's right-hand sides between two graded meshes.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,6 +18,7 @@
 
 #include "../TestMesh.hpp"
 #include "Expression.hpp"
+#include "MeshTransfer.hpp"
 #include "ProblemData.hpp"
 #include "Q1Assembler.hpp"
 #include "ReproducibleLinearAlgebra.hpp"
@@ -226,5 +228,48 @@ TEST(ReproducibleAssembly, RegisteredRowOrderAppliesWithTheBitsOfOneRank) {
   // The control: the same matrices summed in their local column order differ in some rows.
   const int ordinary = sumOverRanks(ordinaryDiffer);
   if (world->getRank() == 0) std::cout << "ordinary apply: " << ordinary << " rows differ from one rank's\n";
+  if (world->getSize() > 1) EXPECT_GT(ordinary, 0);
+}
+
+namespace {
+
+/// The L2 projection's right-hand sides (fem::MeshTransfer::projectionLoads) of a field moved from
+/// one graded mesh to another (refined elsewhere; Dirichlet rows on the left), by node point.
+std::map<Point, double> projectionLoads(const RCP<const Comm>& comm) {
+  const Discretisation to(comm);
+  test::TestMesh from(0.0, 1.5, 0.0, 1.0, 3, 2, 2, comm);
+  test::refineAt(*from.forest, 0.7, 0.3, 3);
+  test::refineAt(*from.forest, 0.2, 0.9, 2);
+  from.forest->balance();
+  from.forest->partition();
+  const auto& oldMesh = from.build();
+  Vector field(oldMesh.ownedMap());
+  {
+    auto h = field.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (size_t i = 0; i < h.extent(0); ++i) {
+      const auto& p = oldMesh.nodeCoords()[i];
+      h(i, 0) = 1e3 * std::sin(7 * p[0] + 3 * p[1]) + 1.0 / (1.0 + p[0] * p[1]) - 0.5;
+    }
+  }
+  fem::MeshTransfer transfer(*from.forest, oldMesh, {&field}, *to.tm.forest, *to.mesh);
+  return entries(to, *transfer.projectionLoads(*to.assembler)[0]);
+}
+
+}  // namespace
+
+// The projection's right-hand sides on 1-3 ranks equal one rank's bit for bit under reproducible
+// arithmetic (the rows of shared nodes by EntrySums, the others in cell order), and differ in
+// ordinary arithmetic (the control).
+TEST(ReproducibleAssembly, ProjectionLoadsHaveTheBitsOfOneRank) {
+  const auto world = Tpetra::getDefaultComm();
+  const RCP<const Comm> self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+  {
+    const test::ReproducibleScope scope(true);
+    const auto distributed = projectionLoads(world), serial = projectionLoads(self);
+    EXPECT_GT(sumOverRanks(static_cast<int>(distributed.size())), 100);
+    EXPECT_EQ(sumOverRanks(differing(distributed, serial)), 0);
+  }
+  const int ordinary = sumOverRanks(differing(projectionLoads(world), projectionLoads(self)));
+  if (world->getRank() == 0) std::cout << "ordinary projection loads: " << ordinary << " rows differ from one rank's\n";
   if (world->getSize() > 1) EXPECT_GT(ordinary, 0);
 }
