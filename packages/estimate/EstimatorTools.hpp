@@ -220,23 +220,38 @@ struct FaceIteration {
 }  // namespace detail
 
 /// How forEachInteriorFace finds the faces: p4est_iterate over a face ghost layer always, or
-/// (automatic) on one rank and one tree a walk over the +x and +y faces of every cell with a
-/// table of the cells' lower-left corners (the same pairs without p4est's general iteration).
+/// (automatic) on a forest of one tree a walk over the +x and +y faces of every local and ghost
+/// cell with a table of the cells' lower-left corners (the same pairs without p4est's general
+/// iteration).
 enum class FaceWalk { automatic, p4est };
 
 namespace detail {
-/// The faces of a 2:1 balanced forest of one tree on one rank: each interior face is the +x or
-/// +y face of the cell on its lower side, whose neighbour there has the same size, is one of
-/// two finer cells or is one level coarser.
+/// The faces of a 2:1 balanced forest of one tree that touch a local cell: each interior face is
+/// the +x or +y face of the cell on its lower side, whose neighbour there has the same size, is one
+/// of two finer cells or is one level coarser. \p ghostQuadrants (the face ghost layer, one tree;
+/// empty on one rank) and their \p ghosts' payloads join the local cells; a pair is passed on when
+/// one of its cells is local. A local cell's neighbours are all local or ghosts; a ghost's missing
+/// neighbours are cells of other ranks, which touch no local cell across that face.
 template <class Payload, class OnPair>
-void walkOneTreeOneRank(p4est_t* p4est, const std::vector<Payload>& local, OnPair& onPair) {
+void walkOneTree(p4est_t* p4est, const std::vector<Payload>& local, const sc_array_t* ghostQuadrants,
+                 const std::vector<Payload>& ghosts, OnPair& onPair) {
   p4est_tree_t* tree = p4est_tree_array_index(p4est->trees, 0);
   const LO n = static_cast<LO>(tree->quadrants.elem_count);
-  auto quadrant = [&](LO e) { return p4est_quadrant_array_index(&tree->quadrants, static_cast<size_t>(e)); };
-  mesh::CoordinateTable cells(static_cast<size_t>(n));
-  for (LO e = 0; e < n; ++e) cells.insert(quadrant(e)->x, quadrant(e)->y, e);
-  auto side = [&](LO e, int face) { return FaceSide<Payload>{&local[e], e, face}; };
-  for (LO e = 0; e < n; ++e) {
+  const LO all = n + static_cast<LO>(ghosts.size());
+  auto quadrant = [&](LO e) {
+    return e < n ? p4est_quadrant_array_index(&tree->quadrants, static_cast<size_t>(e))
+                 : p4est_quadrant_array_index(const_cast<sc_array_t*>(ghostQuadrants), static_cast<size_t>(e - n));
+  };
+  mesh::CoordinateTable cells(static_cast<size_t>(all));
+  for (LO e = 0; e < all; ++e) cells.insert(quadrant(e)->x, quadrant(e)->y, e);
+  auto side = [&](LO e, int face) {
+    return e < n ? FaceSide<Payload>{&local[e], e, face} : FaceSide<Payload>{&ghosts[e - n], -1, face};
+  };
+  auto pair = [&](LO a, int faceA, LO b, int faceB) {
+    if (a < n || b < n) onPair(side(a, faceA), side(b, faceB));
+  };
+  for (LO e = 0; e < all; ++e) {
+    const bool isLocal = e < n;
     const auto* q = quadrant(e);
     const p4est_qcoord_t len = P4EST_QUADRANT_LEN(q->level);
     for (int along = 0; along < 2; ++along) {  // along x: face 1 against the neighbour's face 0; along y: 3 against 2
@@ -245,19 +260,20 @@ void walkOneTreeOneRank(p4est_t* p4est, const std::vector<Payload>& local, OnPai
       if (x >= P4EST_ROOT_LEN || y >= P4EST_ROOT_LEN) continue;  // domain boundary
       const LO m = cells.find(x, y);
       if (m >= 0 && quadrant(m)->level == q->level) {
-        onPair(side(e, face), side(m, face - 1));
+        pair(e, face, m, face - 1);
       } else if (m >= 0 && quadrant(m)->level == q->level + 1) {  // two finer neighbours
         const LO m2 = cells.find(along == 0 ? x : x + len / 2, along == 0 ? y + len / 2 : y);
-        SIGNORINI_ASSERT(m2 >= 0 && quadrant(m2)->level == q->level + 1, "forest not 2:1 balanced at cell " << m);
-        onPair(side(m, face - 1), side(e, face));
-        onPair(side(m2, face - 1), side(e, face));
+        SIGNORINI_ASSERT(!isLocal || (m2 >= 0 && quadrant(m2)->level == q->level + 1),
+                         "forest not 2:1 balanced at cell " << m);
+        pair(m, face - 1, e, face);
+        if (m2 >= 0) pair(m2, face - 1, e, face);
       } else if (m >= 0) {  // a coarser neighbour starting at the same point
         SIGNORINI_ASSERT(quadrant(m)->level == q->level - 1, "forest not 2:1 balanced at cell " << e);
-        onPair(side(e, face), side(m, face - 1));
-      } else {  // a coarser neighbour starting half its size earlier
+        pair(e, face, m, face - 1);
+      } else {  // a coarser neighbour starting half its size earlier (or, for a ghost, none here)
         const LO c = cells.find(along == 0 ? x : x - len, along == 0 ? y - len : y);
-        SIGNORINI_ASSERT(c >= 0 && quadrant(c)->level == q->level - 1, "no face neighbour of cell " << e);
-        onPair(side(e, face), side(c, face - 1));
+        SIGNORINI_ASSERT(!isLocal || (c >= 0 && quadrant(c)->level == q->level - 1), "no face neighbour of cell " << e);
+        if (c >= 0 && quadrant(c)->level == q->level - 1) pair(e, face, c, face - 1);
       }
     }
   }
@@ -267,15 +283,16 @@ void walkOneTreeOneRank(p4est_t* p4est, const std::vector<Payload>& local, OnPai
 /// Calls onPair(A, B) for every interior face with a local cell on at least one side: A's face is
 /// the whole fine edge, B the (equal or coarser) neighbour; a 2:1 face gives one call per fine
 /// half. The payloads of the neighbours on other ranks come from p4est's face ghost layer;
-/// onGhosts(ghosts) is called once they have arrived (with none on the direct walk).
+/// onGhosts(ghosts) is called once they have arrived (with none on one rank).
 template <class Payload, class OnGhosts, class OnPair>
 void forEachInteriorFace(const mesh::Forest& forest, const std::vector<Payload>& local, OnGhosts onGhosts,
                          OnPair onPair, FaceWalk walk = FaceWalk::automatic) {
   p4est_t* p4est = forest.p4est();
-  if (walk == FaceWalk::automatic && p4est->mpisize == 1 && p4est->connectivity->num_trees == 1) {
+  const bool direct = walk == FaceWalk::automatic && p4est->connectivity->num_trees == 1;
+  if (direct && p4est->mpisize == 1) {
     const std::vector<Payload> none;
     onGhosts(none);
-    detail::walkOneTreeOneRank(p4est, local, onPair);
+    detail::walkOneTree(p4est, local, nullptr, none, onPair);
     return;
   }
   p4est_ghost_t* ghost = p4est_ghost_new(p4est, P4EST_CONNECT_FACE);
@@ -287,8 +304,12 @@ void forEachInteriorFace(const mesh::Forest& forest, const std::vector<Payload>&
   }
   p4est_ghost_exchange_custom(p4est, ghost, sizeof(Payload), mirrors.data(), ghosts.data());
   onGhosts(ghosts);
-  detail::FaceIteration<Payload, OnPair> it{&local, &ghosts, &onPair};
-  p4est_iterate(p4est, ghost, &it, nullptr, &detail::FaceIteration<Payload, OnPair>::callback, nullptr);
+  if (direct) {
+    detail::walkOneTree(p4est, local, &ghost->ghosts, ghosts, onPair);
+  } else {
+    detail::FaceIteration<Payload, OnPair> it{&local, &ghosts, &onPair};
+    p4est_iterate(p4est, ghost, &it, nullptr, &detail::FaceIteration<Payload, OnPair>::callback, nullptr);
+  }
   p4est_ghost_destroy(ghost);
 }
 

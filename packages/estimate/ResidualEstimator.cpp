@@ -6,8 +6,8 @@
 ///    + beta k^2 kappa Laplace(u_h), the Laplacian of the bilinear field through the inverse
 ///    bilinear map (non-zero on non-rectangular cells); exact from r's corner values where r is
 ///    bilinear (parallelograms, constant f), else 3x3 Gauss;
-///  - interior edges (host, forEachInteriorFace: p4est_iterate with the face ghost layer, or the
-///    direct walk on one tree and one rank): R = -(beta k^2 / 2) J,
+///  - interior edges (host, forEachInteriorFace: the direct walk over local and ghost cells on a
+///    forest of one tree, else p4est_iterate with the face ghost layer): R = -(beta k^2 / 2) J,
 ///    J = [kappa du_h/dn] (linear along the edge between parallelograms: integrated exactly from
 ///    its end values; else 3-point Gauss). Every cell K adjacent to an edge E gets h_K ||R||^2_E =
 ///    h_K (beta k^2 / 2)^2 ||J||^2_E, so E adds (h_K + h_K') (beta k^2)^2 ||J||^2_E / 4 in total: the jump is shared

@@ -623,24 +623,32 @@ TEST(ResidualEstimatorScaling, PhysicalScalingDividesByBetaKSquared) {
 
 TEST(FaceWalk, DirectWalkOfOneTreeGivesP4estsFacePairs) {
   // Interior faces of a graded forest of one tree: conforming faces and 2:1 faces with the fine
-  // side on either side in both directions.
-  if (Tpetra::getDefaultComm()->getSize() > 1) GTEST_SKIP() << "the direct walk serves one rank";
+  // side on either side in both directions; on several ranks also the faces between a local cell
+  // and a ghost, found from either side. Cells are named by their global index and level (the
+  // payload, which the ghosts carry too).
   test::TestMesh tm(0.0, 2.0, 0.0, 1.0, 1, 1, 2);
   ASSERT_EQ(tm.forest->p4est()->connectivity->num_trees, 1);
   tm.refineGraded();
+  tm.forest->partition();
   const auto& level = tm.build().cellLevel();
-  const std::vector<int> payload(level.size(), 0);
-  int hangingHalves = 0;
+  const p4est_t* p4est = tm.forest->p4est();
+  std::vector<std::array<long long, 2>> payload(level.size());  // global index, level
+  for (size_t e = 0; e < payload.size(); ++e)
+    payload[e] = {static_cast<long long>(p4est->global_first_quadrant[p4est->mpirank] + static_cast<long long>(e)),
+                  static_cast<long long>(level[e])};
+  int hangingHalves = 0, withGhost = 0;
   auto pairs = [&](estimate::FaceWalk walk) {
-    std::vector<std::array<int, 4>> out;  // A's cell and face, B's cell and face
-    hangingHalves = 0;
-    estimate::forEachInteriorFace<int>(
-        *tm.forest, payload, [](const std::vector<int>&) {},
-        [&](const estimate::FaceSide<int>& a, const estimate::FaceSide<int>& b) {
-          EXPECT_GE(level[a.local], level[b.local]);  // A is the fine side
-          std::array<int, 4> p{a.local, a.face, b.local, b.face};
-          if (level[a.local] == level[b.local] && b.local < a.local) p = {b.local, b.face, a.local, a.face};
-          hangingHalves += level[a.local] > level[b.local];
+    std::vector<std::array<long long, 4>> out;  // A's cell and face, B's cell and face
+    hangingHalves = withGhost = 0;
+    estimate::forEachInteriorFace<std::array<long long, 2>>(
+        *tm.forest, payload, [](const std::vector<std::array<long long, 2>>&) {},
+        [&](const estimate::FaceSide<std::array<long long, 2>>& a, const estimate::FaceSide<std::array<long long, 2>>& b) {
+          if (a.local < 0 && b.local < 0) return;  // p4est_iterate's other half of a 2:1 face (ignored by the callers)
+          EXPECT_GE((*a.data)[1], (*b.data)[1]);  // A is the fine side
+          std::array<long long, 4> p{(*a.data)[0], a.face, (*b.data)[0], b.face};
+          if ((*a.data)[1] == (*b.data)[1] && p[2] < p[0]) p = {p[2], p[3], p[0], p[1]};
+          hangingHalves += (*a.data)[1] > (*b.data)[1];
+          withGhost += a.local < 0 || b.local < 0;
           out.push_back(p);
         },
         walk);
@@ -648,10 +656,17 @@ TEST(FaceWalk, DirectWalkOfOneTreeGivesP4estsFacePairs) {
     return out;
   };
   const auto viaP4est = pairs(estimate::FaceWalk::p4est);
-  const int hangingViaP4est = hangingHalves;
-  EXPECT_EQ(pairs(estimate::FaceWalk::automatic), viaP4est);
+  const int hangingViaP4est = hangingHalves, ghostViaP4est = withGhost;
+  const auto direct = pairs(estimate::FaceWalk::automatic);
+  EXPECT_EQ(direct, viaP4est);
+  EXPECT_EQ(std::adjacent_find(direct.begin(), direct.end()), direct.end());  // each face once
   EXPECT_EQ(hangingHalves, hangingViaP4est);
-  EXPECT_GT(hangingHalves, 16);
+  EXPECT_EQ(withGhost, ghostViaP4est);
+  int halves = hangingHalves, ghosts = withGhost;
+  Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_SUM, 1, &hangingHalves, &halves);
+  Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_SUM, 1, &withGhost, &ghosts);
+  EXPECT_GT(halves, 16);
+  if (Tpetra::getDefaultComm()->getSize() > 1) EXPECT_GT(ghosts, 0);
 }
 
 TEST(ResidualEstimatorParameters, ValidListIsDocumentedAndChecked) {
