@@ -84,22 +84,34 @@ void regulariseSequence(std::vector<Forest*>& meshes) {
     if (compact[n]) meshes[n]->compact();
   };
   // A backward refinement of T^n can, inside the refined cells, leave T^{n+1} two levels coarser
-  // than T^n: sweep forward and backward until a round refines nothing.
+  // than T^n: sweep forward and backward until a round refines nothing. A directed pair that has
+  // been checked is checked again only once one of its meshes has been refined since (refining
+  // the target cannot break what was checked, refining the neighbour can), so the last round
+  // mostly skips; the meshes are the same as with every pair checked every time. The versions
+  // count each mesh's refinements (the same on every rank).
+  std::vector<long> version(meshes.size(), 0);
+  std::vector<std::pair<long, long>> checkedForward(meshes.size(), {-1, -1}), checkedBackward(meshes.size(), {-1, -1});
+  for (size_t n = 1; n < meshes.size(); ++n)
+    SIGNORINI_ASSERT(std::find(meshes.begin(), meshes.begin() + n, meshes[n]) == meshes.begin() + n,
+                     "regulariseSequence: one forest twice in the sequence");
+  auto check = [&](size_t neighbour, size_t target, std::pair<long, long>& checked) {
+    if (checked == std::make_pair(version[neighbour], version[target])) {
+      release(neighbour);  // it may still be expanded as the previous pair's target
+      return 0;
+    }
+    meshes[neighbour]->expand();
+    meshes[target]->expand();
+    const int passes = regulariseInTime(*meshes[neighbour], *meshes[target]);
+    version[target] += passes;
+    checked = {version[neighbour], version[target]};
+    release(neighbour);
+    return passes;
+  };
   for (int changed = 1; changed;) {
     changed = 0;
-    for (size_t n = 1; n < meshes.size(); ++n) {
-      meshes[n - 1]->expand();
-      meshes[n]->expand();
-      changed += regulariseInTime(*meshes[n - 1], *meshes[n]);
-      release(n - 1);
-    }
+    for (size_t n = 1; n < meshes.size(); ++n) changed += check(n - 1, n, checkedForward[n]);
     release(meshes.size() - 1);
-    for (size_t n = meshes.size() - 1; n-- > 0;) {
-      meshes[n + 1]->expand();
-      meshes[n]->expand();
-      changed += regulariseInTime(*meshes[n + 1], *meshes[n]);
-      release(n + 1);
-    }
+    for (size_t n = meshes.size() - 1; n-- > 0;) changed += check(n + 1, n, checkedBackward[n]);
     release(0);
   }
   // A refined mesh was re-partitioned by regulariseInTime; compact ones stay as they were stored.

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 #include <p4est_algorithms.h>
 #include <p4est_bits.h>
@@ -132,6 +133,60 @@ TEST(TemporalRegularisation, MovingRefinementOverSixStepsIsRegularisedBothWays) 
     EXPECT_LE(test::maxHangingNodesPerEdge(*steps[n]), 1) << "step " << n;
     if (n > 0) EXPECT_LE(test::maxCoarserThanOverlapping(*steps[n], *steps[n - 1]), 1) << "against step " << n - 1;
     if (n + 1 < numSteps) EXPECT_LE(test::maxCoarserThanOverlapping(*steps[n], *steps[n + 1]), 1) << "against step " << n + 1;
+  }
+}
+
+// regulariseSequence checks a directed pair of steps again only when one of its meshes has been
+// refined since its last check. It must give exactly the meshes of the plain algorithm, which
+// checks every pair in every sweep until a round refines nothing (here by regulariseInTime):
+// on eight steps refined deeply at scattered points (a hash of the step), whose pairs violate the
+// condition in both directions, and on two equal fine steps before the initial mesh, where only
+// the first check of the last pair refines anything.
+TEST(TemporalRegularisation, SkippingCheckedPairsGivesThePlainAlgorithmsMeshes) {
+  test::TestMesh a(0.0, 1.0, 0.0, 1.0, 4, 4, 1);
+  auto hash = [](unsigned v) {
+    v ^= v >> 16, v *= 0x7feb352du, v ^= v >> 15, v *= 0x846ca68bu, v ^= v >> 16;
+    return v;
+  };
+  auto scattered = [&](int n, mesh::Forest& f) {
+    for (unsigned k = 0; k < 3; ++k) {
+      const unsigned h = hash(1000u + 10u * static_cast<unsigned>(n) + k);
+      refineAt(f, (h % 1000) / 1000.0, ((h / 1000) % 1000) / 1000.0, 1 + static_cast<int>((h / 1000000) % 7));
+    }
+  };
+  auto twoFineThenCoarse = [&](int n, mesh::Forest& f) {
+    if (n < 2) refineAt(f, 0.3, 0.6, 5);
+  };
+  for (const auto& [numSteps, refine] :
+       {std::pair<int, std::function<void(int, mesh::Forest&)>>{8, scattered}, {3, twoFineThenCoarse}}) {
+    std::vector<std::unique_ptr<mesh::Forest>> skipping, plain;
+    for (int n = 0; n < numSteps; ++n) {
+      auto f = std::make_unique<mesh::Forest>(*a.forest);
+      refine(n, *f);
+      f->balance();
+      f->partition();
+      plain.push_back(std::make_unique<mesh::Forest>(*f));
+      skipping.push_back(std::move(f));
+    }
+    EXPECT_GE(test::maxCoarserThanOverlapping(*plain[numSteps - 1], *plain[numSteps - 2]), 2);
+    int forward = 0, backward = 0;
+    for (int changed = 1; changed;) {
+      changed = 0;
+      for (int n = 1; n < numSteps; ++n) {
+        const int passes = mesh::regulariseInTime(*plain[n - 1], *plain[n]);
+        changed += passes, forward += passes;
+      }
+      for (int n = numSteps - 1; n-- > 0;) {
+        const int passes = mesh::regulariseInTime(*plain[n + 1], *plain[n]);
+        changed += passes, backward += passes;
+      }
+    }
+    EXPECT_GE(forward, 1) << numSteps << " steps";
+    if (numSteps == 8) EXPECT_GE(backward, 3);
+    std::vector<mesh::Forest*> seq;
+    for (auto& f : skipping) seq.push_back(f.get());
+    mesh::regulariseSequence(seq);
+    for (int n = 0; n < numSteps; ++n) EXPECT_TRUE(skipping[n]->sameCells(*plain[n])) << numSteps << " steps, step " << n;
   }
 }
 
