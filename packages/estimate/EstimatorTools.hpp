@@ -229,9 +229,10 @@ namespace detail {
 /// The faces of a 2:1 balanced forest of one tree that touch a local cell: each interior face is
 /// the +x or +y face of the cell on its lower side, whose neighbour there has the same size, is one
 /// of two finer cells or is one level coarser. \p ghostQuadrants (the face ghost layer, one tree;
-/// empty on one rank) and their \p ghosts' payloads join the local cells; a pair is passed on when
-/// one of its cells is local. A local cell's neighbours are all local or ghosts; a ghost's missing
-/// neighbours are cells of other ranks, which touch no local cell across that face.
+/// nullptr on one rank, with \p ghosts empty) and their \p ghosts' payloads join the local cells;
+/// a pair is passed on when one of its cells is local. A local cell's neighbours are all local or
+/// ghosts. A ghost's neighbour missing from the table is neither, so that face has no local side
+/// and is not needed.
 template <class Payload, class OnPair>
 void walkOneTree(p4est_t* p4est, const std::vector<Payload>& local, const sc_array_t* ghostQuadrants,
                  const std::vector<Payload>& ghosts, OnPair& onPair) {
@@ -263,16 +264,20 @@ void walkOneTree(p4est_t* p4est, const std::vector<Payload>& local, const sc_arr
         pair(e, face, m, face - 1);
       } else if (m >= 0 && quadrant(m)->level == q->level + 1) {  // two finer neighbours
         const LO m2 = cells.find(along == 0 ? x : x + len / 2, along == 0 ? y + len / 2 : y);
-        SIGNORINI_ASSERT(!isLocal || (m2 >= 0 && quadrant(m2)->level == q->level + 1),
-                         "forest not 2:1 balanced at cell " << m);
+        const bool second = m2 >= 0 && quadrant(m2)->level == q->level + 1;
+        SIGNORINI_ASSERT(!isLocal || second, "forest not 2:1 balanced next to the cell at (" << q->x << ", " << q->y
+                                                                                              << "), level " << int(q->level));
         pair(m, face - 1, e, face);
-        if (m2 >= 0) pair(m2, face - 1, e, face);
+        if (second) pair(m2, face - 1, e, face);
       } else if (m >= 0) {  // a coarser neighbour starting at the same point
-        SIGNORINI_ASSERT(quadrant(m)->level == q->level - 1, "forest not 2:1 balanced at cell " << e);
+        SIGNORINI_ASSERT(quadrant(m)->level == q->level - 1, "forest not 2:1 balanced at the cell at (" << q->x << ", "
+                                                                                                        << q->y << ")");
         pair(e, face, m, face - 1);
-      } else {  // a coarser neighbour starting half its size earlier (or, for a ghost, none here)
+      } else {  // a coarser neighbour starting half its size earlier; for a ghost it may be absent
+                // from the table, and a cell of another level found there is not a neighbour
         const LO c = cells.find(along == 0 ? x : x - len, along == 0 ? y - len : y);
-        SIGNORINI_ASSERT(!isLocal || (c >= 0 && quadrant(c)->level == q->level - 1), "no face neighbour of cell " << e);
+        SIGNORINI_ASSERT(!isLocal || (c >= 0 && quadrant(c)->level == q->level - 1),
+                         "no face neighbour of the cell at (" << q->x << ", " << q->y << "), level " << int(q->level));
         if (c >= 0 && quadrant(c)->level == q->level - 1) pair(e, face, c, face - 1);
       }
     }

@@ -75,30 +75,32 @@ int regulariseInTime(const Forest& neighbour, Forest& target) {
   }
 }
 
-void regulariseSequence(std::vector<Forest*>& meshes) {
-  if (meshes.empty()) return;
+int regulariseSequence(std::vector<Forest*>& meshes) {
+  if (meshes.empty()) return 0;
   // Compact meshes are expanded only while a sweep passes them (two at a time) and compacted again.
   std::vector<char> compact(meshes.size());
   for (size_t n = 0; n < meshes.size(); ++n) compact[n] = meshes[n]->isCompact();
   auto release = [&](size_t n) {
     if (compact[n]) meshes[n]->compact();
   };
-  // A backward refinement of T^n can, inside the refined cells, leave T^{n+1} two levels coarser
-  // than T^n: sweep forward and backward until a round refines nothing. A directed pair that has
-  // been checked is checked again only once one of its meshes has been refined since (refining
-  // the target cannot break what was checked, refining the neighbour can), so the last round
-  // mostly skips; the meshes are the same as with every pair checked every time. The versions
-  // count each mesh's refinements (the same on every rank).
+  // Sweep forward and backward until a round refines nothing (in the decks measured the second
+  // round has never refined: it confirms). A directed pair that has been checked is checked again
+  // only once one of its meshes has been refined since: refining the neighbour can break what was
+  // checked; refining the target cannot (the check is conservative there). A skipped check would
+  // have refined nothing, so the meshes are the same as with every pair checked every time. The
+  // versions count each mesh's refinement passes (the same on every rank).
   std::vector<long> version(meshes.size(), 0);
   std::vector<std::pair<long, long>> checkedForward(meshes.size(), {-1, -1}), checkedBackward(meshes.size(), {-1, -1});
   for (size_t n = 1; n < meshes.size(); ++n)
     SIGNORINI_ASSERT(std::find(meshes.begin(), meshes.begin() + n, meshes[n]) == meshes.begin() + n,
                      "regulariseSequence: one forest twice in the sequence");
+  int checks = 0;
   auto check = [&](size_t neighbour, size_t target, std::pair<long, long>& checked) {
     if (checked == std::make_pair(version[neighbour], version[target])) {
       release(neighbour);  // it may still be expanded as the previous pair's target
       return 0;
     }
+    ++checks;
     meshes[neighbour]->expand();
     meshes[target]->expand();
     const int passes = regulariseInTime(*meshes[neighbour], *meshes[target]);
@@ -117,6 +119,7 @@ void regulariseSequence(std::vector<Forest*>& meshes) {
   // A refined mesh was re-partitioned by regulariseInTime; compact ones stay as they were stored.
   for (size_t n = 0; n < meshes.size(); ++n)
     if (!compact[n]) meshes[n]->partition();
+  return checks;
 }
 
 void regulariseSteps(std::vector<std::shared_ptr<Forest>>& steps) {

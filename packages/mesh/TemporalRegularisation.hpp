@@ -15,10 +15,12 @@ namespace signorini::mesh {
 int regulariseInTime(const Forest& neighbour, Forest& target);
 
 /// Algorithm 5.3 over a sequence of step meshes: forward sweeps (each mesh against its
-/// predecessor) and backward sweeps (against its successor), repeated until nothing changes
-/// (a backward refinement can create a forward violation), then re-partitioning. Compact meshes
-/// (Forest::compact()) are expanded only while a sweep passes them and are compact on return.
-void regulariseSequence(std::vector<Forest*>& meshes);
+/// predecessor) and backward sweeps (against its successor), repeated until a round refines
+/// nothing, then re-partitioning. A pair is checked again only once one of its meshes has been
+/// refined since its last check; the meshes are those of checking every pair in every sweep.
+/// Compact meshes (Forest::compact()) are expanded only while a sweep passes them and are compact
+/// on return. Returns the number of pairs checked (regulariseInTime calls).
+int regulariseSequence(std::vector<Forest*>& meshes);
 
 /// regulariseSequence on the meshes of consecutive steps, which may share one forest (equal
 /// meshes of neighbouring steps are stored once): each step is regularised on its own copy, so a

@@ -643,6 +643,7 @@ TEST(FaceWalk, DirectWalkOfOneTreeGivesP4estsFacePairs) {
     estimate::forEachInteriorFace<std::array<long long, 2>>(
         *tm.forest, payload, [](const std::vector<std::array<long long, 2>>&) {},
         [&](const estimate::FaceSide<std::array<long long, 2>>& a, const estimate::FaceSide<std::array<long long, 2>>& b) {
+          if (walk == estimate::FaceWalk::automatic) EXPECT_TRUE(a.local >= 0 || b.local >= 0);
           if (a.local < 0 && b.local < 0) return;  // p4est_iterate's other half of a 2:1 face (ignored by the callers)
           EXPECT_GE((*a.data)[1], (*b.data)[1]);  // A is the fine side
           std::array<long long, 4> p{(*a.data)[0], a.face, (*b.data)[0], b.face};
