@@ -17,6 +17,11 @@
 
 namespace signorini::fem {
 
+namespace {
+/// Whether overlap row \p row is among \p rows (flags per overlap row; empty: every row).
+bool flagged(const std::vector<char>& rows, LO row) { return rows.empty() || rows[row]; }
+}  // namespace
+
 Q1Assembler::Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet)
     : mesh_(mesh), dirichlet_(std::move(dirichlet)) {
   const auto overlap = mesh.overlapMap();
@@ -95,7 +100,6 @@ EntrySums Q1Assembler::canonicalSums(const std::vector<Contribution>& contributi
   return EntrySums(*mesh_.ownedMap(), *mesh_.overlapMap(), mesh_.ownedToOverlap(), contributions);
 }
 
-
 void Q1Assembler::cellContributions(double cm, double ck, const std::vector<char>& lumpMassAt,
                                     std::vector<Contribution>* mass, std::vector<Contribution>* stiffness,
                                     const std::vector<char>& onlyRows) const {
@@ -107,7 +111,7 @@ void Q1Assembler::cellContributions(double cm, double ck, const std::vector<char
   const size_t perCell = mass == stiffness ? 32 : 16;  // 16 couplings per cell without hanging corners
   mass->reserve(mass->size() + perCell * static_cast<size_t>(mesh_.numLocalCells()));
   stiffness->reserve(stiffness->size() + perCell * static_cast<size_t>(mesh_.numLocalCells()));
-  auto wanted = [&](LO row) { return row >= 0 && !dirichlet_[row] && (onlyRows.empty() || onlyRows[row]); };
+  auto wanted = [&](LO row) { return row >= 0 && !dirichlet_[row] && flagged(onlyRows, row); };
   for (LO e = 0; e < mesh_.numLocalCells(); ++e) {
     bool any = false;
     for (int a = 0; a < 4; ++a)
@@ -250,7 +254,7 @@ void Q1Assembler::assembleLoad(const core::Expression& f, double t, double scale
       for (int a = 0; a < 4; ++a)
         for (int k = 0; k < 2; ++k) {
           const LO row = mesh_.cornerDofsHost(e, a, k);
-          if (row >= 0 && !dirichlet_[row] && (shared.empty() || shared[row]))
+          if (row >= 0 && !dirichlet_[row] && flagged(shared, row))
             contributions.push_back({row, 0, mesh_.cornerWeightsHost(e, a, k) * loads(e, a)});
         }
     canonicalSums(contributions).writeInto(out, accumulate, shared, &overlap);
@@ -315,7 +319,7 @@ void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned 
       for (int g = 0; g < 2; ++g)
         for (int end = 0; end < 2; ++end) {
           const LO row = nh(k, end);
-          if (!dirichlet_[row] && (shared.empty() || shared[row])) contributions.push_back({row, 0, loads(k, g, end)});
+          if (!dirichlet_[row] && flagged(shared, row)) contributions.push_back({row, 0, loads(k, g, end)});
         }
     canonicalSums(contributions).writeInto(out, true, shared, &overlap);
     return;

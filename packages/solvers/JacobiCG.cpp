@@ -352,6 +352,8 @@ std::vector<int> solveJacobiCG(const CrsMatrix& A, const std::vector<const Vecto
                                double relativeTolerance, int maxIterations) {
   SIGNORINI_ASSERT(b.size() == x.size(), "one initial guess per right-hand side");
   const bool reproducible = core::reproducibleArithmetic();
+  Vector diagonal(A.getRowMap());  // once for all groups (reproducible arithmetic)
+  if (reproducible) A.getLocalDiagCopy(diagonal);
   std::vector<int> iterations;
   for (size_t first = 0; first < b.size(); first += kMaxFields) {
     const size_t count = std::min<size_t>(b.size() - first, kMaxFields);
@@ -359,8 +361,6 @@ std::vector<int> solveJacobiCG(const CrsMatrix& A, const std::vector<const Vecto
     const std::vector<Vector*> groupX(x.begin() + first, x.begin() + first + count);
     std::vector<int> group;
     if (reproducible) {
-      Vector diagonal(A.getRowMap());
-      A.getLocalDiagCopy(diagonal);
       if (count == 1) group = solveReproducibleGroup<1>(A, diagonal, groupB, groupX, relativeTolerance, maxIterations);
       if (count == 2) group = solveReproducibleGroup<2>(A, diagonal, groupB, groupX, relativeTolerance, maxIterations);
       if (count == 3) group = solveReproducibleGroup<3>(A, diagonal, groupB, groupX, relativeTolerance, maxIterations);
