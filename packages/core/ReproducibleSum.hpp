@@ -96,29 +96,13 @@ inline void addFoldedTwo(double t, const double* sigma, double* folds) {
   }
 }
 
-/// reproducibleSums with the number of sums known at compile time (kept in registers). Both passes
-/// run kLanes interleaved accumulators (independent dependency chains); the maximum and the parts'
-/// sums are exact, so how the terms are split between the lanes does not change a bit.
+/// The second pass of reproducibleSumsOf: \p largest holds this rank's largest |term| of each sum
+/// (overwritten by the global ones). The sums' bits depend on the terms only.
 template <int Count, class Term>
-void reproducibleSumsOf(const Comm& comm, std::size_t n, const Term& term, double* sums, std::size_t globalTerms) {
+void foldedSumsOf(const Comm& comm, std::size_t n, const Term& term, double* largest, double* sums,
+                  std::size_t globalTerms) {
   constexpr int kLanes = 4;
-  double largestOf[kLanes][Count] = {}, t[kLanes][Count];
-  std::size_t i = 0;
-  // std::max skips a nan term; its parts, and so the sum, are nan.
-  for (; i + kLanes <= n; i += kLanes)
-    for (int l = 0; l < kLanes; ++l) {
-      term(i + l, t[l]);
-      for (int k = 0; k < Count; ++k) largestOf[l][k] = std::max(largestOf[l][k], std::fabs(t[l][k]));
-    }
-  for (; i < n; ++i) {
-    term(i, t[0]);
-    for (int k = 0; k < Count; ++k) largestOf[0][k] = std::max(largestOf[0][k], std::fabs(t[0][k]));
-  }
-  double largest[Count];
-  for (int k = 0; k < Count; ++k) {
-    largest[k] = largestOf[0][k];
-    for (int l = 1; l < kLanes; ++l) largest[k] = std::max(largest[k], largestOf[l][k]);
-  }
+  double t[kLanes][Count];
   maxAll(comm, Count, largest);
   int exponent[Count];
   double scale[Count], folds[kLanes][3 * Count] = {};
@@ -170,6 +154,32 @@ void reproducibleSumsOf(const Comm& comm, std::size_t n, const Term& term, doubl
   for (int k = 0; k < Count; ++k)
     sums[k] = std::ldexp((total[3 * k] + total[3 * k + 1]) + total[3 * k + 2], exponent[k]);
 }
+
+/// reproducibleSums with the number of sums known at compile time (kept in registers). Both passes
+/// run kLanes interleaved accumulators (independent dependency chains); the maximum and the parts'
+/// sums are exact, so how the terms are split between the lanes does not change a bit.
+template <int Count, class Term>
+void reproducibleSumsOf(const Comm& comm, std::size_t n, const Term& term, double* sums, std::size_t globalTerms) {
+  constexpr int kLanes = 4;
+  double largestOf[kLanes][Count] = {}, t[kLanes][Count];
+  std::size_t i = 0;
+  // std::max skips a nan term; its parts, and so the sum, are nan.
+  for (; i + kLanes <= n; i += kLanes)
+    for (int l = 0; l < kLanes; ++l) {
+      term(i + l, t[l]);
+      for (int k = 0; k < Count; ++k) largestOf[l][k] = std::max(largestOf[l][k], std::fabs(t[l][k]));
+    }
+  for (; i < n; ++i) {
+    term(i, t[0]);
+    for (int k = 0; k < Count; ++k) largestOf[0][k] = std::max(largestOf[0][k], std::fabs(t[0][k]));
+  }
+  double largest[Count];
+  for (int k = 0; k < Count; ++k) {
+    largest[k] = largestOf[0][k];
+    for (int l = 1; l < kLanes; ++l) largest[k] = std::max(largest[k], largestOf[l][k]);
+  }
+  foldedSumsOf<Count>(comm, n, term, largest, sums, globalTerms);
+}
 }  // namespace detail
 
 /// The \p count sums over i < n (local) and over all ranks of the terms term(i, t) writes into
@@ -191,6 +201,22 @@ void reproducibleSums(const Comm& comm, int count, std::size_t n, const Term& te
     case 3: return detail::reproducibleSumsOf<3>(comm, n, term, sums, globalTerms);
     case 4: return detail::reproducibleSumsOf<4>(comm, n, term, sums, globalTerms);
     default: SIGNORINI_ASSERT(false, "reproducibleSums: 1 to 4 sums at once");
+  }
+}
+
+/// reproducibleSums for a caller that has already found this rank's largest |term| of each sum
+/// (\p localLargest[k], the maximum of std::fabs over its local terms, 0 without terms; a nan term
+/// skipped as std::max skips it), for instance in the loop that computed the terms' factors: one
+/// pass over the terms instead of two, the same bits. \p localLargest is overwritten.
+template <class Term>
+void reproducibleSumsGivenLargest(const Comm& comm, int count, std::size_t n, const Term& term, double* localLargest,
+                                  double* sums, std::size_t globalTerms = 0) {
+  switch (count) {
+    case 1: return detail::foldedSumsOf<1>(comm, n, term, localLargest, sums, globalTerms);
+    case 2: return detail::foldedSumsOf<2>(comm, n, term, localLargest, sums, globalTerms);
+    case 3: return detail::foldedSumsOf<3>(comm, n, term, localLargest, sums, globalTerms);
+    case 4: return detail::foldedSumsOf<4>(comm, n, term, localLargest, sums, globalTerms);
+    default: SIGNORINI_ASSERT(false, "reproducibleSumsGivenLargest: 1 to 4 sums at once");
   }
 }
 

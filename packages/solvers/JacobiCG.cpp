@@ -261,13 +261,15 @@ std::vector<int> solveReproducibleGroup(const CrsMatrix& A, const Vector& diagon
   const size_t n = A.getRangeMap()->getNodeNumElements();
   const size_t global = A.getRangeMap()->getGlobalNumElements();  // the same on any partition
   SIGNORINI_ASSERT(diagonal.getLocalLength() == n, "solveReproducibleJacobiCG: the diagonal is not on A's rows");
-  MultiVector R(A.getRangeMap(), NF, false), P(A.getRangeMap(), NF, false), Q(A.getRangeMap(), NF, false);
+  MultiVector R(A.getRangeMap(), NF, false), P(A.getRangeMap(), NF, false), Q(A.getRangeMap(), NF, false),
+      Z(A.getRangeMap(), NF, false);
   std::vector<int> all(NF), running, iterations(NF, 0);
   for (int f = 0; f < NF; ++f) all[f] = f, P.getVectorNonConst(f)->assign(*x[f]);
   core::applyCanonicalColumns(A, P, Q, all);  // A x
   auto dv = diagonal.getLocalViewHost(Tpetra::Access::ReadOnly);
   auto rv = R.getLocalViewHost(Tpetra::Access::OverwriteAll);
   auto pv = P.getLocalViewHost(Tpetra::Access::ReadWrite);
+  auto zv = Z.getLocalViewHost(Tpetra::Access::OverwriteAll);  // z = D^-1 r
   using HostView = decltype(x[0]->getLocalViewHost(Tpetra::Access::ReadWrite));
   using ConstHostView = decltype(b[0]->getLocalViewHost(Tpetra::Access::ReadOnly));
   std::vector<ConstHostView> bv;
@@ -308,22 +310,36 @@ std::vector<int> solveReproducibleGroup(const CrsMatrix& A, const Vector& diagon
       double pq;
       core::reproducibleSums(comm, 1, n, [&](size_t i, double* t) { t[0] = pv(i, f) * qv(i, f); }, &pq, global);
       const double alpha = rz[f] / pq;
-      for (size_t i = 0; i < n; ++i) xv[f](i, 0) += alpha * pv(i, f), rv(i, f) -= alpha * qv(i, f);
-      double sums[2];  // r.r, r.z
-      core::reproducibleSums(
+      // The update also finds the local largest terms of the sums below (their first pass).
+      constexpr int kLanes = 4;
+      double largestOf[kLanes][2] = {};
+      auto update = [&](size_t i, double* largest) {
+        xv[f](i, 0) += alpha * pv(i, f), rv(i, f) -= alpha * qv(i, f);
+        zv(i, f) = rv(i, f) / dv(i, 0);
+        largest[0] = std::max(largest[0], std::fabs(rv(i, f) * rv(i, f)));
+        largest[1] = std::max(largest[1], std::fabs(rv(i, f) * zv(i, f)));
+      };
+      size_t i = 0;
+      for (; i + kLanes <= n; i += kLanes)
+        for (int l = 0; l < kLanes; ++l) update(i + l, largestOf[l]);
+      for (; i < n; ++i) update(i, largestOf[0]);
+      double sums[2], largest[2];  // r.r, r.z
+      for (int k = 0; k < 2; ++k)
+        largest[k] = std::max({largestOf[0][k], largestOf[1][k], largestOf[2][k], largestOf[3][k]});
+      core::reproducibleSumsGivenLargest(
           comm, 2, n,
           [&](size_t i, double* t) {
             t[0] = rv(i, f) * rv(i, f);
-            t[1] = rv(i, f) * (rv(i, f) / dv(i, 0));
+            t[1] = rv(i, f) * zv(i, f);
           },
-          sums, global);
+          largest, sums, global);
       if (std::sqrt(sums[0]) <= target[f]) {
         iterations[f] = it;
         continue;
       }
       const double beta = sums[1] / rz[f];
       rz[f] = sums[1];
-      for (size_t i = 0; i < n; ++i) pv(i, f) = rv(i, f) / dv(i, 0) + beta * pv(i, f);
+      for (size_t i = 0; i < n; ++i) pv(i, f) = zv(i, f) + beta * pv(i, f);
       still.push_back(f);
     }
     running = still;

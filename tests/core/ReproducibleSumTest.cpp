@@ -107,6 +107,40 @@ TEST(ReproducibleSum, SeveralSumsAtOnceEqualSingleSums) {
   EXPECT_TRUE(sameBits(both[2], reproducibleSum(*comm, products.size(), products.data())));
 }
 
+TEST(ReproducibleSum, GivenLargestTermsGiveTheBitsOfTheTwoPassSums) {
+  // A caller that found each sum's largest local |term| itself (the Jacobi CG, in its update loop)
+  // gets the two-pass sums' bits, with and without a known term count, and on a rank without terms.
+  auto comm = Teuchos::DefaultComm<int>::getComm();
+  const auto x = hardTerms(6000, 21), y = hardTerms(6000, 22);
+  for (int how = 0; how < 4; ++how) {
+    const auto mx = share(x, how, comm->getRank(), comm->getSize()), my = share(y, how, comm->getRank(), comm->getSize());
+    auto terms = [&](std::size_t i, double* t) { t[0] = mx[i] * mx[i], t[1] = mx[i] * my[i]; };
+    for (const std::size_t globalTerms : {std::size_t(0), x.size()}) {
+      double twoPass[2], given[2], largest[2] = {0.0, 0.0};
+      reproducibleSums(*comm, 2, mx.size(), terms, twoPass, globalTerms);
+      for (std::size_t i = 0; i < mx.size(); ++i) {
+        double t[2];
+        terms(i, t);
+        for (int k = 0; k < 2; ++k) largest[k] = std::max(largest[k], std::fabs(t[k]));
+      }
+      signorini::core::reproducibleSumsGivenLargest(*comm, 2, mx.size(), terms, largest, given, globalTerms);
+      for (int k = 0; k < 2; ++k)
+        EXPECT_TRUE(sameBits(twoPass[k], given[k])) << "distribution " << how << ", sum " << k << ": " << twoPass[k]
+                                                    << " against " << given[k];
+    }
+  }
+  // Control: the largest term's size sets the grid of the parts (27 bits each, three of them without
+  // a term count): one 2^60 times too large leaves 21 bits of the sum.
+  const auto mx = share(x, 0, comm->getRank(), comm->getSize());
+  auto term = [&](std::size_t i, double* t) { t[0] = mx[i] * mx[i]; };
+  double twoPass, wrong, largest = 0.0;
+  reproducibleSums(*comm, 1, mx.size(), term, &twoPass);
+  for (double v : mx) largest = std::max(largest, v * v);
+  largest *= 0x1p60;
+  signorini::core::reproducibleSumsGivenLargest(*comm, 1, mx.size(), term, &largest, &wrong);
+  EXPECT_FALSE(sameBits(twoPass, wrong));
+}
+
 TEST(ReproducibleSum, EmptyZeroAndNonFiniteSums) {
   auto comm = Teuchos::DefaultComm<int>::getComm();
   EXPECT_EQ(reproducibleSum(*comm, 0, nullptr), 0.0);
