@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <p4est_communication.h>
 #include <p4est_ghost.h>
 #include <p4est_lnodes.h>
 #include <Teuchos_CommHelpers.hpp>
@@ -57,48 +58,121 @@ CornerNumbering numberWithLnodes(p4est_t* p4est) {
   return out;
 }
 
-/// The same numbering for a forest of one tree on one rank, without p4est's general iteration
-/// over volumes, faces and corners (which cost more than an unconstrained solve per step of the
-/// membrane benchmark): the corner points of all cells in one hash table of their integer
-/// coordinates; a corner point is hanging exactly when it is the midpoint of a face of another
-/// cell (2:1 balance: that cell is one level coarser and the face's end points are regular).
-/// Regular points are numbered in the order the cells first touch them.
-CornerNumbering numberOneTreeOneRank(p4est_t* p4est) {
-  p4est_tree_t* tree = p4est_tree_array_index(p4est->trees, 0);
-  const size_t numCells = tree->quadrants.elem_count;
-  CoordinateTable points(4 * numCells);
-  LO numPoints = 0;
+/// The same numbering for a forest of one tree, on any number of ranks, without p4est's general
+/// iteration over volumes, faces and corners (which cost more than an unconstrained solve per step
+/// of the membrane benchmark on one rank, and on two ranks more than the rest of the new mesh): the
+/// corner points of the local cells in one hash table of their integer coordinates; a corner point
+/// is hanging exactly when it is the midpoint of a face of another cell (2:1 balance: that cell is
+/// one level coarser and the face's end points are regular), which is a local cell or in the face
+/// ghost layer (it shares a face with the finer cell that has the point as a corner).
+///
+/// A regular point belongs to the rank that owns the cell with the point as its lower left corner
+/// (at the right and upper boundary: the cell at the point's smallest quadrant inside the tree), a
+/// function of the point and p4est's partition alone, so every rank that sees the point agrees
+/// without communication, and the owner has the point as a corner of one of its cells. Each rank
+/// numbers its own points in the order its cells first touch them; the global ids of the others
+/// come from their owners (one exchange). On one rank: no ghost layer, no exchange.
+CornerNumbering numberOneTree(p4est_t* p4est) {
+  const int size = p4est->mpisize, rank = p4est->mpirank;
+  const size_t numCells = static_cast<size_t>(p4est->local_num_quadrants);
+  sc_array_t* cells = numCells > 0 ? &p4est_tree_array_index(p4est->trees, 0)->quadrants : nullptr;
+  p4est_ghost_t* ghost = size > 1 ? p4est_ghost_new(p4est, P4EST_CONNECT_FACE) : nullptr;
+  const size_t numGhosts = ghost ? ghost->ghosts.elem_count : 0;
+  auto cell = [&](size_t e) {
+    return e < numCells ? p4est_quadrant_array_index(cells, e) : p4est_quadrant_array_index(&ghost->ghosts, e - numCells);
+  };
+  CoordinateTable points(4 * (numCells + numGhosts));
+  std::vector<std::array<p4est_qcoord_t, 2>> coords;
+  coords.reserve(4 * numCells);
   auto point = [&](p4est_qcoord_t x, p4est_qcoord_t y) {
-    const LO p = points.insert(x, y, numPoints);
-    if (p == numPoints) ++numPoints;
+    const LO next = static_cast<LO>(coords.size());
+    const LO p = points.insert(x, y, next);
+    if (p == next) coords.push_back({x, y});
     return p;
   };
   std::vector<LO> cornerPoint(4 * numCells);
   for (size_t e = 0; e < numCells; ++e) {
-    const auto* q = p4est_quadrant_array_index(&tree->quadrants, e);
+    const auto* q = cell(e);
     const p4est_qcoord_t len = P4EST_QUADRANT_LEN(q->level);
     for (int c = 0; c < 4; ++c) cornerPoint[4 * e + c] = point(q->x + ((c & 1) ? len : 0), q->y + ((c & 2) ? len : 0));
   }
-  std::vector<std::array<LO, 2>> ends(numPoints, {-1, -1});  // a hanging point's face end points
-  for (size_t e = 0; e < numCells; ++e) {
-    const auto* q = p4est_quadrant_array_index(&tree->quadrants, e);
+  std::vector<std::array<LO, 2>> ends(coords.size(), {-1, -1});  // a hanging point's face end points
+  for (size_t e = 0; e < numCells + numGhosts; ++e) {
+    const auto* q = cell(e);
     const p4est_qcoord_t len = P4EST_QUADRANT_LEN(q->level), half = len / 2;
     SIGNORINI_ASSERT(half > 0, "cell at p4est's finest level");
     const p4est_qcoord_t mid[4][2] = {{q->x, q->y + half}, {q->x + len, q->y + half}, {q->x + half, q->y},
                                       {q->x + half, q->y + len}};
     for (int f = 0; f < 4; ++f) {
       const LO m = points.find(mid[f][0], mid[f][1]);
-      if (m >= 0) ends[m] = {cornerPoint[4 * e + p4est_face_corners[f][0]], cornerPoint[4 * e + p4est_face_corners[f][1]]};
+      if (m < 0) continue;
+      std::array<LO, 2> faceEnds;
+      for (int k = 0; k < 2; ++k) {  // a ghost's face ends may be new points (no local cell touches the far one)
+        const int c = p4est_face_corners[f][k];
+        faceEnds[k] = point(q->x + ((c & 1) ? len : 0), q->y + ((c & 2) ? len : 0));
+      }
+      ends.resize(coords.size(), {-1, -1});
+      ends[m] = faceEnds;
     }
   }
+  const LO numPoints = static_cast<LO>(coords.size());
+  ends.resize(numPoints, {-1, -1});
+  // The owner of every regular point.
+  std::vector<int> owner(numPoints, rank);
+  if (size > 1)
+    for (LO p = 0; p < numPoints; ++p) {
+      if (ends[p][0] >= 0) continue;
+      p4est_quadrant_t q;
+      P4EST_QUADRANT_INIT(&q);
+      q.level = P4EST_QMAXLEVEL;
+      q.x = std::min(coords[p][0], P4EST_ROOT_LEN - 1);
+      q.y = std::min(coords[p][1], P4EST_ROOT_LEN - 1);
+      owner[p] = p4est_comm_find_owner(p4est, 0, &q, rank);
+    }
   std::vector<LO> node(numPoints, -1);
   CornerNumbering out;
-  for (size_t k = 0; k < 4 * numCells; ++k) {  // first touch order
+  for (size_t k = 0; k < 4 * numCells; ++k) {  // own points in first touch order
     const LO p = cornerPoint[k];
-    if (ends[p][0] < 0 && node[p] < 0) node[p] = out.owned++;
+    if (ends[p][0] < 0 && owner[p] == rank && node[p] < 0) node[p] = out.owned++;
   }
+  long long first = 0, owned = out.owned;
+  if (size > 1) MPI_Exscan(&owned, &first, 1, MPI_LONG_LONG, MPI_SUM, p4est->mpicomm);
+  if (rank == 0) first = 0;  // MPI_Exscan leaves rank 0's result undefined
   out.gids.resize(out.owned);
-  for (LO i = 0; i < out.owned; ++i) out.gids[i] = i;
+  for (LO i = 0; i < out.owned; ++i) out.gids[i] = static_cast<GO>(first + i);
+  if (size > 1) {  // the global ids of the other regular points, from their owners
+    std::vector<int> sendCounts(size, 0), recvCounts(size), sendOff(size + 1, 0), recvOff(size + 1, 0);
+    std::vector<LO> asked;  // points in the order of the requests
+    for (LO p = 0; p < numPoints; ++p)
+      if (ends[p][0] < 0 && owner[p] != rank) sendCounts[owner[p]] += 2, asked.push_back(p);
+    std::stable_sort(asked.begin(), asked.end(), [&](LO a, LO b) { return owner[a] < owner[b]; });
+    for (int r = 0; r < size; ++r) sendOff[r + 1] = sendOff[r] + sendCounts[r];
+    std::vector<p4est_qcoord_t> request(static_cast<size_t>(sendOff[size]));
+    for (size_t j = 0; j < asked.size(); ++j) request[2 * j] = coords[asked[j]][0], request[2 * j + 1] = coords[asked[j]][1];
+    MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, p4est->mpicomm);
+    for (int r = 0; r < size; ++r) recvOff[r + 1] = recvOff[r] + recvCounts[r];
+    std::vector<p4est_qcoord_t> received(static_cast<size_t>(recvOff[size]));
+    MPI_Alltoallv(request.data(), sendCounts.data(), sendOff.data(), P4EST_MPI_QCOORD, received.data(),
+                  recvCounts.data(), recvOff.data(), P4EST_MPI_QCOORD, p4est->mpicomm);
+    std::vector<long long> answer(received.size() / 2), reply(asked.size());
+    for (size_t j = 0; j < answer.size(); ++j) {
+      const LO p = points.find(received[2 * j], received[2 * j + 1]);
+      SIGNORINI_ASSERT(p >= 0 && node[p] >= 0, "a rank asked for a point this rank does not own");
+      answer[j] = first + node[p];
+    }
+    for (int r = 0; r <= size; ++r) sendOff[r] /= 2, recvOff[r] /= 2;
+    for (int r = 0; r < size; ++r) sendCounts[r] /= 2, recvCounts[r] /= 2;
+    MPI_Alltoallv(answer.data(), recvCounts.data(), recvOff.data(), MPI_LONG_LONG, reply.data(), sendCounts.data(),
+                  sendOff.data(), MPI_LONG_LONG, p4est->mpicomm);
+    std::vector<size_t> byGid(asked.size());  // the other points follow the own ones in global order
+    for (size_t j = 0; j < asked.size(); ++j) byGid[j] = j;
+    std::sort(byGid.begin(), byGid.end(), [&](size_t a, size_t b) { return reply[a] < reply[b]; });
+    for (const size_t j : byGid) {
+      node[asked[j]] = static_cast<LO>(out.gids.size());
+      out.gids.push_back(static_cast<GO>(reply[j]));
+    }
+    p4est_ghost_destroy(ghost);
+  }
   out.corner.resize(4 * numCells);
   for (size_t k = 0; k < 4 * numCells; ++k) {
     const LO p = cornerPoint[k];
@@ -118,8 +192,8 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
     : comm_(comm) {
   p4est_t* p4est = forest.p4est();
   const CoarseMesh& coarse = forest.coarse();
-  const bool direct = how == Numbering::automatic && p4est->mpisize == 1 && p4est->connectivity->num_trees == 1;
-  const CornerNumbering numbering = direct ? numberOneTreeOneRank(p4est) : numberWithLnodes(p4est);
+  const bool direct = how == Numbering::automatic && p4est->connectivity->num_trees == 1;
+  const CornerNumbering numbering = direct ? numberOneTree(p4est) : numberWithLnodes(p4est);
 
   // Maps: owned nodes are contiguous by rank; overlap = owned then nonlocal.
   const LO numLocalNodes = static_cast<LO>(numbering.gids.size()), owned = numbering.owned;

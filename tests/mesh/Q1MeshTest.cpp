@@ -1,10 +1,14 @@
-// The Q1 numbering: the direct numbering of one tree on one rank against p4est lnodes.
+// The Q1 numbering: the direct numbering of one tree (on 1-3 ranks) against p4est lnodes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
+#include <map>
 #include <utility>
 #include <vector>
+
+#include <mpi.h>
+#include <Teuchos_CommHelpers.hpp>
 
 #include "../TestMesh.hpp"
 
@@ -30,12 +34,13 @@ std::vector<std::vector<std::pair<Point, double>>> cornerTerms(const mesh::Q1Mes
 }
 
 TEST(Q1Mesh, DirectNumberingOfOneTreeEqualsLnodes) {
-  if (Tpetra::getDefaultComm()->getSize() > 1) GTEST_SKIP() << "the direct numbering serves one rank";
+  const auto comm = Tpetra::getDefaultComm();
   test::TestMesh tm(0.0, 2.0, 0.0, 1.0, 1, 1, 2);
   ASSERT_EQ(tm.forest->p4est()->connectivity->num_trees, 1);
   tm.refineGraded();
-  const mesh::Q1Mesh direct(*tm.forest, *tm.segments, Tpetra::getDefaultComm());
-  const mesh::Q1Mesh lnodes(*tm.forest, *tm.segments, Tpetra::getDefaultComm(), mesh::Q1Mesh::Numbering::lnodes);
+  tm.forest->partition();  // the graded cells spread over the ranks: hanging faces across rank boundaries
+  const mesh::Q1Mesh direct(*tm.forest, *tm.segments, comm);
+  const mesh::Q1Mesh lnodes(*tm.forest, *tm.segments, comm, mesh::Q1Mesh::Numbering::lnodes);
 
   EXPECT_EQ(direct.numGlobalNodes(), lnodes.numGlobalNodes());
   auto sortedNodes = [](const mesh::Q1Mesh& m) {
@@ -46,18 +51,53 @@ TEST(Q1Mesh, DirectNumberingOfOneTreeEqualsLnodes) {
   EXPECT_EQ(sortedNodes(direct), sortedNodes(lnodes));  // the same points (bit for bit: same mapping)
   const auto a = cornerTerms(direct), b = cornerTerms(lnodes);
   ASSERT_EQ(a.size(), b.size());
-  int hanging = 0;
+  int hanging = 0, hangingOnOthers = 0;  // hanging corners; of them, with an end node another rank owns
+  const LO owned = static_cast<LO>(direct.ownedMap()->getNodeNumElements());
   for (size_t k = 0; k < a.size(); ++k) {
     EXPECT_EQ(a[k], b[k]) << "cell " << k / 4 << " corner " << k % 4;
-    hanging += a[k].size() == 2;
+    if (a[k].size() != 2) continue;
+    ++hanging;
+    const LO e = static_cast<LO>(k / 4);
+    const int c = static_cast<int>(k % 4);
+    hangingOnOthers += direct.cornerDofsHost(e, c, 0) >= owned || direct.cornerDofsHost(e, c, 1) >= owned;
   }
-  EXPECT_GT(hanging, 16);
+  int totals[2] = {hanging, hangingOnOthers}, global[2];
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 2, totals, global);
+  EXPECT_GT(global[0], 16);
+  if (comm->getSize() > 1) EXPECT_GT(global[1], 0) << "no hanging corner depends on another rank's node";
   ASSERT_EQ(direct.boundaryEdges().size(), lnodes.boundaryEdges().size());
   for (size_t i = 0; i < direct.boundaryEdges().size(); ++i) {
     const auto &p = direct.boundaryEdges()[i], &q = lnodes.boundaryEdges()[i];
     EXPECT_EQ(p.segments, q.segments);
     for (int k = 0; k < 2; ++k) EXPECT_EQ(direct.nodeCoords()[p.node[k]], lnodes.nodeCoords()[q.node[k]]);
   }
+
+  // The global ids: owned first and contiguous by rank; over all ranks, one point per global id
+  // and one global id per point.
+  const auto& overlap = *direct.overlapMap();
+  const GO firstOwned = direct.ownedMap()->getMinGlobalIndex();
+  std::vector<double> mine(3 * overlap.getNodeNumElements());
+  for (LO i = 0; i < static_cast<LO>(overlap.getNodeNumElements()); ++i) {
+    if (i < owned) EXPECT_EQ(overlap.getGlobalElement(i), firstOwned + i);
+    mine[3 * i] = static_cast<double>(overlap.getGlobalElement(i));
+    mine[3 * i + 1] = direct.nodeCoords()[i][0];
+    mine[3 * i + 2] = direct.nodeCoords()[i][1];
+  }
+  const int count = static_cast<int>(mine.size());
+  std::vector<int> counts(comm->getSize()), offsets(comm->getSize() + 1, 0);
+  MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+  for (int r = 0; r < comm->getSize(); ++r) offsets[r + 1] = offsets[r] + counts[r];
+  const int total = offsets.back();
+  std::vector<double> all(total);
+  MPI_Allgatherv(mine.data(), count, MPI_DOUBLE, all.data(), counts.data(), offsets.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+  std::map<double, Point> pointOf;
+  std::map<Point, double> gidOf;
+  for (int j = 0; j + 2 < total; j += 3) {
+    const Point x{all[j + 1], all[j + 2]};
+    EXPECT_TRUE(pointOf.emplace(all[j], x).first->second == x) << "global id " << all[j] << " names two points";
+    EXPECT_EQ(gidOf.emplace(x, all[j]).first->second, all[j]) << "a point with two global ids";
+  }
+  EXPECT_EQ(static_cast<GO>(pointOf.size()), direct.numGlobalNodes());
 }
 
 }  // namespace
