@@ -125,7 +125,7 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
     if (I.equationsPerNode > 1) mueluParams.set("number of equations", I.equationsPerNode);
     if (!I.nullspace.is_null()) mueluParams.sublist("user data").set("Nullspace", I.nullspace);
     mueluParams.setParameters(I.params.sublist("MueLu"));
-    // MueLu gets a plain CrsMatrix copy (not the FECrsMatrix itself).
+    // MueLu gets its own copy of A (the assemblers' matrices view arrays their pattern shares).
     RCP<Operator> op = Teuchos::rcp(new CrsMatrix(*A, Teuchos::Copy));
     I.prec = MueLu::CreateTpetraPreconditioner(op, mueluParams);
   } else if (choice == "Jacobi") {
