@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <type_traits>
 
 #include <Teuchos_OrdinalTraits.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -12,6 +13,8 @@
 #include "MpiComm.hpp"
 
 namespace signorini::fem {
+
+static_assert(std::is_same_v<GO, long long>, "the global ids travel as MPI_LONG_LONG");
 
 Q1Pattern::Q1Pattern(const mesh::Q1Mesh& mesh, int components, const RCP<const Map>& owned,
                      const RCP<const Map>& overlap, const RCP<const Tpetra::Import<LO, GO, Node>>&)
@@ -140,7 +143,7 @@ Q1Pattern::Q1Pattern(const mesh::Q1Mesh& mesh, int components, const RCP<const M
     rh(r + 1) = columns.size();
   }
   ownedEntries_ = columns.size();
-  for (LO r = nOwned; r < nRows; ++r) {  // in the order of their pattern message
+  for (LO r = nOwned; r < nRows; ++r) {  // each row's columns in the order its pattern message lists them
     forEachColumn(r, [&](LO u) { columns.push_back(toColHost(u)); });
     rh(r + 1) = columns.size();
   }

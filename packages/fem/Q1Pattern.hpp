@@ -19,10 +19,13 @@ namespace signorini::fem {
 /// Several ranks: the owned rows also couple to unknowns that only other ranks' cells touch, so the
 /// pattern of every row this rank does not own goes to the row's owner once (one exchange when the
 /// pattern is made). The owned rows are the first rows of the local arrays, with the result's column
-/// map (the owned unknowns first, then the others in the order of their global ids, as Tpetra orders
-/// column maps); the rows this rank does not own follow them. end() sends the values of those rows
-/// to their owners, which add them at places found when the pattern was made: no Tpetra graph fill,
-/// no global indices, no assembly mode, and one Import shared by all matrices of the pattern.
+/// map (the owned unknowns first, then the others by global id: Tpetra's order, since the owned
+/// global ids are contiguous by rank); the rows this rank does not own follow them. end() sends the
+/// values of those rows to their owners, which add them at places found when the pattern was made:
+/// no Tpetra graph fill, no global indices, no assembly mode, and one Import shared by all matrices
+/// of the pattern. The exchanges are MPI_Alltoall(v) over all ranks (fine for a few ranks; a
+/// neighbourhood exchange would scale further). All matrices of a pattern share its row pointers
+/// and column indices: none may change its graph.
 class Q1Pattern {
  public:
   using LocalMatrix = CrsMatrix::local_matrix_device_type;
@@ -38,8 +41,8 @@ class Q1Pattern {
   };
   /// A new zero matrix on the pattern, open for summing.
   Fill begin() const;
-  /// Ends the assembly of \p f (on several ranks: adds the other ranks' values of the owned rows;
-  /// collective) and puts 1 on the diagonal of the owned unknowns flagged in \p identityRows (the
+  /// Ends the assembly of \p f, once (on several ranks: adds the other ranks' values of the owned
+  /// rows; collective) and puts 1 on the diagonal of the owned unknowns flagged in \p identityRows (the
   /// kernels leave their rows and columns empty). The result views f's arrays.
   RCP<CrsMatrix> end(Fill& f, const std::vector<char>& identityRows) const;
   /// Column in the local arrays of every overlap unknown.

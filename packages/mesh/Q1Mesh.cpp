@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <type_traits>
 
 #include <p4est_communication.h>
 #include <p4est_ghost.h>
@@ -58,6 +60,15 @@ CornerNumbering numberWithLnodes(p4est_t* p4est) {
   return out;
 }
 
+/// Whether the coarse mesh is one tree whose faces and corners all lie on the boundary (no
+/// periodicity, no face or corner joined to another of its own): numberOneTree's case.
+bool isolatedSingleTree(const p4est_connectivity_t& c) {
+  if (c.num_trees != 1 || c.num_corners != 0) return false;
+  for (int f = 0; f < 4; ++f)
+    if (c.tree_to_tree[f] != 0 || c.tree_to_face[f] != f) return false;
+  return true;
+}
+
 /// The same numbering for a forest of one tree, on any number of ranks, without p4est's general
 /// iteration over volumes, faces and corners (which cost more than an unconstrained solve per step
 /// of the membrane benchmark on one rank, and on two ranks more than the rest of the new mesh): the
@@ -67,7 +78,7 @@ CornerNumbering numberWithLnodes(p4est_t* p4est) {
 /// ghost layer (it shares a face with the finer cell that has the point as a corner).
 ///
 /// A regular point belongs to the rank that owns the cell with the point as its lower left corner
-/// (at the right and upper boundary: the cell at the point's smallest quadrant inside the tree), a
+/// (at the right and upper boundary: the cell of the smallest quadrant inside the tree there), a
 /// function of the point and p4est's partition alone, so every rank that sees the point agrees
 /// without communication, and the owner has the point as a corner of one of its cells. Each rank
 /// numbers its own points in the order its cells first touch them; the global ids of the others
@@ -76,14 +87,19 @@ CornerNumbering numberOneTree(p4est_t* p4est) {
   const int size = p4est->mpisize, rank = p4est->mpirank;
   const size_t numCells = static_cast<size_t>(p4est->local_num_quadrants);
   sc_array_t* cells = numCells > 0 ? &p4est_tree_array_index(p4est->trees, 0)->quadrants : nullptr;
-  p4est_ghost_t* ghost = size > 1 ? p4est_ghost_new(p4est, P4EST_CONNECT_FACE) : nullptr;
+  static_assert(std::is_same_v<GO, long long>, "the global ids travel as MPI_LONG_LONG");
+  const std::unique_ptr<p4est_ghost_t, void (*)(p4est_ghost_t*)> ghostLayer(
+      size > 1 ? p4est_ghost_new(p4est, P4EST_CONNECT_FACE) : nullptr, [](p4est_ghost_t* g) {
+        if (g) p4est_ghost_destroy(g);
+      });
+  p4est_ghost_t* ghost = ghostLayer.get();
   const size_t numGhosts = ghost ? ghost->ghosts.elem_count : 0;
   auto cell = [&](size_t e) {
     return e < numCells ? p4est_quadrant_array_index(cells, e) : p4est_quadrant_array_index(&ghost->ghosts, e - numCells);
   };
   CoordinateTable points(4 * (numCells + numGhosts));
   std::vector<std::array<p4est_qcoord_t, 2>> coords;
-  coords.reserve(4 * numCells);
+  coords.reserve(4 * numCells + 2 * numGhosts);
   auto point = [&](p4est_qcoord_t x, p4est_qcoord_t y) {
     const LO next = static_cast<LO>(coords.size());
     const LO p = points.insert(x, y, next);
@@ -125,8 +141,9 @@ CornerNumbering numberOneTree(p4est_t* p4est) {
       p4est_quadrant_t q;
       P4EST_QUADRANT_INIT(&q);
       q.level = P4EST_QMAXLEVEL;
-      q.x = std::min(coords[p][0], P4EST_ROOT_LEN - 1);
-      q.y = std::min(coords[p][1], P4EST_ROOT_LEN - 1);
+      const p4est_qcoord_t last = P4EST_ROOT_LEN - P4EST_QUADRANT_LEN(P4EST_QMAXLEVEL);  // the last valid position
+      q.x = std::min(coords[p][0], last);
+      q.y = std::min(coords[p][1], last);
       owner[p] = p4est_comm_find_owner(p4est, 0, &q, rank);
     }
   std::vector<LO> node(numPoints, -1);
@@ -171,7 +188,6 @@ CornerNumbering numberOneTree(p4est_t* p4est) {
       node[asked[j]] = static_cast<LO>(out.gids.size());
       out.gids.push_back(static_cast<GO>(reply[j]));
     }
-    p4est_ghost_destroy(ghost);
   }
   out.corner.resize(4 * numCells);
   for (size_t k = 0; k < 4 * numCells; ++k) {
@@ -192,7 +208,9 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
     : comm_(comm) {
   p4est_t* p4est = forest.p4est();
   const CoarseMesh& coarse = forest.coarse();
-  const bool direct = how == Numbering::automatic && p4est->connectivity->num_trees == 1;
+  const bool direct = how != Numbering::lnodes && isolatedSingleTree(*p4est->connectivity);
+  SIGNORINI_ASSERT(direct || how != Numbering::direct, "the direct Q1 numbering needs one tree joined to nothing");
+  numbering_ = direct ? Numbering::direct : Numbering::lnodes;
   const CornerNumbering numbering = direct ? numberOneTree(p4est) : numberWithLnodes(p4est);
 
   // Maps: owned nodes are contiguous by rank; overlap = owned then nonlocal.

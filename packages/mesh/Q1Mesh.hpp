@@ -43,7 +43,8 @@ class Q1Mesh {
   /// constraints, numbered in another order and on several ranks owned by other ranks; on one
   /// rank the whole constructor 2.3 -> 0.75 unconstrained solves per step of the membrane
   /// benchmark, on two ranks the last cycle's 0.88 -> 0.42 s per rank).
-  enum class Numbering { automatic, lnodes };
+  /// (direct: the direct numbering, which must apply.)
+  enum class Numbering { automatic, lnodes, direct };
   /// \p forest must be 2:1 balanced (Forest::balance()).
   Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const Comm> comm,
          Numbering numbering = Numbering::automatic);
@@ -51,6 +52,8 @@ class Q1Mesh {
   Q1Mesh& operator=(const Q1Mesh&) = delete;
 
   RCP<const Comm> comm() const { return comm_; }
+  /// The numbering used: Numbering::direct or Numbering::lnodes.
+  Numbering numbering() const { return numbering_; }
   /// Nodes owned by this rank (rows of matrices).
   RCP<const Map> ownedMap() const { return ownedMap_; }
   /// Owned nodes followed by the shared nodes owned elsewhere.
@@ -99,6 +102,7 @@ class Q1Mesh {
   std::vector<char> nodesOnSegments(unsigned mask) const;
 
  private:
+  Numbering numbering_ = Numbering::lnodes;
   RCP<const Comm> comm_;
   RCP<const Map> ownedMap_, overlapMap_;
   RCP<const Tpetra::Import<LO, GO, Node>> importer_;

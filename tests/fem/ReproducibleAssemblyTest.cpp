@@ -36,7 +36,9 @@ struct Discretisation {
   const mesh::Q1Mesh* mesh;
   std::unique_ptr<fem::Q1Assembler> assembler;
   const mesh::BoundarySegments* segments;
-  explicit Discretisation(const RCP<const Comm>& comm) : tm(0.0, 1.5, 0.0, 1.0, 3, 2, 2, comm) {
+  /// \p oneTree: the domain as one tree (the direct Q1 numbering on any number of ranks), else 3 x 2 trees.
+  explicit Discretisation(const RCP<const Comm>& comm, bool oneTree = false)
+      : tm(0.0, 1.5, 0.0, 1.0, oneTree ? 1 : 3, oneTree ? 1 : 2, oneTree ? 4 : 2, comm) {
     test::refineAt(*tm.forest, 0.4, 0.6, 3);
     test::refineAt(*tm.forest, 0.999, 0.001, 2);
     tm.forest->balance();
@@ -123,10 +125,13 @@ int sumOverRanks(int local) {
 
 }  // namespace
 
-TEST(ReproducibleAssembly, DistributedEntriesHaveTheBitsOfTheOneRankAssembly) {
+namespace {
+/// The reproducible assembly on all ranks has the bits of the one on one rank.
+void expectTheBitsOfOneRank(bool oneTree) {
   const auto world = Tpetra::getDefaultComm();
   const RCP<const Comm> self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
-  const Discretisation distributed(world), serial(self);
+  const Discretisation distributed(world, oneTree), serial(self, oneTree);
+  ASSERT_EQ(distributed.mesh->numbering() == mesh::Q1Mesh::Numbering::direct, oneTree);
   Assembled d, s;
   {
     const test::ReproducibleScope scope(true);
@@ -140,28 +145,36 @@ TEST(ReproducibleAssembly, DistributedEntriesHaveTheBitsOfTheOneRankAssembly) {
   // Every row has the serial row's length (no entry lost or added).
   EXPECT_EQ(sumOverRanks(static_cast<int>(d.A.size())), static_cast<int>(s.A.size()));
 }
+}  // namespace
+
+TEST(ReproducibleAssembly, DistributedEntriesHaveTheBitsOfTheOneRankAssembly) { expectTheBitsOfOneRank(false); }
+
+// One tree: the direct Q1 numbering on several ranks, with the matrices' own pattern exchange.
+TEST(ReproducibleAssembly, OneTreeEntriesHaveTheBitsOfTheOneRankAssembly) { expectTheBitsOfOneRank(true); }
 
 TEST(ReproducibleAssembly, SameValuesAsTheOrdinaryAssemblyToRounding) {
   const auto world = Tpetra::getDefaultComm();
-  const Discretisation d(world);
-  const Assembled plain = assemble(d);
-  Assembled canonical;
-  {
-    const test::ReproducibleScope scope(true);
-    canonical = assemble(d);
-  }
-  auto close = [](const auto& a, const auto& b) {
-    int bad = 0;
-    for (const auto& [key, value] : a) {
-      const auto it = b.find(key);
-      if (it == b.end() || std::fabs(value - it->second) > 1e-14 * (1.0 + std::fabs(value))) ++bad;
+  for (const bool oneTree : {false, true}) {
+    const Discretisation d(world, oneTree);
+    const Assembled plain = assemble(d);
+    Assembled canonical;
+    {
+      const test::ReproducibleScope scope(true);
+      canonical = assemble(d);
     }
-    return bad;
-  };
-  EXPECT_EQ(sumOverRanks(close(plain.M, canonical.M)), 0);
-  EXPECT_EQ(sumOverRanks(close(plain.K, canonical.K)), 0);
-  EXPECT_EQ(sumOverRanks(close(plain.A, canonical.A)), 0);
-  EXPECT_EQ(sumOverRanks(close(plain.load, canonical.load)), 0);
+    auto close = [](const auto& a, const auto& b) {
+      int bad = 0;
+      for (const auto& [key, value] : a) {
+        const auto it = b.find(key);
+        if (it == b.end() || std::fabs(value - it->second) > 1e-14 * (1.0 + std::fabs(value))) ++bad;
+      }
+      return bad;
+    };
+    EXPECT_EQ(sumOverRanks(close(plain.M, canonical.M)), 0);
+    EXPECT_EQ(sumOverRanks(close(plain.K, canonical.K)), 0);
+    EXPECT_EQ(sumOverRanks(close(plain.A, canonical.A)), 0);
+    EXPECT_EQ(sumOverRanks(close(plain.load, canonical.load)), 0);
+  }
 }
 
 TEST(ReproducibleAssembly, OrdinaryAssemblyDiffersOnSeveralRanks) {  // the control

@@ -10,6 +10,8 @@
 #include <mpi.h>
 #include <Teuchos_CommHelpers.hpp>
 
+#include <p4est_algorithms.h>
+
 #include "../TestMesh.hpp"
 
 using namespace signorini;
@@ -33,12 +35,10 @@ std::vector<std::vector<std::pair<Point, double>>> cornerTerms(const mesh::Q1Mes
   return out;
 }
 
-TEST(Q1Mesh, DirectNumberingOfOneTreeEqualsLnodes) {
+/// The direct numbering of \p tm's forest (one tree) against lnodes on the same partition;
+/// \p acrossRanks: some hanging corner must depend on another rank's node.
+void expectDirectNumberingEqualsLnodes(const test::TestMesh& tm, bool acrossRanks) {
   const auto comm = Tpetra::getDefaultComm();
-  test::TestMesh tm(0.0, 2.0, 0.0, 1.0, 1, 1, 2);
-  ASSERT_EQ(tm.forest->p4est()->connectivity->num_trees, 1);
-  tm.refineGraded();
-  tm.forest->partition();  // the graded cells spread over the ranks: hanging faces across rank boundaries
   const mesh::Q1Mesh direct(*tm.forest, *tm.segments, comm);
   const mesh::Q1Mesh lnodes(*tm.forest, *tm.segments, comm, mesh::Q1Mesh::Numbering::lnodes);
 
@@ -49,6 +49,8 @@ TEST(Q1Mesh, DirectNumberingOfOneTreeEqualsLnodes) {
     return p;
   };
   EXPECT_EQ(sortedNodes(direct), sortedNodes(lnodes));  // the same points (bit for bit: same mapping)
+  EXPECT_EQ(direct.numbering(), mesh::Q1Mesh::Numbering::direct);  // the automatic choice for one tree
+  EXPECT_EQ(lnodes.numbering(), mesh::Q1Mesh::Numbering::lnodes);
   const auto a = cornerTerms(direct), b = cornerTerms(lnodes);
   ASSERT_EQ(a.size(), b.size());
   int hanging = 0, hangingOnOthers = 0;  // hanging corners; of them, with an end node another rank owns
@@ -64,7 +66,7 @@ TEST(Q1Mesh, DirectNumberingOfOneTreeEqualsLnodes) {
   int totals[2] = {hanging, hangingOnOthers}, global[2];
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 2, totals, global);
   EXPECT_GT(global[0], 16);
-  if (comm->getSize() > 1) EXPECT_GT(global[1], 0) << "no hanging corner depends on another rank's node";
+  if (acrossRanks) EXPECT_GT(global[1], 0) << "no hanging corner depends on another rank's node";
   ASSERT_EQ(direct.boundaryEdges().size(), lnodes.boundaryEdges().size());
   for (size_t i = 0; i < direct.boundaryEdges().size(); ++i) {
     const auto &p = direct.boundaryEdges()[i], &q = lnodes.boundaryEdges()[i];
@@ -98,6 +100,32 @@ TEST(Q1Mesh, DirectNumberingOfOneTreeEqualsLnodes) {
     EXPECT_EQ(gidOf.emplace(x, all[j]).first->second, all[j]) << "a point with two global ids";
   }
   EXPECT_EQ(static_cast<GO>(pointOf.size()), direct.numGlobalNodes());
+}
+
+TEST(Q1Mesh, DirectNumberingOfOneTreeEqualsLnodes) {
+  test::TestMesh tm(0.0, 2.0, 0.0, 1.0, 1, 1, 2);
+  ASSERT_EQ(tm.forest->p4est()->connectivity->num_trees, 1);
+  tm.refineGraded();
+  tm.forest->partition();  // the graded cells spread over the ranks: hanging faces across rank boundaries
+  expectDirectNumberingEqualsLnodes(tm, Tpetra::getDefaultComm()->getSize() > 1);
+}
+
+TEST(Q1Mesh, DirectNumberingOnAnUnevenPartitionWithAnEmptyRank) {
+  const int size = Tpetra::getDefaultComm()->getSize();
+  if (size == 1) GTEST_SKIP() << "needs several ranks";
+  test::TestMesh tm(0.0, 2.0, 0.0, 1.0, 1, 1, 2);
+  tm.refineGraded();
+  p4est_t* p4est = tm.forest->p4est();
+  // The last rank gets no cell; of the others each gets twice the previous one's share (on 2 ranks
+  // the first rank gets every cell).
+  std::vector<p4est_locidx_t> counts(size, 0);
+  const auto total = static_cast<p4est_locidx_t>(p4est->global_num_quadrants);
+  p4est_locidx_t weights = 0, given = 0;
+  for (int r = 0; r + 1 < size; ++r) weights += 1 << r;
+  for (int r = 0; r + 1 < size; ++r) given += counts[r] = r + 2 < size ? total * (1 << r) / weights : total - given;
+  p4est_partition_given(p4est, counts.data());
+  ASSERT_EQ(p4est->local_num_quadrants, counts[p4est->mpirank]);
+  expectDirectNumberingEqualsLnodes(tm, size > 2);  // on 2 ranks every cell is on the first
 }
 
 }  // namespace
