@@ -32,15 +32,38 @@ Q1Pattern::Q1Pattern(const mesh::Q1Mesh& mesh, int components, const RCP<const M
   };
   const bool oneRank = overlap->getComm()->getSize() == 1;
   SIGNORINI_ASSERT(!oneRank || overlap->isSameAs(*owned), "on one rank every overlap unknown is owned");
+  if (oneRank) {  // the adjacency itself: columns are overlap unknowns, sorted
+    Kokkos::View<size_t*, Kokkos::HostSpace> rh("q1PatternRows", static_cast<size_t>(nRows) + 1);
+    for (size_t n = 0; n < nNodes; ++n)
+      for (int c = 0; c < C; ++c) rh(C * n + c + 1) = rh(C * n + c) + C * adj.count[n];
+    Kokkos::View<LO*, Kokkos::HostSpace> ch("q1PatternColumns", rh(nRows));
+    for (LO r = 0; r < nRows; ++r) {
+      auto at = rh(r);
+      forEachColumn(r, [&](LO u) { ch(at++) = u; });
+    }
+    LocalMatrix::row_map_type::non_const_type rowPtr("q1PatternRows", static_cast<size_t>(nRows) + 1);
+    LocalMatrix::index_type::non_const_type cols("q1PatternColumns", rh(nRows));
+    Kokkos::deep_copy(rowPtr, rh);
+    Kokkos::deep_copy(cols, ch);
+    rowPtr_ = rowPtr;
+    cols_ = cols;
+    ownedEntries_ = rh(nRows);
+    numColumns_ = nRows;
+    columns_ = overlap;
+    Kokkos::View<LO*, DeviceType> toCol("toCol", nRows);
+    Kokkos::parallel_for(
+        "signorini::q1PatternColumns", Kokkos::RangePolicy<ExecSpace>(0, nRows), KOKKOS_LAMBDA(const LO i) { toCol(i) = i; });
+    toCol_ = toCol;
+    return;
+  }
 
   // Several ranks: the foreign rows' patterns go to their owners, grouped by owner.
   std::vector<GO> sent;  // per foreign row: global row id, number of columns, their global ids
   std::vector<GO> received;
   std::vector<int> patternCounts, patternOffsets, patternRecvCounts, patternRecvOffsets;
-  MPI_Comm comm = MPI_COMM_NULL;
+  const MPI_Comm comm = core::rawMpiComm(*overlap->getComm());
   const int size = overlap->getComm()->getSize();
-  if (!oneRank) {
-    comm = core::rawMpiComm(*overlap->getComm());
+  {
     std::vector<GO> foreign(static_cast<size_t>(nRows - nOwned));
     for (LO r = nOwned; r < nRows; ++r) foreign[r - nOwned] = overlap->getGlobalElement(r);
     Teuchos::Array<int> owner(foreign.size());
@@ -101,9 +124,7 @@ Q1Pattern::Q1Pattern(const mesh::Q1Mesh& mesh, int components, const RCP<const M
     const auto it = std::lower_bound(remote.begin(), remote.end(), g);
     return it != remote.end() && *it == g ? static_cast<LO>(nOwned + (it - remote.begin())) : -1;
   };
-  if (oneRank) {
-    columns_ = overlap;
-  } else {
+  {
     std::vector<GO> gids(ownedGids.begin(), ownedGids.end());
     gids.insert(gids.end(), remote.begin(), remote.end());
     columns_ = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
@@ -113,7 +134,7 @@ Q1Pattern::Q1Pattern(const mesh::Q1Mesh& mesh, int components, const RCP<const M
   // Overlap unknowns that only foreign rows couple to get columns after the column map's.
   auto toColHost = Kokkos::View<LO*, Kokkos::HostSpace>("toCol", nRows);
   for (LO u = 0; u < nRows; ++u) {
-    const LO c = oneRank ? u : columnOf(overlap->getGlobalElement(u));
+    const LO c = columnOf(overlap->getGlobalElement(u));
     toColHost(u) = c >= 0 ? c : numColumns_++;
   }
 
@@ -165,7 +186,7 @@ Q1Pattern::Q1Pattern(const mesh::Q1Mesh& mesh, int components, const RCP<const M
   Kokkos::View<LO*, DeviceType> toCol("toCol", nRows);
   Kokkos::deep_copy(toCol, toColHost);
   toCol_ = toCol;
-  if (!oneRank) importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(owned_, columns_));
+  importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(owned_, columns_));
 }
 
 Q1Pattern::Fill Q1Pattern::begin() const {

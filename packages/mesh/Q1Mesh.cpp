@@ -94,27 +94,28 @@ CornerNumbering numberOneTree(p4est_t* p4est) {
       });
   p4est_ghost_t* ghost = ghostLayer.get();
   const size_t numGhosts = ghost ? ghost->ghosts.elem_count : 0;
-  auto cell = [&](size_t e) {
-    return e < numCells ? p4est_quadrant_array_index(cells, e) : p4est_quadrant_array_index(&ghost->ghosts, e - numCells);
-  };
   CoordinateTable points(4 * (numCells + numGhosts));
-  std::vector<std::array<p4est_qcoord_t, 2>> coords;
-  coords.reserve(4 * numCells + 2 * numGhosts);
+  std::vector<std::array<p4est_qcoord_t, 2>> coords;  // of every point (several ranks)
+  if (size > 1) coords.reserve(4 * numCells + 2 * numGhosts);
+  LO numPoints = 0;
   auto point = [&](p4est_qcoord_t x, p4est_qcoord_t y) {
-    const LO next = static_cast<LO>(coords.size());
-    const LO p = points.insert(x, y, next);
-    if (p == next) coords.push_back({x, y});
+    const LO p = points.insert(x, y, numPoints);
+    if (p == numPoints) {
+      ++numPoints;
+      if (size > 1) coords.push_back({x, y});
+    }
     return p;
   };
   std::vector<LO> cornerPoint(4 * numCells);
   for (size_t e = 0; e < numCells; ++e) {
-    const auto* q = cell(e);
+    const auto* q = p4est_quadrant_array_index(cells, e);
     const p4est_qcoord_t len = P4EST_QUADRANT_LEN(q->level);
     for (int c = 0; c < 4; ++c) cornerPoint[4 * e + c] = point(q->x + ((c & 1) ? len : 0), q->y + ((c & 2) ? len : 0));
   }
-  std::vector<std::array<LO, 2>> ends(coords.size(), {-1, -1});  // a hanging point's face end points
+  std::vector<std::array<LO, 2>> ends(numPoints, {-1, -1});  // a hanging point's face end points
   for (size_t e = 0; e < numCells + numGhosts; ++e) {
-    const auto* q = cell(e);
+    const bool local = e < numCells;
+    const auto* q = local ? p4est_quadrant_array_index(cells, e) : p4est_quadrant_array_index(&ghost->ghosts, e - numCells);
     const p4est_qcoord_t len = P4EST_QUADRANT_LEN(q->level), half = len / 2;
     SIGNORINI_ASSERT(half > 0, "cell at p4est's finest level");
     const p4est_qcoord_t mid[4][2] = {{q->x, q->y + half}, {q->x + len, q->y + half}, {q->x + half, q->y},
@@ -125,16 +126,15 @@ CornerNumbering numberOneTree(p4est_t* p4est) {
       std::array<LO, 2> faceEnds;
       for (int k = 0; k < 2; ++k) {  // a ghost's face ends may be new points (no local cell touches the far one)
         const int c = p4est_face_corners[f][k];
-        faceEnds[k] = point(q->x + ((c & 1) ? len : 0), q->y + ((c & 2) ? len : 0));
+        faceEnds[k] = local ? cornerPoint[4 * e + c] : point(q->x + ((c & 1) ? len : 0), q->y + ((c & 2) ? len : 0));
       }
-      ends.resize(coords.size(), {-1, -1});
+      if (ends.size() < static_cast<size_t>(numPoints)) ends.resize(numPoints, {-1, -1});
       ends[m] = faceEnds;
     }
   }
-  const LO numPoints = static_cast<LO>(coords.size());
   ends.resize(numPoints, {-1, -1});
-  // The owner of every regular point.
-  std::vector<int> owner(numPoints, rank);
+  // The owner of every regular point (several ranks).
+  std::vector<int> owner(size > 1 ? numPoints : 0, rank);
   if (size > 1)
     for (LO p = 0; p < numPoints; ++p) {
       if (ends[p][0] >= 0) continue;
@@ -146,11 +146,12 @@ CornerNumbering numberOneTree(p4est_t* p4est) {
       q.y = std::min(coords[p][1], last);
       owner[p] = p4est_comm_find_owner(p4est, 0, &q, rank);
     }
+  auto ownerOf = [&](LO p) { return size > 1 ? owner[p] : rank; };
   std::vector<LO> node(numPoints, -1);
   CornerNumbering out;
   for (size_t k = 0; k < 4 * numCells; ++k) {  // own points in first touch order
     const LO p = cornerPoint[k];
-    if (ends[p][0] < 0 && owner[p] == rank && node[p] < 0) node[p] = out.owned++;
+    if (ends[p][0] < 0 && ownerOf(p) == rank && node[p] < 0) node[p] = out.owned++;
   }
   long long first = 0, owned = out.owned;
   if (size > 1) MPI_Exscan(&owned, &first, 1, MPI_LONG_LONG, MPI_SUM, p4est->mpicomm);
