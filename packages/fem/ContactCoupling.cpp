@@ -6,8 +6,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
-#include <Tpetra_FECrsGraph.hpp>
-#include <Tpetra_FECrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -198,15 +197,14 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
     const auto key = mesh.canonicalKey(static_cast<LO>(r / nc));
     canonicalKeys_[r] = {key[0], key[1], static_cast<long long>(r % nc)};
   }
-  using Graph = Tpetra::FECrsGraph<LO, GO, Node>;
-  using FEMatrix = Tpetra::FECrsMatrix<Scalar, LO, GO, Node>;
   using LocalMatrix = CrsMatrix::local_matrix_device_type;
-  // One rank: B is summed into local CRS arrays (columns: the segments) and built from them; several
-  // ranks: a finite element matrix whose endAssembly adds the shared rows to their owners.
-  const bool oneRank = comm_->getSize() == 1;
-  RCP<FEMatrix> feB;
-  LocalMatrix localB;
-  if (oneRank) {
+  // sign int_E phi_i ds = sign |E| / 2 for both end points of a straight edge.
+  auto halfLength = [&](const mesh::BoundaryEdge& be) {
+    const double dx = be.x[1][0] - be.x[0][0], dy = be.x[1][1] - be.x[0][1];
+    return 0.5 * unknowns.sign * std::sqrt(dx * dx + dy * dy);
+  };
+  if (comm_->getSize() == 1) {
+    // B is summed into local CRS arrays (columns: the segments) and built from them.
     const size_t nRows = overlap->getNodeNumElements();
     std::vector<std::vector<LO>> segmentsOf(nRows);
     for (size_t k = 0; k < localIds.size(); ++k) {
@@ -230,60 +228,118 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
     Kokkos::deep_copy(rowPtr, rh);
     Kokkos::deep_copy(entries, eh);
     LocalMatrix::values_type values("contactValues", rh(nRows));
-    localB = LocalMatrix("contactCoupling", static_cast<LO>(nRows), m, rh(nRows), values, rowPtr, entries);
+    LocalMatrix localB("contactCoupling", static_cast<LO>(nRows), m, rh(nRows), values, rowPtr, entries);
+    const LO nLocal = static_cast<LO>(localIds.size());
+    Kokkos::View<double*, DeviceType> half("edgeHalfLength", nLocal);
+    Kokkos::View<LO* [2], DeviceType> rows("edgeRows", nLocal);
+    Kokkos::View<LO*, DeviceType> col("edgeCol", nLocal);
+    auto halfh = Kokkos::create_mirror_view(half);
+    auto rowsh = Kokkos::create_mirror_view(rows);
+    auto colh = Kokkos::create_mirror_view(col);
+    for (LO k = 0; k < nLocal; ++k) {
+      const auto& be = bedges[localIds[k]];
+      halfh(k) = halfLength(be);
+      for (int p = 0; p < 2; ++p) rowsh(k, p) = dirichlet[row(be.node[p])] ? -1 : row(be.node[p]);
+      colh(k) = localEdgeSegment_[localIds[k]];
+    }
+    Kokkos::deep_copy(half, halfh);
+    Kokkos::deep_copy(rows, rowsh);
+    Kokkos::deep_copy(col, colh);
+    Kokkos::parallel_for(
+        "signorini::assembleContactCoupling", Kokkos::RangePolicy<ExecSpace>(0, nLocal), KOKKOS_LAMBDA(const LO k) {
+          LO c = col(k);
+          double v = half(k);
+          for (int p = 0; p < 2; ++p)
+            if (rows(k, p) >= 0) localB.sumIntoValues(rows(k, p), &c, 1, &v, false, kAtomicScatter);
+        });
+    B_ = Teuchos::rcp(new CrsMatrix(localB, ownedRows, segmentMap_, segmentMap_, ownedRows, Teuchos::null, Teuchos::null));
   } else {
-    auto graph = Teuchos::rcp(new Graph(ownedRows, overlap, 4));
-    graph->beginAssembly();
+    // Several ranks: each local edge end's entry (row, segment, sign |E| / 2); those of rows this
+    // rank does not own go to their owners, once. At most two contact edges meet at a node, so an
+    // entry is the sum of at most two terms, whose bits do not depend on their order.
+    const LO nOwned = static_cast<LO>(ownedRows->getNodeNumElements());
+    std::vector<std::vector<std::pair<GO, double>>> ownedEntries(static_cast<size_t>(nOwned));
+    std::vector<GO> foreignRows;
+    std::vector<std::pair<GO, double>> foreignEntries;
     for (size_t k = 0; k < localIds.size(); ++k) {
       const auto& be = bedges[localIds[k]];
       const GO seg = localEdgeSegment_[localIds[k]];
-      for (int p = 0; p < 2; ++p)
-        if (!dirichlet[row(be.node[p])])
-          graph->insertGlobalIndices(overlap->getGlobalElement(row(be.node[p])), Teuchos::tuple(seg));
-    }
-    graph->endAssembly(segmentMap_, ownedRows);
-    feB = Teuchos::rcp(new FEMatrix(graph));
-    feB->beginAssembly();
-    localB = feB->getLocalMatrixDevice();
-  }
-  {
-    const LO ne = static_cast<LO>(localIds.size());
-    Kokkos::View<double* [2][2], DeviceType> X("edgeX", ne);
-    Kokkos::View<LO* [2], DeviceType> rows("edgeRows", ne);
-    Kokkos::View<LO*, DeviceType> col("edgeCol", ne);
-    auto Xh = Kokkos::create_mirror_view(X);
-    auto rowsh = Kokkos::create_mirror_view(rows);
-    auto colh = Kokkos::create_mirror_view(col);
-    const auto colMap = oneRank ? segmentMap_ : feB->getColMap();
-    for (LO k = 0; k < ne; ++k) {
-      const auto& be = bedges[localIds[k]];
       for (int p = 0; p < 2; ++p) {
-        Xh(k, p, 0) = be.x[p][0];
-        Xh(k, p, 1) = be.x[p][1];
-        rowsh(k, p) = dirichlet[row(be.node[p])] ? -1 : row(be.node[p]);
+        const LO r = row(be.node[p]);
+        if (dirichlet[r]) continue;
+        if (r < nOwned) {
+          ownedEntries[r].push_back({seg, halfLength(be)});
+        } else {
+          foreignRows.push_back(overlap->getGlobalElement(r));
+          foreignEntries.push_back({seg, halfLength(be)});
+        }
       }
-      colh(k) = colMap->getLocalElement(localEdgeSegment_[localIds[k]]);
     }
-    Kokkos::deep_copy(X, Xh);
-    Kokkos::deep_copy(rows, rowsh);
-    Kokkos::deep_copy(col, colh);
-    auto local = localB;
-    const double sign = unknowns.sign;
-    // sign int_E phi_i ds = sign |E| / 2 for both end points of a straight edge.
-    Kokkos::parallel_for(
-        "signorini::assembleContactCoupling", Kokkos::RangePolicy<ExecSpace>(0, ne), KOKKOS_LAMBDA(const LO k) {
-          const double dx = X(k, 1, 0) - X(k, 0, 0), dy = X(k, 1, 1) - X(k, 0, 1);
-          double half = 0.5 * sign * Kokkos::Experimental::sqrt(dx * dx + dy * dy);
-          LO c = col(k);
-          for (int p = 0; p < 2; ++p)
-            if (rows(k, p) >= 0) local.sumIntoValues(rows(k, p), &c, 1, &half, false, kAtomicScatter);
-        });
-  }
-  if (oneRank) {
-    B_ = Teuchos::rcp(new CrsMatrix(localB, ownedRows, segmentMap_, segmentMap_, ownedRows, Teuchos::null, Teuchos::null));
-  } else {
-    feB->endAssembly();
-    B_ = feB;
+    const int size = comm_->getSize();
+    Teuchos::Array<int> owner(foreignRows.size());
+    ownedRows->getRemoteIndexList(Teuchos::ArrayView<const GO>(foreignRows), owner());
+    std::vector<int> sendCounts(size, 0), recvCounts(size), sendOff(size + 1, 0), recvOff(size + 1, 0);
+    for (const int o : owner) sendCounts[o] += 3;
+    for (int r = 0; r < size; ++r) sendOff[r + 1] = sendOff[r] + sendCounts[r];
+    std::vector<double> send(static_cast<size_t>(sendOff[size]));  // row, segment (exact as doubles below 2^53), value
+    std::vector<int> fill(sendOff.begin(), sendOff.end() - 1);
+    for (size_t j = 0; j < foreignRows.size(); ++j) {
+      double* o = &send[static_cast<size_t>(fill[owner[j]])];
+      fill[owner[j]] += 3;
+      o[0] = static_cast<double>(foreignRows[j]);
+      o[1] = static_cast<double>(foreignEntries[j].first);
+      o[2] = foreignEntries[j].second;
+    }
+    const MPI_Comm raw = core::rawMpiComm(*comm_);
+    MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, raw);
+    for (int r = 0; r < size; ++r) recvOff[r + 1] = recvOff[r] + recvCounts[r];
+    std::vector<double> recv(static_cast<size_t>(recvOff[size]));
+    MPI_Alltoallv(send.data(), sendCounts.data(), sendOff.data(), MPI_DOUBLE, recv.data(), recvCounts.data(),
+                  recvOff.data(), MPI_DOUBLE, raw);
+    for (size_t j = 0; j < recv.size(); j += 3) {
+      const LO r = ownedRows->getLocalElement(static_cast<GO>(recv[j]));
+      SIGNORINI_ASSERT(r != Teuchos::OrdinalTraits<LO>::invalid(), "a contact row sent to a rank that does not own it");
+      ownedEntries[r].push_back({static_cast<GO>(recv[j + 1]), recv[j + 2]});
+    }
+    // Columns: the segments of the owned rows, by global id; each row's entries summed per segment.
+    std::vector<GO> segments;
+    for (auto& entries : ownedEntries) {
+      std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      size_t kept = 0;
+      for (size_t j = 0; j < entries.size(); ++j) {
+        if (kept > 0 && entries[kept - 1].first == entries[j].first) {
+          entries[kept - 1].second += entries[j].second;
+        } else {
+          entries[kept++] = entries[j];
+          segments.push_back(entries[j].first);
+        }
+      }
+      entries.resize(kept);
+    }
+    std::sort(segments.begin(), segments.end());
+    segments.erase(std::unique(segments.begin(), segments.end()), segments.end());
+    const auto colMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                             Teuchos::ArrayView<const GO>(segments), 0, comm_));
+    LocalMatrix::row_map_type::non_const_type rowPtr("contactRows", static_cast<size_t>(nOwned) + 1);
+    auto rh = Kokkos::create_mirror_view(rowPtr);
+    for (LO i = 0; i < nOwned; ++i) rh(i + 1) = rh(i) + ownedEntries[i].size();
+    LocalMatrix::index_type::non_const_type entries("contactColumns", rh(nOwned));
+    LocalMatrix::values_type values("contactValues", rh(nOwned));
+    auto eh = Kokkos::create_mirror_view(entries);
+    auto vh = Kokkos::create_mirror_view(values);
+    for (LO i = 0; i < nOwned; ++i)
+      for (size_t j = 0; j < ownedEntries[i].size(); ++j) {
+        eh(rh(i) + j) = static_cast<LO>(std::lower_bound(segments.begin(), segments.end(), ownedEntries[i][j].first) -
+                                        segments.begin());
+        vh(rh(i) + j) = ownedEntries[i][j].second;
+      }
+    Kokkos::deep_copy(rowPtr, rh);
+    Kokkos::deep_copy(entries, eh);
+    Kokkos::deep_copy(values, vh);
+    const LocalMatrix localB("contactCoupling", nOwned, static_cast<LO>(segments.size()), rh(nOwned), values, rowPtr,
+                             entries);
+    const auto importer = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(segmentMap_, colMap));
+    B_ = Teuchos::rcp(new CrsMatrix(localB, ownedRows, colMap, segmentMap_, ownedRows, importer, Teuchos::null));
   }
 
   // Replicated edge data for the weighted obstacle kernel.
