@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -95,29 +97,37 @@ void applyLocal(const CrsMatrix::local_matrix_device_type& matrix, const int (&c
       });
 }
 
-/// Whether applyLocal can apply \p A: one rank, the domain map as column map.
-bool appliesLocally(const CrsMatrix& A) {
-  return A.getComm()->getSize() == 1 && A.getGraph()->getImporter().is_null() &&
-         A.getGraph()->getExporter().is_null() && A.getColMap()->isSameAs(*A.getDomainMap());
+/// How the fields are applied: locally (no importer and the domain map as column map), after one
+/// import of all fields to A's column map (several ranks: Tpetra's apply imports each field by
+/// itself), or by Tpetra's apply per field (a matrix with an exporter).
+enum class ApplyPath { local, imported, tpetra };
+ApplyPath applyPath(const CrsMatrix& A) {
+  if (!A.getGraph()->getExporter().is_null()) return ApplyPath::tpetra;
+  if (!A.getGraph()->getImporter().is_null()) return ApplyPath::imported;
+  return A.getColMap()->isSameAs(*A.getDomainMap()) ? ApplyPath::local : ApplyPath::tpetra;
 }
 
-/// Y_f = A X_f for the active fields f: by applyLocal when \p local (appliesLocally(A)), otherwise
-/// by Tpetra's apply per field.
+/// Y_f = A X_f for the active fields f, along \p path (\p onColumns: NF columns on A's column map
+/// for ApplyPath::imported). Tpetra's apply imports and then applies as applyLocal does, so every
+/// path gives each field the bits of Tpetra's apply.
 template <int NF>
-void applyActive(const CrsMatrix& A, bool local, const Fields<NF>& fields, const MultiVector& X, MultiVector& Y) {
+void applyActive(const CrsMatrix& A, ApplyPath path, const Fields<NF>& fields, const MultiVector& X, MultiVector& Y,
+                 MultiVector* onColumns) {
   int columns[NF], nc = 0;
   for (int f = 0; f < NF; ++f)
     if (fields.active[f]) columns[nc++] = f;
-  if (!local) {
+  if (path == ApplyPath::tpetra) {
     for (int c = 0; c < nc; ++c) A.apply(*X.getVector(columns[c]), *Y.getVectorNonConst(columns[c]));
     return;
   }
+  if (path == ApplyPath::imported) onColumns->doImport(X, *A.getGraph()->getImporter(), Tpetra::INSERT);
+  const MultiVector& in = path == ApplyPath::imported ? *onColumns : X;
   const auto matrix = A.getLocalMatrixDevice();
-  if (nc == 1) applyLocal<1>(matrix, {columns[0]}, X, Y);
+  if (nc == 1) applyLocal<1>(matrix, {columns[0]}, in, Y);
   if constexpr (NF >= 2)
-    if (nc == 2) applyLocal<2>(matrix, {columns[0], columns[1]}, X, Y);
+    if (nc == 2) applyLocal<2>(matrix, {columns[0], columns[1]}, in, Y);
   if constexpr (NF >= 3)
-    if (nc == 3) applyLocal<3>(matrix, {columns[0], columns[1], columns[2]}, X, Y);
+    if (nc == 3) applyLocal<3>(matrix, {columns[0], columns[1], columns[2]}, in, Y);
   static_assert(NF <= 3, "applyActive dispatches up to three fields");
 }
 
@@ -134,10 +144,12 @@ std::vector<int> solveGroup(const CrsMatrix& A, const std::vector<const Vector*>
     B.getVectorNonConst(f)->assign(*b[f]);
   }
   A.getLocalDiagCopy(inverseDiagonal);
-  const bool local = appliesLocally(A);
+  const ApplyPath path = applyPath(A);
+  std::unique_ptr<MultiVector> onColumns;
+  if (path == ApplyPath::imported) onColumns = std::make_unique<MultiVector>(A.getColMap(), NF, false);
   Fields<NF> fields;
   for (int f = 0; f < NF; ++f) fields.active[f] = true;
-  applyActive(A, local, fields, X, Q);
+  applyActive(A, path, fields, X, Q, onColumns.get());
   double start[2 * NF] = {};  // per field ||b||^2, r.z
   {
     auto bv = B.getLocalViewDevice(Tpetra::Access::ReadOnly);
@@ -178,7 +190,7 @@ std::vector<int> solveGroup(const CrsMatrix& A, const std::vector<const Vector*>
   }
   auto dv = inverseDiagonal.getLocalViewDevice(Tpetra::Access::ReadOnly);
   for (int it = 1; it <= maxIterations && active > 0; ++it) {
-    applyActive(A, local, fields, P, Q);
+    applyActive(A, path, fields, P, Q, onColumns.get());
     double pq[2 * NF] = {};
     {
       auto pv = P.getLocalViewDevice(Tpetra::Access::ReadOnly);
