@@ -64,7 +64,7 @@ ElasticityAssembler::ElasticityAssembler(const mesh::Q1Mesh& mesh, std::vector<c
   dirichletView_ = deviceFlags(dirichlet_, dirichlet_.size(), "dirichlet");
   importer_ = Teuchos::rcp(new Tpetra::Import<LO, GO, Node>(ownedMap_, overlapMap_));
   exporter_ = Teuchos::rcp(new Tpetra::Export<LO, GO, Node>(*importer_));
-  pattern_ = std::make_unique<Q1Pattern>(mesh, 2, ownedMap_, overlapMap_, importer_);
+  pattern_ = std::make_unique<Q1Pattern>(mesh, 2, ownedMap_, overlapMap_);
 }
 
 ElasticityAssembler::~ElasticityAssembler() = default;

@@ -30,7 +30,7 @@ Q1Assembler::Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet)
   // Unknowns are nodes: the mesh's transfers serve the loads too.
   importer_ = Teuchos::rcpFromRef(mesh.ownedToOverlap());
   exporter_ = Teuchos::rcpFromRef(mesh.overlapToOwned());
-  pattern_ = std::make_unique<Q1Pattern>(mesh, 1, mesh.ownedMap(), overlap, importer_);
+  pattern_ = std::make_unique<Q1Pattern>(mesh, 1, mesh.ownedMap(), overlap);
 }
 
 Q1Assembler::~Q1Assembler() = default;

@@ -17,7 +17,7 @@ namespace signorini::fem {
 static_assert(std::is_same_v<GO, long long>, "the global ids travel as MPI_LONG_LONG");
 
 Q1Pattern::Q1Pattern(const mesh::Q1Mesh& mesh, int components, const RCP<const Map>& owned,
-                     const RCP<const Map>& overlap, const RCP<const Tpetra::Import<LO, GO, Node>>&)
+                     const RCP<const Map>& overlap)
     : owned_(owned), overlap_(overlap) {
   const int C = components;
   const LO nRows = static_cast<LO>(overlap->getNodeNumElements());

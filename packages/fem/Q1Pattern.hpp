@@ -30,9 +30,9 @@ class Q1Pattern {
  public:
   using LocalMatrix = CrsMatrix::local_matrix_device_type;
 
-  /// \p ownedToOverlap (owned -> overlap) is not needed: kept for the callers' symmetry.
-  Q1Pattern(const mesh::Q1Mesh& mesh, int components, const RCP<const Map>& owned, const RCP<const Map>& overlap,
-            const RCP<const Tpetra::Import<LO, GO, Node>>& ownedToOverlap);
+  /// \p owned and \p overlap: the assembler's maps of unknowns (owned first in the overlap order;
+  /// on one rank the same). Collective.
+  Q1Pattern(const mesh::Q1Mesh& mesh, int components, const RCP<const Map>& owned, const RCP<const Map>& overlap);
 
   /// A matrix being assembled: its kernels sum into local's values (row: overlap unknown; column:
   /// toColumn() of the overlap unknown).
