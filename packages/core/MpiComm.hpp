@@ -52,4 +52,29 @@ std::vector<T> allGatherv(MPI_Comm comm, const std::vector<T>& mine) {
   return all;
 }
 
+/// What a rank receives in exchange(): the values of all ranks, by source rank, rank r's at
+/// [offsets[r], offsets[r + 1]).
+template <class T>
+struct Exchanged {
+  std::vector<T> values;
+  std::vector<int> offsets;
+};
+
+/// All-to-all exchange: send[sendOffsets[r] .. sendOffsets[r + 1]) goes to rank r (\p sendOffsets:
+/// one entry per rank and the end, in values). Collective: the counts first, then the values.
+template <class T>
+Exchanged<T> exchange(MPI_Comm comm, const std::vector<T>& send, const std::vector<int>& sendOffsets) {
+  const int size = static_cast<int>(sendOffsets.size()) - 1;
+  std::vector<int> sendCounts(size), recvCounts(size);
+  for (int r = 0; r < size; ++r) sendCounts[r] = sendOffsets[r + 1] - sendOffsets[r];
+  MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, comm);
+  Exchanged<T> got;
+  got.offsets.assign(size + 1, 0);
+  for (int r = 0; r < size; ++r) got.offsets[r + 1] = got.offsets[r] + recvCounts[r];
+  got.values.resize(static_cast<size_t>(got.offsets[size]));
+  MPI_Alltoallv(send.data(), sendCounts.data(), sendOffsets.data(), mpiType<T>(), got.values.data(), recvCounts.data(),
+                got.offsets.data(), mpiType<T>(), comm);
+  return got;
+}
+
 }  // namespace signorini::core

@@ -278,9 +278,9 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
     const int size = comm_->getSize();
     Teuchos::Array<int> owner(foreignRows.size());
     ownedRows->getRemoteIndexList(Teuchos::ArrayView<const GO>(foreignRows), owner());
-    std::vector<int> sendCounts(size, 0), recvCounts(size), sendOff(size + 1, 0), recvOff(size + 1, 0);
-    for (const int o : owner) sendCounts[o] += 3;
-    for (int r = 0; r < size; ++r) sendOff[r + 1] = sendOff[r] + sendCounts[r];
+    std::vector<int> sendOff(size + 1, 0);
+    for (const int o : owner) sendOff[o + 1] += 3;
+    for (int r = 0; r < size; ++r) sendOff[r + 1] += sendOff[r];
     std::vector<double> send(static_cast<size_t>(sendOff[size]));  // row, segment (exact as doubles below 2^53), value
     std::vector<int> fill(sendOff.begin(), sendOff.end() - 1);
     for (size_t j = 0; j < foreignRows.size(); ++j) {
@@ -290,12 +290,7 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
       o[1] = static_cast<double>(foreignEntries[j].first);
       o[2] = foreignEntries[j].second;
     }
-    const MPI_Comm raw = core::rawMpiComm(*comm_);
-    MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, raw);
-    for (int r = 0; r < size; ++r) recvOff[r + 1] = recvOff[r] + recvCounts[r];
-    std::vector<double> recv(static_cast<size_t>(recvOff[size]));
-    MPI_Alltoallv(send.data(), sendCounts.data(), sendOff.data(), MPI_DOUBLE, recv.data(), recvCounts.data(),
-                  recvOff.data(), MPI_DOUBLE, raw);
+    const std::vector<double> recv = core::exchange(core::rawMpiComm(*comm_), send, sendOff).values;
     for (size_t j = 0; j < recv.size(); j += 3) {
       const LO r = ownedRows->getLocalElement(static_cast<GO>(recv[j]));
       SIGNORINI_ASSERT(r != Teuchos::OrdinalTraits<LO>::invalid(), "a contact row sent to a rank that does not own it");

@@ -60,7 +60,6 @@ Q1Pattern::Q1Pattern(const mesh::Q1Mesh& mesh, int components, const RCP<const M
   // Several ranks: the foreign rows' patterns go to their owners, grouped by owner.
   std::vector<GO> sent;  // per foreign row: global row id, number of columns, their global ids
   std::vector<GO> received;
-  std::vector<int> patternCounts, patternOffsets, patternRecvCounts, patternRecvOffsets;
   const MPI_Comm comm = core::rawMpiComm(*overlap->getComm());
   const int size = overlap->getComm()->getSize();
   {
@@ -71,8 +70,8 @@ Q1Pattern::Q1Pattern(const mesh::Q1Mesh& mesh, int components, const RCP<const M
     sendRows_.resize(foreign.size());
     std::iota(sendRows_.begin(), sendRows_.end(), nOwned);
     std::stable_sort(sendRows_.begin(), sendRows_.end(), [&](LO a, LO b) { return owner[a - nOwned] < owner[b - nOwned]; });
-    sendCounts_.assign(size, 0);
-    patternCounts.assign(size, 0);
+    sendOffsets_.assign(size + 1, 0);
+    std::vector<int> patternOffsets(size + 1, 0);
     for (const LO r : sendRows_) {
       const int to = owner[r - nOwned];
       SIGNORINI_ASSERT(to >= 0 && to != overlap->getComm()->getRank(), "a foreign row without another owner");
@@ -81,30 +80,21 @@ Q1Pattern::Q1Pattern(const mesh::Q1Mesh& mesh, int components, const RCP<const M
       sent.push_back(0);
       forEachColumn(r, [&](LO u) { sent.push_back(overlap->getGlobalElement(u)); });
       sent[countAt] = static_cast<GO>(sent.size() - countAt - 1);
-      sendCounts_[to] += static_cast<int>(sent[countAt]);
-      patternCounts[to] += static_cast<int>(sent[countAt]) + 2;
+      sendOffsets_[to + 1] += static_cast<int>(sent[countAt]);
+      patternOffsets[to + 1] += static_cast<int>(sent[countAt]) + 2;
     }
-    auto offsets = [&](const std::vector<int>& counts) {
-      std::vector<int> o(size + 1, 0);
-      for (int r = 0; r < size; ++r) o[r + 1] = o[r] + counts[r];
-      return o;
-    };
-    patternRecvCounts.resize(size);
-    MPI_Alltoall(patternCounts.data(), 1, MPI_INT, patternRecvCounts.data(), 1, MPI_INT, comm);
-    patternOffsets = offsets(patternCounts);
-    patternRecvOffsets = offsets(patternRecvCounts);
-    received.resize(static_cast<size_t>(patternRecvOffsets[size]));
-    MPI_Alltoallv(sent.data(), patternCounts.data(), patternOffsets.data(), MPI_LONG_LONG, received.data(),
-                  patternRecvCounts.data(), patternRecvOffsets.data(), MPI_LONG_LONG, comm);
-    recvCounts_.assign(size, 0);
+    for (int r = 0; r < size; ++r) sendOffsets_[r + 1] += sendOffsets_[r], patternOffsets[r + 1] += patternOffsets[r];
+    auto got = core::exchange(comm, sent, patternOffsets);
+    received = std::move(got.values);
+    recvOffsets_.assign(size + 1, 0);  // in values: the received rows' column counts
+    for (int r = 0; r < size; ++r) {
+      recvOffsets_[r + 1] = recvOffsets_[r];
+      for (int j = got.offsets[r]; j < got.offsets[r + 1]; j += static_cast<int>(received[j + 1]) + 2)
+        recvOffsets_[r + 1] += static_cast<int>(received[j + 1]);
+    }
+    sendCounts_.resize(size), recvCounts_.resize(size);
     for (int r = 0; r < size; ++r)
-      for (int j = patternRecvOffsets[r]; j < patternRecvOffsets[r + 1];) {
-        const int n = static_cast<int>(received[j + 1]);
-        recvCounts_[r] += n;
-        j += n + 2;
-      }
-    sendOffsets_ = offsets(sendCounts_);
-    recvOffsets_ = offsets(recvCounts_);
+      sendCounts_[r] = sendOffsets_[r + 1] - sendOffsets_[r], recvCounts_[r] = recvOffsets_[r + 1] - recvOffsets_[r];
   }
 
   // The column map: the owned unknowns, then every other unknown the owned rows couple to, by global id.

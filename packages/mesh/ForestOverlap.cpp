@@ -6,6 +6,7 @@
 
 #include "Error.hpp"
 #include "Morton.hpp"
+#include "MpiComm.hpp"
 
 namespace signorini::mesh {
 namespace {
@@ -55,9 +56,9 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
       }
     }
   };
-  std::vector<int> sendCounts(size, 0), recvCounts(size), sendOff(size + 1, 0), recvOff(size + 1, 0);
-  forEachDestination([&](int r, p4est_topidx_t, const p4est_quadrant_t&, int) { sendCounts[r] += record; });
-  for (int r = 0; r < size; ++r) sendOff[r + 1] = sendOff[r] + sendCounts[r];
+  std::vector<int> sendOff(size + 1, 0);
+  forEachDestination([&](int r, p4est_topidx_t, const p4est_quadrant_t&, int) { sendOff[r + 1] += record; });
+  for (int r = 0; r < size; ++r) sendOff[r + 1] += sendOff[r];
   std::vector<double> sendBuf(static_cast<size_t>(sendOff[size]));
   std::vector<int> fill(sendOff.begin(), sendOff.end() - 1);
   // On one rank the records are received as packed: their keys come from the quadrants directly.
@@ -79,11 +80,7 @@ ForestOverlap::ForestOverlap(const Forest& source, const Forest& target, const s
   if (size == 1) {
     buffer_ = std::move(sendBuf);
   } else {
-    MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, comm);
-    for (int r = 0; r < size; ++r) recvOff[r + 1] = recvOff[r] + recvCounts[r];
-    buffer_.resize(static_cast<size_t>(recvOff[size]));
-    MPI_Alltoallv(sendBuf.data(), sendCounts.data(), sendOff.data(), MPI_DOUBLE, buffer_.data(), recvCounts.data(),
-                  recvOff.data(), MPI_DOUBLE, comm);
+    buffer_ = core::exchange(comm, sendBuf, sendOff).values;
   }
 
   // Sort by position (the records stay where they are; the payload pointers point into them).

@@ -16,6 +16,7 @@
 
 #include "CoordinateTable.hpp"
 #include "Error.hpp"
+#include "MpiComm.hpp"
 
 namespace signorini::mesh {
 
@@ -87,7 +88,8 @@ CornerNumbering numberOneTree(p4est_t* p4est) {
   const int size = p4est->mpisize, rank = p4est->mpirank;
   const size_t numCells = static_cast<size_t>(p4est->local_num_quadrants);
   sc_array_t* cells = numCells > 0 ? &p4est_tree_array_index(p4est->trees, 0)->quadrants : nullptr;
-  static_assert(std::is_same_v<GO, long long>, "the global ids travel as MPI_LONG_LONG");
+  static_assert(std::is_same_v<GO, long long> && std::is_same_v<p4est_qcoord_t, int>,
+                "the exchange sends global ids as long long and coordinates as int");
   const std::unique_ptr<p4est_ghost_t, void (*)(p4est_ghost_t*)> ghostLayer(
       size > 1 ? p4est_ghost_new(p4est, P4EST_CONNECT_FACE) : nullptr, [](p4est_ghost_t* g) {
         if (g) p4est_ghost_destroy(g);
@@ -159,29 +161,26 @@ CornerNumbering numberOneTree(p4est_t* p4est) {
   out.gids.resize(out.owned);
   for (LO i = 0; i < out.owned; ++i) out.gids[i] = static_cast<GO>(first + i);
   if (size > 1) {  // the global ids of the other regular points, from their owners
-    std::vector<int> sendCounts(size, 0), recvCounts(size), sendOff(size + 1, 0), recvOff(size + 1, 0);
-    std::vector<LO> asked;  // points in the order of the requests
+    std::vector<int> sendOff(size + 1, 0);  // in points
+    std::vector<LO> asked;                   // points in the order of the requests
     for (LO p = 0; p < numPoints; ++p)
-      if (ends[p][0] < 0 && owner[p] != rank) sendCounts[owner[p]] += 2, asked.push_back(p);
+      if (ends[p][0] < 0 && owner[p] != rank) ++sendOff[owner[p] + 1], asked.push_back(p);
     std::stable_sort(asked.begin(), asked.end(), [&](LO a, LO b) { return owner[a] < owner[b]; });
-    for (int r = 0; r < size; ++r) sendOff[r + 1] = sendOff[r] + sendCounts[r];
-    std::vector<p4est_qcoord_t> request(static_cast<size_t>(sendOff[size]));
+    for (int r = 0; r < size; ++r) sendOff[r + 1] += sendOff[r];
+    std::vector<int> coordinateOff(sendOff);
+    for (int& o : coordinateOff) o *= 2;
+    std::vector<p4est_qcoord_t> request(2 * asked.size());
     for (size_t j = 0; j < asked.size(); ++j) request[2 * j] = coords[asked[j]][0], request[2 * j + 1] = coords[asked[j]][1];
-    MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, p4est->mpicomm);
-    for (int r = 0; r < size; ++r) recvOff[r + 1] = recvOff[r] + recvCounts[r];
-    std::vector<p4est_qcoord_t> received(static_cast<size_t>(recvOff[size]));
-    MPI_Alltoallv(request.data(), sendCounts.data(), sendOff.data(), P4EST_MPI_QCOORD, received.data(),
-                  recvCounts.data(), recvOff.data(), P4EST_MPI_QCOORD, p4est->mpicomm);
-    std::vector<long long> answer(received.size() / 2), reply(asked.size());
+    const auto received = core::exchange(p4est->mpicomm, request, coordinateOff);
+    std::vector<long long> answer(received.values.size() / 2);
     for (size_t j = 0; j < answer.size(); ++j) {
-      const LO p = points.find(received[2 * j], received[2 * j + 1]);
+      const LO p = points.find(received.values[2 * j], received.values[2 * j + 1]);
       SIGNORINI_ASSERT(p >= 0 && node[p] >= 0, "a rank asked for a point this rank does not own");
       answer[j] = first + node[p];
     }
-    for (int r = 0; r <= size; ++r) sendOff[r] /= 2, recvOff[r] /= 2;
-    for (int r = 0; r < size; ++r) sendCounts[r] /= 2, recvCounts[r] /= 2;
-    MPI_Alltoallv(answer.data(), recvCounts.data(), recvOff.data(), MPI_LONG_LONG, reply.data(), sendCounts.data(),
-                  sendOff.data(), MPI_LONG_LONG, p4est->mpicomm);
+    std::vector<int> answerOff(received.offsets);
+    for (int& o : answerOff) o /= 2;
+    const std::vector<long long> reply = core::exchange(p4est->mpicomm, answer, answerOff).values;  // in request order
     std::vector<size_t> byGid(asked.size());  // the other points follow the own ones in global order
     for (size_t j = 0; j < asked.size(); ++j) byGid[j] = j;
     std::sort(byGid.begin(), byGid.end(), [&](size_t a, size_t b) { return reply[a] < reply[b]; });
