@@ -152,7 +152,7 @@ core::ParameterList Simulation::getValidParameters() {
   core::ParameterList parallel("Parallel");
   core::addBool(parallel, "Reproducible Arithmetic", false,
                 "Order every sum so that the results have the same bits on any number of ranks (docs/reproducibility.md; "
-                "scalar problems with the Jacobi preconditioner; the paper deck takes about 1.2 times as long)");
+                "scalar problems with the Jacobi preconditioner; the paper deck takes about 1.1 times as long)");
   p.set("Parallel", parallel, "How the work is shared between MPI ranks");
   return p;
 }
