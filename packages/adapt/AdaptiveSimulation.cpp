@@ -15,6 +15,7 @@
 #include "CsvWriter.hpp"
 #include "Error.hpp"
 #include "MpiComm.hpp"
+#include "OutputStaging.hpp"
 #include "JacobiCG.hpp"
 #include "Marking.hpp"
 #include "PhaseTimers.hpp"
@@ -26,20 +27,30 @@
 namespace signorini::adapt {
 namespace {
 
+/// Whether \p suffix is ".<digits>" followed by nothing else.
+bool isNumberSuffix(const std::string& suffix) {
+  return suffix.size() > 1 && suffix[0] == '.' &&
+         std::all_of(suffix.begin() + 1, suffix.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
+/// Whether the file \p path is an Exodus file of a series ("<name>.e" or "<name>.e-s.<digits>";
+/// only the file name counts, not the directories).
 bool isExodusFile(const std::string& path) {
-  return (path.size() > 2 && path.compare(path.size() - 2, 2, ".e") == 0) || path.find(".e-s.") != std::string::npos;
+  const std::string name = std::filesystem::path(path).filename().string();
+  if (name.size() > 2 && name.compare(name.size() - 2, 2, ".e") == 0) return true;
+  const auto series = name.rfind(".e-s.");
+  return series != std::string::npos && isNumberSuffix(name.substr(series + 4));
 }
 
 /// The files of the cycle that turned out to be the last (a stopping criterion other than the
-/// number of cycles), written as "<cycleBase>.<rest>", renamed to "<finalBase>.<rest>" like the
-/// files of a run that ends after its planned cycles. Each rename replaces its target at once; the
-/// tail of an older series under the final name is removed first so ParaView does not mix it in.
-/// The files live on rank 0 (the writing rank); a failure there is reported on every rank of \p comm.
+/// number of cycles), written as "<cycleBase>.<rest>", published as "<finalBase>.<rest>" like the
+/// files of a run that ends after its planned cycles (io::republish; the tail of an older series
+/// under the final name is retired so ParaView does not mix it in). The files live on rank 0 (the
+/// writing rank); a failure there is reported on every rank of \p comm.
 std::vector<std::string> promoteToFinalName(const std::vector<std::string>& files, const std::string& cycleBase,
                                             const std::string& finalBase, const Comm& comm) {
   std::vector<std::string> renamed;
   core::onRootCollectively(comm, [&] {
-    std::string error;
     if (std::any_of(files.begin(), files.end(), isExodusFile)) io::removeExodusSeriesTail(finalBase);
     for (const auto& f : files) {
       if (f.compare(0, cycleBase.size() + 1, cycleBase + ".") != 0) {
@@ -47,12 +58,9 @@ std::vector<std::string> promoteToFinalName(const std::vector<std::string>& file
         continue;
       }
       const std::string target = finalBase + f.substr(cycleBase.size());
-      std::error_code ec;
-      std::filesystem::rename(f, target, ec);
-      if (ec && error.empty()) error = "cannot rename '" + f + "' to '" + target + "': " + ec.message();
+      io::republish(f, target);
       renamed.push_back(target);
     }
-    if (!error.empty()) SIGNORINI_USER_ERROR("Output/Directory: " << error);
   });
   return renamed;
 }
@@ -87,7 +95,7 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
   core::addBool(a, "Report Transfer Energy", true,
                 "Step tables gain kinetic_energy, energy_transferred and kinetic_energy_transferred: the energies of "
                 "I_h u^{n-1}, I_h v^{n-1} on the mesh of step n (the transfer's effect; costs one more projected "
-                "field, I_h v (I_h a when Alpha = 1), per mesh change)");
+                "field, I_h v (I_h a when Alpha >= 1), per mesh change)");
   core::addBool(a, "Compact Meshes", true,
                 "Store each step's mesh between its uses as the levels of its cells in curve order (1 byte per cell) "
                 "instead of a p4est forest (about 35 bytes per cell); a step expands it when it needs it");
@@ -206,6 +214,11 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   estimate::ElasticityEstimator elasticityEstimator(deck_.sublist("Estimator"));
   const std::string base = sim_->outputBase();
 
+  // The run's files appear together when it has succeeded, replacing every file an earlier run
+  // left under this base (also cycle tables and series it does not write again); a failed run
+  // leaves the earlier files as they were.
+  io::OutputStaging staging;
+  io::retireOnCommit(base, io::isRunOutputSuffix);
   std::unique_ptr<io::CsvWriter> cyclesCsv;
   core::onRootCollectively(*comm, [&] {
     cyclesCsv = std::make_unique<io::CsvWriter>(
@@ -346,14 +359,15 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       }
       if (mayStopEarly && !writeAll && !lastPlanned)  // written in case it was the last: it was not
         for (const auto& f : last.files)
-          if (isExodusFile(f)) std::remove(f.c_str());
+          if (isExodusFile(f)) io::unpublish(f);
     }
     core::onRootCollectively(*comm, [&] {
       if (cyclesCsv) cyclesCsv->commit();
+      staging.commit();
     });
   } catch (...) {
     if (cyclesCsv) cyclesCsv->remove();
-    for (const auto& f : written) std::remove(f.c_str());
+    for (const auto& f : written) io::unpublish(f);
     throw;
   }
   if (cyclesCsv) last.files.push_back(cyclesCsv->path());

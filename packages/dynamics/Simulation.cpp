@@ -20,6 +20,7 @@
 #include "ContactCoupling.hpp"
 #include "ContactQP.hpp"
 #include "CsvWriter.hpp"
+#include "OutputStaging.hpp"
 #include "Error.hpp"
 #include "Forest.hpp"
 #include "JacobiCG.hpp"
@@ -523,8 +524,14 @@ void Simulation::checkMeshFits(double globalCells, const std::string& cause, dou
 }
 
 RunSummary Simulation::run() {
+  // The run's files appear when it has succeeded and replace every file an earlier run left under
+  // this base; a failed run leaves them as they were (io::OutputStaging).
+  io::OutputStaging staging;
+  io::retireOnCommit(outputBase(), io::isRunOutputSuffix);
   std::vector<std::shared_ptr<mesh::Forest>> meshes(numSteps(), impl_->initialForest);
-  return runPass(meshes, StepHook(), PassOptions());
+  auto summary = runPass(meshes, StepHook(), PassOptions());
+  core::onRootCollectively(*impl_->comm, [&] { staging.commit(); });
+  return summary;
 }
 
 RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>& meshes, const StepHook& hook,

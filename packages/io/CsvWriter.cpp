@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "Error.hpp"
+#include "OutputStaging.hpp"
 
 namespace signorini::io {
 
@@ -32,13 +33,12 @@ void CsvWriter::row(const std::vector<double>& values) {
 void CsvWriter::commit() {
   if (done_) return;
   out_.close();
-  if (std::rename((path_ + ".part").c_str(), path_.c_str()) != 0)
-    SIGNORINI_USER_ERROR("cannot rename '" << path_ << ".part' to '" << path_ << "'");
+  publish(path_ + ".part", path_);
   done_ = committed_ = true;
 }
 
 void CsvWriter::remove() {
-  if (committed_) std::remove(path_.c_str());
+  if (committed_) unpublish(path_);
   abandon();
 }
 

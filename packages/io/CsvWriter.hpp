@@ -19,7 +19,8 @@ class CsvWriter {
 
   /// One row; values.size() must equal the number of columns. Doubles at full precision.
   void row(const std::vector<double>& values);
-  /// Renames "<path>.part" to path.
+  /// Publishes "<path>.part" as path (io::publish: at once, or at the commit of the run's
+  /// io::OutputStaging).
   void commit();
   /// Removes the temporary file.
   void abandon();

@@ -3,6 +3,7 @@
 #include "ExodusMesh.hpp"
 
 #include "Error.hpp"
+#include "OutputStaging.hpp"
 
 #include <exodusII.h>
 
@@ -229,21 +230,12 @@ QuadMesh readExodusQuadMesh(const std::string& path) {
 // ---------------------------------------------------------------------------------------------
 
 void removeExodusSeriesTail(const std::string& basePath) {
-  const fs::path base(basePath);
-  const fs::path directory = base.has_parent_path() ? base.parent_path() : fs::path(".");
-  const std::string stem = base.filename().string() + ".e-s.";
-  std::error_code ec;
-  fs::directory_iterator it(directory, ec), end;
-  std::vector<fs::path> stale;
-  for (; !ec && it != end; it.increment(ec)) {
-    const std::string name = it->path().filename().string();
-    if (name.size() > stem.size() && name.compare(0, stem.size(), stem) == 0 &&
-        std::all_of(name.begin() + static_cast<long>(stem.size()), name.end(),
-                    [](unsigned char c) { return std::isdigit(c) != 0; })) {
-      stale.push_back(it->path());
-    }
-  }
-  for (const auto& file : stale) fs::remove(file, ec);
+  retireOnCommit(basePath, [](const std::string& suffix) {
+    const std::string series = ".e-s.";
+    return suffix.size() > series.size() && suffix.compare(0, series.size(), series) == 0 &&
+           std::all_of(suffix.begin() + static_cast<long>(series.size()), suffix.end(),
+                       [](unsigned char c) { return std::isdigit(c) != 0; });
+  });
 }
 
 namespace {
@@ -371,19 +363,13 @@ struct ExodusSeriesWriter::Impl {
     }
   }
 
-  /// Closes the current file and gives it its final name.
+  /// Closes the current file and publishes it under its final name (io::publish).
   void finishFile() {
     if (exoid < 0) return;
     const int status = ex_close(exoid);
     exoid = -1;
     checkExodus(status, "ex_close", partPath);
-    std::error_code ec;
-    fs::rename(partPath, finalPath, ec);
-    if (ec) {
-      SIGNORINI_USER_ERROR("cannot rename Exodus II output file '" << partPath << "' to '"
-                                                                  << finalPath
-                                                                  << "': " << ec.message());
-    }
+    publish(partPath, finalPath);
     writtenFiles.push_back(finalPath);
   }
 
@@ -523,8 +509,7 @@ void ExodusSeriesWriter::abandon() {
   impl_->finished = true;
   silenceExodus();
   impl_->dropFile();
-  std::error_code ec;
-  for (const auto& f : impl_->writtenFiles) fs::remove(f, ec);
+  for (const auto& f : impl_->writtenFiles) unpublish(f);
   impl_->writtenFiles.clear();
 }
 

@@ -28,7 +28,9 @@ struct QuadMesh {
 QuadMesh readExodusQuadMesh(const std::string& path);
 
 /// Removes the files "<basePath>.e-s.<digits>" (the tail of a series written earlier with this
-/// base), so that ParaView does not group them with a new series; missing files are no error.
+/// base) that the run does not write again, so that ParaView does not group them with a new
+/// series: at once, or when the run's io::OutputStaging commits (io::retireOnCommit); missing
+/// files are no error.
 void removeExodusSeriesTail(const std::string& basePath);
 
 /// Writes a time series of results in Exodus II that ParaView opens as one series even

@@ -67,7 +67,7 @@ core::ParameterList ContactQP::getValidParameters() {
   core::addInt(p, "Cached Columns", 256, "At most this many cached columns per mesh (memory: one vector each)", 1);
   core::addChoice(p, "Boundary Mass", "consistent",
                   "Mass matrix on the contact boundary: consistent (the paper), or lumped at the nodes of Gamma_C "
-                  "(removes the chattering of impacting nodes, DESIGN 1.6)",
+                  "(does not remove the chattering of impacting nodes, DESIGN 1.6: see Time Integration/Contact Stabilisation)",
                   {"consistent", "lumped"});
   core::addChoice(p, "Schur Preconditioner", "auto",
                   "Preconditioner of CG on Q_AA: B^T A_s^{-1} B with A on a strip along Gamma_C (factored once per "

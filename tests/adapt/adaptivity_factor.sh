@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Paper Example 6.1: the adaptive run with a 10% fixed fraction (inputs/membrane-fraction10.xml) must reach
 # the estimate of the finest uniform cycle (inputs/membrane-uniform.xml) with at least 10 times fewer total
-# unknowns (the paper: "nearly a factor of 10"). The two runs go side by side (about a minute on 2 cores).
+# unknowns (the paper: "nearly a factor of 10"). The two runs go side by side (about 20 s on 2 cores).
 # Usage: adaptivity_factor.sh SIGNORINI SOURCE_DIR WORK_DIR
 set -euo pipefail
 signorini=$1 src=$2 work=$3

@@ -1,11 +1,14 @@
 # run_bad_deck.cmake: runs the signorini driver on NP MPI ranks and checks how it ends.
 #   cmake -DSIGNORINI=... -DMPIEXEC=... -DNP=2 -DWORK_DIR=... -DWRAPPER=.../rank_status.sh
 #         -DARGS='--output-dir|{OUT}|deck.xml' -DEXPECT_EXIT=1 -DEXPECT_REGEX='re1<AND>re2'
-#         [-DEXPECT_FILES='a.steps.csv|a.e'] [-DBLOCK='a.e|a.cycles.csv'] [-DTIMEOUT=50] -P run_bad_deck.cmake
+#         [-DEXPECT_FILES='a.steps.csv|a.e'] [-DBLOCK='a.e|a.cycles.csv'] [-DSEED='a.e|a.e-s.0003']
+#         [-DUNCHANGED='a.e'] [-DTIMEOUT=50] -P run_bad_deck.cmake
 #
 # 1. Makes a fresh, empty output directory WORK_DIR/out ("{OUT}" in ARGS; also the working
 #    directory of the run, so that output written to "." is caught too).
 #    BLOCK names directories made in it first, to take output names (they are not outputs).
+#    SEED names files made in it first, as an earlier run would have left them (each holds
+#    "seeded <name>"); UNCHANGED names those of them that must still hold exactly that afterwards.
 # 2. Runs `MPIEXEC --oversubscribe --allow-run-as-root -np NP rank_status.sh STATUS_DIR SIGNORINI ARGS`
 #    (ARGS separated by "|"); rank_status.sh records the exit status of every rank.
 # 3. Checks that EVERY rank exited with EXPECT_EXIT (a crash gives 134/139, a killed or hung
@@ -34,6 +37,16 @@ if(NOT "${BLOCK}" STREQUAL "")
   string(REPLACE "|" ";" blocked "${BLOCK}")
   foreach(b IN LISTS blocked)
     file(MAKE_DIRECTORY "${out_dir}/${b}")
+  endforeach()
+endif()
+
+set(seeded "")
+if(NOT "${SEED}" STREQUAL "")
+  string(REPLACE "|" ";" seeded "${SEED}")
+  foreach(f IN LISTS seeded)
+    get_filename_component(d "${out_dir}/${f}" DIRECTORY)
+    file(MAKE_DIRECTORY "${d}")
+    file(WRITE "${out_dir}/${f}" "seeded ${f}\n")
   endforeach()
 endif()
 
@@ -101,6 +114,21 @@ foreach(re "terminate called" "Process received signal" "Segmentation fault" "MP
   endif()
 endforeach()
 
+# Files of an earlier run that must be left as they were.
+if(NOT "${UNCHANGED}" STREQUAL "")
+  string(REPLACE "|" ";" unchanged "${UNCHANGED}")
+  foreach(f IN LISTS unchanged)
+    if(NOT EXISTS "${out_dir}/${f}")
+      fail("the earlier run's file '${f}' is gone")
+    else()
+      file(READ "${out_dir}/${f}" content)
+      if(NOT content STREQUAL "seeded ${f}\n")
+        fail("the earlier run's file '${f}' was overwritten")
+      endif()
+    endif()
+  endforeach()
+endif()
+
 # The output directory: exactly the expected files, nothing else.
 set(expected "")
 if(NOT "${EXPECT_FILES}" STREQUAL "")
@@ -118,9 +146,17 @@ foreach(f IN LISTS expected)
     endif()
   endif()
 endforeach()
+set(folders "")  # the folders of expected files are expected too
+foreach(f IN LISTS expected)
+  get_filename_component(d "${f}" DIRECTORY)
+  while(NOT "${d}" STREQUAL "")
+    list(APPEND folders "${d}")
+    get_filename_component(d "${d}" DIRECTORY)
+  endwhile()
+endforeach()
 set(unexpected "")
 foreach(f IN LISTS found)
-  if(NOT f IN_LIST expected AND NOT f IN_LIST blocked)
+  if(NOT f IN_LIST expected AND NOT f IN_LIST blocked AND NOT f IN_LIST folders)
     list(APPEND unexpected "${f}")
   endif()
 endforeach()

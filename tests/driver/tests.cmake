@@ -7,12 +7,15 @@ set(SIGNORINI_DRIVER_TEST_DIR ${CMAKE_CURRENT_LIST_DIR})
 set(SIGNORINI_DRIVER_DECKS ${CMAKE_CURRENT_LIST_DIR}/decks)
 
 # signorini_add_driver_test(NAME EXIT <status>|nonzero ARGS <signorini args>...
-#                           [REGEX <re>...] [FILES <file>...] [BLOCK <name>...] [NP n])
+#                           [REGEX <re>...] [FILES <file>...] [BLOCK <name>...] [SEED <file>...]
+#                           [UNCHANGED <file>...] [NP n])
 # ARGS may use {OUT} for the test's fresh output directory. Every REGEX must match stdout+stderr;
 # FILES are the only files allowed (and required) in the output directory afterwards; BLOCK names
-# directories made there before the run, so that writing an output of that name fails.
+# directories made there before the run, so that writing an output of that name fails; SEED names
+# files made there before the run (an earlier run's outputs), UNCHANGED those that must be left
+# exactly as they were.
 function(signorini_add_driver_test name)
-  cmake_parse_arguments(D "" "EXIT;NP" "ARGS;REGEX;FILES;BLOCK" ${ARGN})
+  cmake_parse_arguments(D "" "EXIT;NP" "ARGS;REGEX;FILES;BLOCK;SEED;UNCHANGED" ${ARGN})
   if(NOT D_NP)
     set(D_NP 2)
   endif()
@@ -20,6 +23,8 @@ function(signorini_add_driver_test name)
   string(REPLACE ";" "<AND>" regex "${D_REGEX}")
   string(REPLACE ";" "|" files "${D_FILES}")
   string(REPLACE ";" "|" block "${D_BLOCK}")
+  string(REPLACE ";" "|" seed "${D_SEED}")
+  string(REPLACE ";" "|" unchanged "${D_UNCHANGED}")
   add_test(NAME driver_${name}
     COMMAND ${CMAKE_COMMAND}
       "-DSIGNORINI=$<TARGET_FILE:signorini>"
@@ -32,6 +37,8 @@ function(signorini_add_driver_test name)
       "-DEXPECT_REGEX=${regex}"
       "-DEXPECT_FILES=${files}"
       "-DBLOCK=${block}"
+      "-DSEED=${seed}"
+      "-DUNCHANGED=${unchanged}"
       -DTIMEOUT=50
       -P ${SIGNORINI_DRIVER_TEST_DIR}/run_bad_deck.cmake)
   set_tests_properties(driver_${name} PROPERTIES TIMEOUT 60 PROCESSORS ${D_NP} LABELS driver)
@@ -174,6 +181,41 @@ signorini_add_driver_test(solver_failure_mid_run EXIT 1
   REGEX "step 1/4"
         "solver-failure[.]xml: solver failure: linear solver .* did not reach the relative tolerance")
 
+# Rerunning into a directory that holds an earlier run's results under the same base name: a run
+# that fails leaves all of them as they were (its own files appear only when the whole run has
+# succeeded), and a run that succeeds replaces them all, also the cycle tables and the Exodus
+# series tail it does not write again; files of other bases are left alone.
+signorini_add_driver_test(failed_rerun_keeps_earlier_results EXIT 1
+  ARGS --output-dir {OUT} ${decks}/solver-failure.xml
+  SEED solver-failure.steps.csv solver-failure.e solver-failure.e-s.0001 solver-failure.cycle0.steps.csv
+       solver-failure.cycles.csv
+  UNCHANGED solver-failure.steps.csv solver-failure.e solver-failure.e-s.0001 solver-failure.cycle0.steps.csv
+            solver-failure.cycles.csv
+  REGEX "solver-failure[.]xml: solver failure"
+  FILES solver-failure.steps.csv solver-failure.e solver-failure.e-s.0001 solver-failure.cycle0.steps.csv
+        solver-failure.cycles.csv)
+signorini_add_driver_test(rerun_replaces_earlier_results EXIT 0
+  ARGS --output-dir {OUT} ${decks}/good.xml
+  SEED good.steps.csv good.e good.e-s.0003 good.cycle2.steps.csv good.cycle2.e good.cycles.csv other.steps.csv
+       good.extra.csv
+  UNCHANGED other.steps.csv good.extra.csv
+  REGEX "good[.]xml done: 4 steps"
+  FILES good.steps.csv good.e other.steps.csv good.extra.csv)
+# Only the file names count as outputs, not the directories: an output directory whose name looks
+# like an Exodus series file ("run.e-s.2") keeps the cycle tables of a run that may stop early.
+signorini_add_driver_test(output_directory_named_like_a_series EXIT 0
+  ARGS --output-dir {OUT}/run.e-s.2 --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Maximum Total Unknowns=300"
+       ${decks}/good.xml
+  REGEX "cycle 1: total unknowns 324,"
+  FILES run.e-s.2/good.cycle0.steps.csv run.e-s.2/good.steps.csv run.e-s.2/good.e run.e-s.2/good.cycles.csv)
+
+# A Final Time that is not a whole number of time steps (the run used to end at another time
+# without a word): an error naming both keys and the time the run would end at.
+signorini_add_driver_test(final_time_not_whole_steps EXIT 1
+  ARGS --output-dir {OUT} --set "Time Integration/Time Step=0.003" ${decks}/good.xml
+  REGEX "Time Integration/Final Time = 0[.]01 is not a whole number of Time Steps 0[.]003"
+        "the run would end at t = 0[.]009")
+
 # --print-parameters: exit 0, every parameter with its full path, nothing written.
 signorini_add_driver_test(print_parameters EXIT 0
   ARGS --print-parameters
@@ -189,10 +231,10 @@ signorini_add_driver_test(output_exodus_not_creatable EXIT 1
   REGEX "cannot create Exodus II output file" BLOCK good.e.part)
 signorini_add_driver_test(output_steps_not_renamable EXIT 1
   ARGS --output-dir {OUT} ${decks}/good.xml
-  REGEX "cannot rename '.*good[.]steps[.]csv[.]part'" BLOCK good.steps.csv)
+  REGEX "cannot rename output file '.*good[.]steps[.]csv[.]part'" BLOCK good.steps.csv)
 signorini_add_driver_test(adaptive_cycles_table_not_renamable EXIT 1
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=2" ${decks}/good.xml
-  REGEX "cannot rename '.*good[.]cycles[.]csv[.]part'" BLOCK good.cycles.csv)
+  REGEX "cannot rename output file '.*good[.]cycles[.]csv[.]part'" BLOCK good.cycles.csv)
 signorini_add_driver_test(adaptive_second_cycle_not_writable EXIT 1
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=3" ${decks}/good.xml
   REGEX "cannot create output file '.*good[.]cycle1[.]steps[.]csv[.]part'" BLOCK good.cycle1.steps.csv.part)
@@ -212,11 +254,10 @@ signorini_add_driver_test(bad_empty_output_directory EXIT 1
 signorini_add_driver_test(bad_obstacle_not_a_number EXIT 1
   ARGS --output-dir {OUT} --set "Problem/Obstacle=sqrt(y - 2)" ${decks}/good.xml
   REGEX "Problem/Obstacle: evaluates to -?nan at [(]")
-# The Exodus file cannot take its final name after the step table was committed: the committed
-# table goes too.
+# The Exodus file cannot take its final name when the run ends: the step table goes too.
 signorini_add_driver_test(output_exodus_not_renamable EXIT 1
   ARGS --output-dir {OUT} ${decks}/good.xml
-  REGEX "cannot rename Exodus II output file '.*good[.]e[.]part'" BLOCK good.e)
+  REGEX "cannot rename output file '.*good[.]e[.]part'" BLOCK good.e)
 
 # Adaptivity settings that are valid one by one but cannot work together, and meshes that cannot
 # fit (p4est used to abort in malloc, or a uniform run grew until memory ran out).

@@ -62,7 +62,7 @@ TEST(LinearSolver, PreconditionersAgreeAndMueLuWinsAtLargeCourantNumber) {
 
 // Elasticity: MueLu with two equations per node and the rigid body modes as near-nullspace needs a
 // bounded number of CG iterations as the mesh is refined at a fixed time step (the Courant number
-// c k / h grows from 8 to 64), and no more than MueLu without that information.
+// c k / h grows from 8 to 32), and no more than MueLu without that information.
 TEST(LinearSolver, ElasticityMueLuIterationsStayBoundedUnderRefinement) {
   const double E = 1.0, nu = 0.33, rho = 1.0;
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));

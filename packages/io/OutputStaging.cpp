@@ -1,0 +1,171 @@
+#include "OutputStaging.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "Error.hpp"
+
+namespace signorini::io {
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Retirement {
+  std::string basePath;
+  std::function<bool(const std::string&)> matches;
+};
+
+struct Staging {
+  int depth = 0;
+  std::map<std::string, std::string> partOf;  // final path -> staged file
+  std::vector<Retirement> retired;
+};
+
+Staging& staging() {
+  static Staging s;
+  return s;
+}
+
+/// The files retirement \p r names, except those in \p keep (compared as normalised paths).
+std::vector<fs::path> retiredFiles(const Retirement& r, const std::set<fs::path>& keep) {
+  const fs::path base(r.basePath);
+  const fs::path directory = base.has_parent_path() ? base.parent_path() : fs::path(".");
+  const std::string stem = base.filename().string();
+  std::vector<fs::path> files;
+  std::error_code ec;
+  fs::directory_iterator it(directory, ec), end;
+  for (; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= stem.size() || name.compare(0, stem.size(), stem) != 0) continue;
+    if (!r.matches(name.substr(stem.size()))) continue;
+    if (keep.count((directory / name).lexically_normal())) continue;
+    std::error_code regular;
+    if (fs::is_regular_file(it->path(), regular)) files.push_back(it->path());
+  }
+  return files;
+}
+
+std::string renameError(const std::string& part, const std::string& finalPath, const std::error_code& ec) {
+  return "cannot rename output file '" + part + "' to '" + finalPath + "': " + ec.message();
+}
+
+}  // namespace
+
+bool isRunOutputSuffix(std::string suffix) {
+  auto isNumber = [](const std::string& digits) {
+    return !digits.empty() && std::all_of(digits.begin(), digits.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+  };
+  if (suffix.rfind(".cycle", 0) == 0) {  // ".cycle<digits>" first: a file of that cycle follows
+    size_t end = 6;
+    while (end < suffix.size() && std::isdigit(static_cast<unsigned char>(suffix[end]))) ++end;
+    if (end > 6) {
+      suffix = suffix.substr(end);
+      if (suffix == ".cycles.csv") return false;
+    }
+  }
+  if (suffix == ".steps.csv" || suffix == ".cycles.csv" || suffix == ".e") return true;
+  return suffix.rfind(".e-s.", 0) == 0 && isNumber(suffix.substr(5));
+}
+
+OutputStaging::OutputStaging() : outermost_(staging().depth == 0) { ++staging().depth; }
+
+OutputStaging::~OutputStaging() {
+  auto& s = staging();
+  --s.depth;
+  if (!outermost_ || done_) return;
+  std::error_code ec;
+  for (const auto& [finalPath, part] : s.partOf) fs::remove(part, ec);
+  s.partOf.clear();
+  s.retired.clear();
+}
+
+bool OutputStaging::active() { return staging().depth > 0; }
+
+void OutputStaging::commit() {
+  if (!outermost_ || done_) return;
+  done_ = true;
+  auto& s = staging();
+  auto partOf = std::move(s.partOf);
+  auto retired = std::move(s.retired);
+  s.partOf.clear();
+  s.retired.clear();
+  // The staged files first; if one cannot take its name, the run's files all go (those renamed
+  // already and the others) and nothing is retired.
+  std::vector<std::string> renamed;
+  std::error_code ec;
+  for (const auto& [finalPath, part] : partOf) {
+    fs::rename(part, finalPath, ec);
+    if (!ec) {
+      renamed.push_back(finalPath);
+      continue;
+    }
+    const std::string error = renameError(part, finalPath, ec);
+    std::error_code ignored;
+    for (const auto& f : renamed) fs::remove(f, ignored);
+    for (const auto& entry : partOf) fs::remove(entry.second, ignored);
+    SIGNORINI_USER_ERROR(error);
+  }
+  std::set<fs::path> keep;
+  for (const auto& f : renamed) keep.insert(fs::path(f).lexically_normal());
+  for (const auto& r : retired)
+    for (const auto& f : retiredFiles(r, keep)) fs::remove(f, ec);
+}
+
+void publish(const std::string& part, const std::string& finalPath) {
+  auto& s = staging();
+  if (s.depth > 0) {
+    auto it = s.partOf.find(finalPath);
+    std::error_code ec;
+    if (it != s.partOf.end() && it->second != part) fs::remove(it->second, ec);  // written again in this run
+    s.partOf[finalPath] = part;
+    return;
+  }
+  std::error_code ec;
+  fs::rename(part, finalPath, ec);
+  if (ec) SIGNORINI_USER_ERROR(renameError(part, finalPath, ec));
+}
+
+void unpublish(const std::string& finalPath) {
+  auto& s = staging();
+  std::error_code ec;
+  if (s.depth > 0) {
+    auto it = s.partOf.find(finalPath);
+    if (it == s.partOf.end()) return;  // an earlier run's file stays until the commit retires it
+    fs::remove(it->second, ec);
+    s.partOf.erase(it);
+    return;
+  }
+  fs::remove(finalPath, ec);
+}
+
+void republish(const std::string& from, const std::string& to) {
+  auto& s = staging();
+  if (s.depth > 0) {
+    auto it = s.partOf.find(from);
+    SIGNORINI_ASSERT(it != s.partOf.end(), "republish: '" << from << "' was not published in this run");
+    std::string part = it->second;
+    s.partOf.erase(it);
+    publish(part, to);
+    return;
+  }
+  publish(from, to);
+}
+
+void retireOnCommit(const std::string& basePath, const std::function<bool(const std::string& suffix)>& matches) {
+  auto& s = staging();
+  Retirement r{basePath, matches};
+  if (s.depth > 0) {
+    s.retired.push_back(std::move(r));
+    return;
+  }
+  std::error_code ec;
+  for (const auto& f : retiredFiles(r, {})) fs::remove(f, ec);
+}
+
+}  // namespace signorini::io

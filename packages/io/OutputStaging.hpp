@@ -1,0 +1,52 @@
+#pragma once
+/// \file OutputStaging.hpp
+/// When a run's files become visible. Every writer writes "<file>.part" and publishes it under its
+/// final name. Outside a staging scope publish() renames at once. Inside one (a whole run:
+/// adapt::AdaptiveSimulation::run) the final names are only recorded, and commit() at the end of
+/// the run makes them visible together: first it removes the files an earlier run left under the
+/// names retired with retireOnCommit() that this run does not write again, then it renames every
+/// staged file. A run that fails (its scope ends without commit) removes its staged files, so the
+/// results of an earlier run in the same directory stay as they were. The state is per process
+/// (the output files are written on rank 0).
+#include <functional>
+#include <string>
+
+namespace signorini::io {
+
+/// A staging scope. Scopes nest: an inner one joins the outer one, and only the outermost commits
+/// or discards.
+class OutputStaging {
+ public:
+  OutputStaging();
+  /// Removes the staged files unless commit() was called.
+  ~OutputStaging();
+  OutputStaging(const OutputStaging&) = delete;
+  OutputStaging& operator=(const OutputStaging&) = delete;
+  /// Outermost scope: renames the staged files, then removes the retired ones. If a rename fails
+  /// it removes all files of the run (renamed or not), retires nothing and throws
+  /// core::UserError naming the file. Inner scopes: nothing.
+  void commit();
+  /// Whether a scope is open.
+  static bool active();
+
+ private:
+  bool outermost_;
+  bool done_ = false;
+};
+
+/// Renames \p part to \p finalPath now, or at the commit of the open scope.
+void publish(const std::string& part, const std::string& finalPath);
+/// Removes the published file \p finalPath (in a scope: its staged file, or nothing).
+void unpublish(const std::string& finalPath);
+/// Gives the published file \p from the name \p to (in a scope: changes the recorded final name).
+void republish(const std::string& from, const std::string& to);
+/// Removes the files in the directory of \p basePath whose names are the name of \p basePath
+/// followed by a suffix that \p matches accepts, except those published in the open scope: now
+/// outside a scope, at its commit inside one.
+void retireOnCommit(const std::string& basePath, const std::function<bool(const std::string& suffix)>& matches);
+/// Whether "<base><suffix>" is a file that a run with output base "<base>" writes: its step and
+/// cycle tables ("<base>.steps.csv", "<base>.cycles.csv"), its Exodus series ("<base>.e",
+/// "<base>.e-s.<digits>") and those files of single cycles ("<base>.cycle<digits>.steps.csv", ...).
+bool isRunOutputSuffix(std::string suffix);
+
+}  // namespace signorini::io
