@@ -11,9 +11,9 @@ namespace signorini::dynamics {
 core::ParameterList Newmark::getValidParameters() {
   core::ParameterList p("Time Integration");
   core::addDouble(p, "Time Step", 0.0025, "k [time], constant", 1e-300, core::kInf);
-  core::addDouble(p, "Final Time", 1.0, "T [time]; the run takes round(T / k) steps", 1e-300, core::kInf);
+  core::addDouble(p, "Final Time", 1.0, "T [time], a whole number of Time Steps (to 1e-6 relative): the run takes T / k steps", 1e-300, core::kInf);
   core::addDouble(p, "Alpha", 0.5, "Newmark alpha (= gamma); second order needs 1/2; 2 beta >= alpha >= 1/2", 0.0, 2.0);
-  core::addDouble(p, "Beta", 0.5, "Newmark beta; 1/2 conserves energy with alpha = 1/2 (paper Sec. 3.1)", 0.0, 2.0);
+  core::addDouble(p, "Beta", 0.5, "Newmark beta; with alpha = 1/2 the scheme conserves the Newmark energy (energy + (beta - 1/4) k^2/2 a^T M a, the steps table's newmark_energy; paper Sec. 3.1)", 0.0, 2.0);
   core::addChoice(p, "Contact Stabilisation", "none",
                   "\"predictor projection\": project the Newmark predictor onto the admissible set in the mass "
                   "norm before each step (after Deuflhard, Krause, Ertel; not in the paper) against the chattering "
@@ -36,6 +36,11 @@ Newmark::Newmark(const core::ParameterList& p)
     SIGNORINI_USER_ERROR("Time Integration/Time Step = " << timeStep << " gives more than 1e8 steps to Final Time");
   if (numSteps() < 1)
     SIGNORINI_USER_ERROR("Time Integration/Final Time = " << finalTime << " is shorter than half a Time Step");
+  const double steps = finalTime / timeStep;  // a whole number up to the rounding of decimal inputs
+  if (std::fabs(steps - numSteps()) > 1e-6 * steps)
+    SIGNORINI_USER_ERROR("Time Integration/Final Time = " << finalTime << " is not a whole number of Time Steps "
+                                                          << timeStep << " (" << steps << " steps; the run would end at t = "
+                                                          << numSteps() * timeStep << ")");
 }
 
 int Newmark::numSteps() const { return static_cast<int>(std::llround(finalTime / timeStep)); }
