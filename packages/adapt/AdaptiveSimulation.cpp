@@ -27,19 +27,13 @@
 namespace signorini::adapt {
 namespace {
 
-/// Whether \p suffix is ".<digits>" followed by nothing else.
-bool isNumberSuffix(const std::string& suffix) {
-  return suffix.size() > 1 && suffix[0] == '.' &&
-         std::all_of(suffix.begin() + 1, suffix.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
-}
-
 /// Whether the file \p path is an Exodus file of a series ("<name>.e" or "<name>.e-s.<digits>";
 /// only the file name counts, not the directories).
 bool isExodusFile(const std::string& path) {
   const std::string name = std::filesystem::path(path).filename().string();
   if (name.size() > 2 && name.compare(name.size() - 2, 2, ".e") == 0) return true;
   const auto series = name.rfind(".e-s.");
-  return series != std::string::npos && isNumberSuffix(name.substr(series + 4));
+  return series != std::string::npos && io::isExodusSeriesSuffix(name.substr(series));
 }
 
 /// The files of the cycle that turned out to be the last (a stopping criterion other than the
@@ -230,7 +224,6 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   });
   std::vector<std::shared_ptr<mesh::Forest>> meshes(nSteps, sim_->initialForest());
   dynamics::RunSummary last;
-  std::vector<std::string> written;  // rank 0: the files of the finished cycles, removed if a later one fails
   try {
     for (int l = 0; l < cycles; ++l) {
       {  // the largest step mesh of this cycle and the forests of all its steps
@@ -315,7 +308,6 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       options.reportTransferEnergy = ap.get<bool>("Report Transfer Energy");
       options.compactMeshes = compactMeshes;
       last = sim_->runPass(meshes, hook, options);
-      written.insert(written.end(), last.files.begin(), last.files.end());
       // Memory of the stored meshes of this cycle (steps with equal meshes share one forest).
       std::set<const mesh::Forest*> unique;
       long long cells = 0, storedCells = 0;
@@ -354,8 +346,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                           << ", " << wall << " s" << std::endl;
       if (stop) {
         if (!lastPlanned) last.files = promoteToFinalName(last.files, base + ".cycle" + std::to_string(l), base, *comm);
-        written.insert(written.end(), last.files.begin(), last.files.end());
-        break;
+          break;
       }
       if (mayStopEarly && !writeAll && !lastPlanned)  // written in case it was the last: it was not
         for (const auto& f : last.files)
@@ -367,7 +358,6 @@ dynamics::RunSummary AdaptiveSimulation::run() {
     });
   } catch (...) {
     if (cyclesCsv) cyclesCsv->remove();
-    for (const auto& f : written) io::unpublish(f);
     throw;
   }
   if (cyclesCsv) last.files.push_back(cyclesCsv->path());

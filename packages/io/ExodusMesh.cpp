@@ -230,12 +230,7 @@ QuadMesh readExodusQuadMesh(const std::string& path) {
 // ---------------------------------------------------------------------------------------------
 
 void removeExodusSeriesTail(const std::string& basePath) {
-  retireOnCommit(basePath, [](const std::string& suffix) {
-    const std::string series = ".e-s.";
-    return suffix.size() > series.size() && suffix.compare(0, series.size(), series) == 0 &&
-           std::all_of(suffix.begin() + static_cast<long>(series.size()), suffix.end(),
-                       [](unsigned char c) { return std::isdigit(c) != 0; });
-  });
+  retireOnCommit(basePath, isExodusSeriesSuffix);
 }
 
 namespace {

@@ -57,10 +57,14 @@ std::string renameError(const std::string& part, const std::string& finalPath, c
 
 }  // namespace
 
+bool isExodusSeriesSuffix(const std::string& suffix) {
+  const std::string series = ".e-s.";
+  return suffix.size() > series.size() && suffix.compare(0, series.size(), series) == 0 &&
+         std::all_of(suffix.begin() + static_cast<long>(series.size()), suffix.end(),
+                     [](unsigned char c) { return std::isdigit(c) != 0; });
+}
+
 bool isRunOutputSuffix(std::string suffix) {
-  auto isNumber = [](const std::string& digits) {
-    return !digits.empty() && std::all_of(digits.begin(), digits.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
-  };
   if (suffix.rfind(".cycle", 0) == 0) {  // ".cycle<digits>" first: a file of that cycle follows
     size_t end = 6;
     while (end < suffix.size() && std::isdigit(static_cast<unsigned char>(suffix[end]))) ++end;
@@ -69,8 +73,7 @@ bool isRunOutputSuffix(std::string suffix) {
       if (suffix == ".cycles.csv") return false;
     }
   }
-  if (suffix == ".steps.csv" || suffix == ".cycles.csv" || suffix == ".e") return true;
-  return suffix.rfind(".e-s.", 0) == 0 && isNumber(suffix.substr(5));
+  return suffix == ".steps.csv" || suffix == ".cycles.csv" || suffix == ".e" || isExodusSeriesSuffix(suffix);
 }
 
 OutputStaging::OutputStaging() : outermost_(staging().depth == 0) { ++staging().depth; }
@@ -84,8 +87,6 @@ OutputStaging::~OutputStaging() {
   s.partOf.clear();
   s.retired.clear();
 }
-
-bool OutputStaging::active() { return staging().depth > 0; }
 
 void OutputStaging::commit() {
   if (!outermost_ || done_) return;

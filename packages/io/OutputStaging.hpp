@@ -3,9 +3,9 @@
 /// When a run's files become visible. Every writer writes "<file>.part" and publishes it under its
 /// final name. Outside a staging scope publish() renames at once. Inside one (a whole run:
 /// adapt::AdaptiveSimulation::run) the final names are only recorded, and commit() at the end of
-/// the run makes them visible together: first it removes the files an earlier run left under the
-/// names retired with retireOnCommit() that this run does not write again, then it renames every
-/// staged file. A run that fails (its scope ends without commit) removes its staged files, so the
+/// the run makes them visible together: it renames every staged file, then removes the files an
+/// earlier run left under the names retired with retireOnCommit() that this run did not write
+/// again. A run that fails (its scope ends without commit) removes its staged files, so the
 /// results of an earlier run in the same directory stay as they were. The state is per process
 /// (the output files are written on rank 0).
 #include <functional>
@@ -26,8 +26,6 @@ class OutputStaging {
   /// it removes all files of the run (renamed or not), retires nothing and throws
   /// core::UserError naming the file. Inner scopes: nothing.
   void commit();
-  /// Whether a scope is open.
-  static bool active();
 
  private:
   bool outermost_;
@@ -48,5 +46,7 @@ void retireOnCommit(const std::string& basePath, const std::function<bool(const 
 /// cycle tables ("<base>.steps.csv", "<base>.cycles.csv"), its Exodus series ("<base>.e",
 /// "<base>.e-s.<digits>") and those files of single cycles ("<base>.cycle<digits>.steps.csv", ...).
 bool isRunOutputSuffix(std::string suffix);
+/// Whether \p suffix is ".e-s.<digits>", the suffix of the files after the first of an Exodus series.
+bool isExodusSeriesSuffix(const std::string& suffix);
 
 }  // namespace signorini::io
