@@ -86,9 +86,19 @@ long long globalSize(const std::vector<double>& v, MPI_Comm comm) {
 
 }  // namespace
 
+long long cellsOfFraction(double fraction, long long cells, bool roundUp) {
+  const double x = fraction * static_cast<double>(cells);
+  // A decimal fraction is stored with a relative error up to 2^-53 and the product adds as much:
+  // 0.55 * 100 gives 55.000000000000007, which means 55 cells, not 56.
+  const double nearest = std::round(x);
+  if (std::abs(x - nearest) <= 8 * std::numeric_limits<double>::epsilon() * std::max(1.0, x))
+    return static_cast<long long>(nearest);
+  return static_cast<long long>(roundUp ? std::ceil(x) : std::floor(x));
+}
+
 std::vector<char> markFixedFraction(const std::vector<double>& indicators, double fraction, double tieTolerance,
                                     MPI_Comm comm) {
-  const long long wanted = static_cast<long long>(std::ceil(fraction * globalSize(indicators, comm)));
+  const long long wanted = cellsOfFraction(fraction, globalSize(indicators, comm), true);
   if (wanted <= 0) return std::vector<char>(indicators.size(), 0);
   const double width = tieWidth(indicators, tieTolerance, comm);
   const auto sorted = sortedKeys(indicators);
@@ -124,7 +134,7 @@ std::vector<char> markBulk(const std::vector<double>& indicators, double fractio
 
 std::vector<char> markSmallest(const std::vector<double>& indicators, double fraction, double tieTolerance,
                                MPI_Comm comm) {
-  const long long allowed = static_cast<long long>(std::floor(fraction * globalSize(indicators, comm)));
+  const long long allowed = cellsOfFraction(fraction, globalSize(indicators, comm), false);
   std::vector<char> flags(indicators.size(), 0);
   if (allowed <= 0) return flags;
   const double width = tieWidth(indicators, tieTolerance, comm);

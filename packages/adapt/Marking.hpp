@@ -14,6 +14,11 @@
 
 namespace signorini::adapt {
 
+/// The number of cells a fraction of `cells` means: ceil(fraction * cells) (roundUp) or
+/// floor(fraction * cells), where a product within rounding of an integer is that integer
+/// (0.55 of 100 cells is 55, although 0.55 * 100 evaluates to 55.000000000000007).
+long long cellsOfFraction(double fraction, long long cells, bool roundUp);
+
 /// Flags the cells with the largest indicators: at least ceil(fraction * N) cells of the N cells
 /// of all ranks (more only when indicators tie with the threshold). The paper's strategy (50%).
 std::vector<char> markFixedFraction(const std::vector<double>& indicators, double fraction, double tieTolerance,

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <string>
 
 #include <Tpetra_Core.hpp>
 
@@ -88,6 +89,33 @@ TEST(Marking, SmallestMarksAtMostTheFraction) {
   for (size_t i = 0; i < all.size(); ++i)
     (flags[i] ? maxMarked = std::max(maxMarked, all[i]) : minUnmarked = std::min(minUnmarked, all[i]));
   EXPECT_LT(maxMarked, minUnmarked);
+}
+
+TEST(Marking, DecimalFractionsCountTheCellsTheyMean) {
+  // Every two-digit fraction p/100 as a deck gives it, of every N up to 2000 cells, against integer
+  // arithmetic; several products evaluate just above or below the integer (0.55 * 100, 0.29 * 100).
+  int offByRounding = 0;
+  for (int p = 0; p <= 100; ++p) {
+    const double fraction = p == 100 ? 1.0 : std::stod((p < 10 ? "0.0" : "0.") + std::to_string(p));
+    for (long long n = 1; n <= 2000; ++n) {
+      const long long up = (p * n + 99) / 100, down = p * n / 100;
+      ASSERT_EQ(adapt::cellsOfFraction(fraction, n, true), up) << p << "% of " << n;
+      ASSERT_EQ(adapt::cellsOfFraction(fraction, n, false), down) << p << "% of " << n;
+      offByRounding += std::ceil(fraction * n) != up || std::floor(fraction * n) != down;
+    }
+  }
+  EXPECT_GT(offByRounding, 0);  // the plain ceil/floor would fail this test
+  // ... and the strategies use it: 55% and 29% of 100 distinct indicators.
+  auto comm = Tpetra::getDefaultComm();
+  MPI_Comm raw = core::rawMpiComm(*comm);
+  std::vector<double> all(100);
+  for (int i = 0; i < 100; ++i) all[i] = std::fmod(37.0 * i, 100.0) + 1;
+  size_t offset;
+  const auto mine = localPart(all, comm->getRank(), comm->getSize(), offset);
+  const auto refine = gather(adapt::markFixedFraction(mine, 0.55, 0.0, raw), raw);
+  EXPECT_EQ(std::count(refine.begin(), refine.end(), 1), 55);
+  const auto coarsen = gather(adapt::markSmallest(mine, 0.29, 0.0, raw), raw);
+  EXPECT_EQ(std::count(coarsen.begin(), coarsen.end(), 1), 29);
 }
 
 /// The global indicators with the ten cells of a tied group (value 5) perturbed at the level of rounding,
