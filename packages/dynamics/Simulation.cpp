@@ -1,6 +1,7 @@
 #include "Simulation.hpp"
 
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
@@ -98,23 +99,32 @@ std::string stemOf(const std::string& path) {
   return dot == std::string::npos ? name : name.substr(0, dot);
 }
 
-/// Creates \p dir (and parents) on rank 0 and checks that a file can be written there; the
-/// verdict is shared so every rank fails together.
-void ensureWritableDirectory(const std::string& dir, const Comm& comm) {
+/// Checks on rank 0 that \p dir can hold the run's files by creating it (and its parents) and a
+/// probe file there; with \p keep false, removes again every directory it created (a --check
+/// leaves no trace). The verdict is shared so every rank fails together.
+void ensureWritableDirectory(const std::string& dir, const Comm& comm, bool keep) {
   core::onRootCollectively(comm, [&] {
+    std::vector<std::string> created;
+    auto removeCreated = [&] {
+      if (!keep)
+        for (auto it = created.rbegin(); it != created.rend(); ++it) ::rmdir(it->c_str());
+    };
     std::string partial;
     std::stringstream ss(dir);
     if (!dir.empty() && dir[0] == '/') partial = "/";
     for (std::string part; std::getline(ss, part, '/');) {
       if (part.empty()) continue;
       partial += part + "/";
-      ::mkdir(partial.c_str(), 0755);
+      if (::mkdir(partial.c_str(), 0755) == 0) created.push_back(partial);
     }
     const std::string probe = dir + "/.signorini-write-test";
     FILE* f = std::fopen(probe.c_str(), "w");
+    if (f) {
+      std::fclose(f);
+      std::remove(probe.c_str());
+    }
+    removeCreated();
     if (!f) SIGNORINI_USER_ERROR("Output/Directory: cannot write to '" << dir << "'");
-    std::fclose(f);
-    std::remove(probe.c_str());
   });
 }
 
@@ -429,10 +439,7 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   if (reproducible && I.components != 1)
     SIGNORINI_USER_ERROR("Parallel/Reproducible Arithmetic: available for Problem/Type = \"scalar wave\" only "
                          "(the elasticity assembler and estimator do not order their sums yet)");
-  const std::string preconditioner = deck.sublist("Linear Solver").get<std::string>("Preconditioner");
-  if (reproducible && preconditioner != "auto" && preconditioner != "Jacobi")
-    SIGNORINI_USER_ERROR("Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\" (or \"auto\"), not \""
-                         << preconditioner << "\"");
+  solvers::LinearSolver::checkParameters(deck.sublist("Linear Solver"), reproducible);
   core::setReproducibleArithmetic(reproducible);
   if (file.empty())
     checkMeshFits(meshParams.get<int>("Cells X") * std::pow(4.0, level) * meshParams.get<int>("Cells Y"),
@@ -490,8 +497,10 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
                                                 "Output/Directory or --output-dir chooses the folder");
   I.basename = basename.empty() ? stemOf(deckPath) : basename;
   I.outputBase = I.outDir + "/" + I.basename;
-  ensureWritableDirectory(I.outDir, *comm);
+  ensureWritableDirectory(I.outDir, *comm, false);
 }
+
+void Simulation::createOutputDirectory() const { ensureWritableDirectory(impl_->outDir, *impl_->comm, true); }
 
 Simulation::~Simulation() = default;
 
@@ -526,6 +535,7 @@ void Simulation::checkMeshFits(double globalCells, const std::string& cause, dou
 RunSummary Simulation::run() {
   // The run's files appear when it has succeeded and replace every file an earlier run left under
   // this base; a failed run leaves them as they were (io::OutputStaging).
+  createOutputDirectory();
   io::OutputStaging staging;
   io::retireOnCommit(outputBase(), io::isRunOutputSuffix);
   std::vector<std::shared_ptr<mesh::Forest>> meshes(numSteps(), impl_->initialForest);

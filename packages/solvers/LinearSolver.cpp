@@ -80,6 +80,28 @@ core::ParameterList LinearSolver::getValidParameters() {
   return p;
 }
 
+void LinearSolver::checkParameters(const core::ParameterList& params, bool reproducible) {
+  const std::string method = params.get<std::string>("Method");
+  const std::string preconditioner = params.get<std::string>("Preconditioner");
+  if (reproducible && preconditioner != "auto" && preconditioner != "Jacobi")
+    SIGNORINI_USER_ERROR("Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\" (or \"auto\"), not \""
+                         << preconditioner << "\"");
+  if (reproducible && method != "CG")
+    SIGNORINI_USER_ERROR("Linear Solver/Method: reproducible arithmetic solves with its own Jacobi CG and needs "
+                         "\"CG\", not \"" << method << "\"");
+  Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
+  if (!factory.isSupported(method)) {
+    std::ostringstream names;
+    std::vector<std::string> seen;
+    for (const auto& name : factory.supportedSolverNames())
+      if (std::find(seen.begin(), seen.end(), name) == seen.end()) {
+        names << (seen.empty() ? "" : ", ") << name;
+        seen.push_back(name);
+      }
+    SIGNORINI_USER_ERROR("Linear Solver/Method: Belos does not know \"" << method << "\"; it knows " << names.str());
+  }
+}
+
 LinearSolver::LinearSolver(const core::ParameterList& params, RCP<const Comm> comm) : impl_(std::make_unique<Impl>()) {
   impl_->params = params;
   impl_->comm = comm;
@@ -134,11 +156,14 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
   auto belosParams = Teuchos::rcp(new Teuchos::ParameterList(I.params.sublist("Belos")));
   belosParams->set("Convergence Tolerance", I.params.get<double>("Relative Tolerance"));
   belosParams->set("Maximum Iterations", I.params.get<int>("Maximum Iterations"));
-  if (!belosParams->isParameter("Implicit Residual Scaling")) belosParams->set("Implicit Residual Scaling", "Norm of RHS");
-  if (!belosParams->isParameter("Explicit Residual Scaling")) belosParams->set("Explicit Residual Scaling", "Norm of RHS");
   Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
   try {
-    I.solver = factory.create(I.params.get<std::string>("Method"), belosParams);
+    I.solver = factory.create(I.params.get<std::string>("Method"), Teuchos::null);
+    // ||r|| <= tol ||b|| where the method lets us choose the scaling (MINRES, e.g., does not).
+    const auto valid = I.solver->getValidParameters();
+    for (const char* scaling : {"Implicit Residual Scaling", "Explicit Residual Scaling"})
+      if (valid->isParameter(scaling) && !belosParams->isParameter(scaling)) belosParams->set(scaling, "Norm of RHS");
+    I.solver->setParameters(belosParams);
   } catch (std::exception& e) {
     SIGNORINI_USER_ERROR("Linear Solver/Method: Belos cannot create '" << I.params.get<std::string>("Method")
                                                                        << "': " << e.what());
@@ -175,7 +200,13 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
   I.problem->setRHS(Teuchos::rcpFromRef(b));
   I.problem->setProblem();
   I.solver->setProblem(I.problem);
-  const Belos::ReturnType ret = I.solver->solve();
+  Belos::ReturnType ret;
+  try {
+    ret = I.solver->solve();
+  } catch (const std::logic_error& e) {  // Belos refuses the problem, e.g. BICGSTAB a left preconditioner
+    SIGNORINI_USER_ERROR("Linear Solver/Method: Belos' \"" << I.params.get<std::string>("Method")
+                                                            << "\" cannot solve this system: " << e.what());
+  }
   const int its = I.solver->getNumIters();
   I.iterations += its;
   if (ret != Belos::Converged) {

@@ -15,6 +15,11 @@ namespace signorini::solvers {
 class LinearSolver {
  public:
   static core::ParameterList getValidParameters();
+  /// Cross-parameter rules of a validated "Linear Solver" sublist, checked before any output
+  /// exists: Belos must know "Method"; under reproducible arithmetic (our own Jacobi CG) the
+  /// method must be "CG" and the preconditioner "Jacobi" or "auto". Throws core::UserError
+  /// naming the key.
+  static void checkParameters(const core::ParameterList& params, bool reproducible);
   /// \param params a validated "Linear Solver" sublist.
   LinearSolver(const core::ParameterList& params, RCP<const Comm> comm);
   ~LinearSolver();

@@ -315,6 +315,13 @@ signorini_add_driver_test(check_valid_deck EXIT 0
   REGEX "checking .*good[.]xml on 2 rank[(]s[)]" "good[.]xml is valid; the run would do:"
         "4 steps of k = 0[.]0025 to T = 0[.]01; the initial mesh: 16 cells, 25 unknowns"
         "Algorithm 5[.]1: 3 cycle[(]s[)], strategy bulk 50%")
+# --check writes nothing, not even the output directory it checks (it creates and removes it).
+signorini_add_driver_test(check_creates_no_directory EXIT 0
+  ARGS --check --output-dir {OUT}/new/deeper ${decks}/good.xml
+  REGEX "good[.]xml is valid")
+signorini_add_driver_test(check_unwritable_output_dir EXIT 1
+  ARGS --check --output-dir /dev/null/out ${decks}/good.xml
+  REGEX "Output/Directory: cannot write to '/dev/null/out'")
 signorini_add_driver_test(check_bad_deck EXIT 1
   ARGS --check --output-dir {OUT} ${decks}/good.xml ${decks}/penetrating.xml
   REGEX "good[.]xml is valid" "Problem/Initial Displacement penetrates the obstacle" "1 of 2 deck[(]s[)] failed")
@@ -325,6 +332,16 @@ signorini_add_driver_test(reproducible_arithmetic_needs_jacobi EXIT 1
   ARGS --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" --set "Linear Solver/Preconditioner=MueLu"
        ${decks}/good.xml
   REGEX "Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\" [(]or \"auto\"[)], not \"MueLu\"")
+signorini_add_driver_test(reproducible_arithmetic_needs_cg EXIT 1
+  ARGS --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" --set "Linear Solver/Method=GMRES"
+       ${decks}/good.xml
+  REGEX "Linear Solver/Method: reproducible arithmetic solves with its own Jacobi CG and needs \"CG\", not \"GMRES\"")
+signorini_add_driver_test(unknown_krylov_method EXIT 1
+  ARGS --check --output-dir {OUT} --set "Linear Solver/Method=CGG" ${decks}/good.xml
+  REGEX "Linear Solver/Method: Belos does not know \"CGG\"; it knows [^\n]*PSEUDOBLOCK CG")
+signorini_add_driver_test(krylov_method_refusing_the_system EXIT 1
+  ARGS --output-dir {OUT} --set "Linear Solver/Method=BICGSTAB" ${decks}/good.xml
+  REGEX "Linear Solver/Method: Belos' \"BICGSTAB\" cannot solve this system: .*left-preconditioned")
 signorini_add_driver_test(reproducible_arithmetic_scalar_only EXIT 1
   ARGS --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" --set "Problem/Type=plane strain elasticity"
        ${decks}/good.xml
