@@ -107,6 +107,9 @@ class Simulation {
   long long initialUnknowns() const;
   RCP<const Comm> comm() const;
   const std::string& outputBase() const;  ///< output folder + "/" + basename
+  /// Creates the output folder (and its parents) if it is missing; run() does this first. The
+  /// constructor only checks that it could (and leaves no folder behind). Collective.
+  void createOutputDirectory() const;
   /// Throws core::UserError naming \p cause if a step mesh of \p globalCells cells certainly
   /// cannot fit into this machine's memory or exceeds the 32-bit local indices of p4est and Tpetra
   /// on a rank. Collective. The memory is a lower bound: 750 bytes per cell times (unknowns per
