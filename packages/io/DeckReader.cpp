@@ -4,6 +4,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <set>
+
+#include <sys/stat.h>
 
 #include <Teuchos_FileInputSource.hpp>
 #include <Teuchos_XMLObject.hpp>
@@ -29,13 +32,17 @@ bool isWholeInt(const std::string& v) {
   return *end == '\0' && errno != ERANGE && l >= INT32_MIN && l <= INT32_MAX;
 }
 
-void checkNumbers(const Teuchos::XMLObject& node, const std::string& path, const std::string& file) {
+/// Numbers that convert in full, and no name twice in one list (Teuchos keeps the last silently).
+void checkEntries(const Teuchos::XMLObject& node, const std::string& path, const std::string& file) {
+  std::set<std::string> names;
   for (int i = 0; i < node.numChildren(); ++i) {
     const auto& child = node.getChild(i);
     const std::string name = child.hasAttribute("name") ? child.getAttribute("name") : "?";
     const std::string full = path.empty() ? name : path + "/" + name;
+    if ((child.getTag() == "ParameterList" || child.getTag() == "Parameter") && !names.insert(name).second)
+      SIGNORINI_USER_ERROR(file << ": '" << full << "' is given twice");
     if (child.getTag() == "ParameterList") {
-      checkNumbers(child, full, file);
+      checkEntries(child, full, file);
     } else if (child.getTag() == "Parameter" && child.hasAttribute("type") && child.hasAttribute("value")) {
       const std::string type = child.getAttribute("type"), value = child.getAttribute("value");
       if (type == "double" && !isWholeDouble(value))
@@ -49,11 +56,14 @@ void checkNumbers(const Teuchos::XMLObject& node, const std::string& path, const
 }  // namespace
 
 Teuchos::ParameterList readDeckFile(const std::string& path) {
+  struct stat info;
+  if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
+    SIGNORINI_USER_ERROR(path << ": is a directory, not a deck");
   if (!std::ifstream(path)) SIGNORINI_USER_ERROR(path << ": cannot open the deck (missing or unreadable file)");
   Teuchos::ParameterList deck;
   try {
     const Teuchos::XMLObject xml = Teuchos::FileInputSource(path).getObject();
-    checkNumbers(xml, "", path);
+    checkEntries(xml, "", path);
     Teuchos::updateParametersFromXmlFile(path, Teuchos::outArg(deck));
   } catch (core::UserError&) {
     throw;

@@ -88,6 +88,10 @@ signorini_add_bad_deck_test(malformed_xml ${decks}/malformed.xml
 signorini_add_bad_deck_test(missing_deck ${decks}/does-not-exist.xml
   "does-not-exist[.]xml: cannot open the deck"
   "missing or unreadable file")
+signorini_add_bad_deck_test(duplicate_key ${decks}/duplicate-key.xml
+  "duplicate-key[.]xml: 'Time Integration/Final Time' is given twice")
+signorini_add_bad_deck_test(directory_as_deck ${decks}
+  "decks: is a directory, not a deck")
 
 # Validation against Simulation::getValidParameters().
 signorini_add_bad_deck_test(unknown_key ${decks}/unknown-key.xml
