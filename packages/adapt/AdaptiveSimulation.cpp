@@ -102,24 +102,38 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
 
 namespace {
 
+/// The keys of the Adaptivity sublist \p a that the deck sets to other than their defaults,
+/// among those \p withoutEffect accepts, comma separated.
+template <class Filter>
+std::string keysSetWithoutEffect(const core::ParameterList& a, Filter withoutEffect) {
+  // Compared with the defaults (Teuchos' isDefault flag is not set when validation adds the whole sublist).
+  const auto defaults = AdaptiveSimulation::getValidParameters().sublist("Adaptivity");
+  std::string keys;
+  for (auto it = a.begin(); it != a.end(); ++it)
+    if (withoutEffect(a.name(it)) && !(a.entry(it).getAny() == defaults.getEntry(a.name(it)).getAny()))
+      keys += (keys.empty() ? "" : ", ") + a.name(it);
+  return keys;
+}
+
 /// Settings that are valid one by one but cannot work together: user errors naming the keys. With
-/// Strategy = none the Adaptivity keys the deck sets have no effect: a warning lists them.
+/// Strategy = none the Adaptivity keys the deck sets have no effect, with Strategy = uniform the
+/// marking's: a warning lists them.
 void checkAdaptivitySettings(const core::ParameterList& deck, const std::string& deckPath, const Comm& comm) {
   const auto& a = deck.sublist("Adaptivity");
   const std::string strategy = a.get<std::string>("Strategy");
+  auto warn = [&](const std::string& what, const std::string& keys) {
+    if (!keys.empty() && comm.getRank() == 0)
+      std::cerr << "signorini: warning: " << deckPath << ": Adaptivity/Strategy = " << strategy << " " << what
+                << "; without effect: Adaptivity/" << keys << std::endl;
+  };
   if (strategy == "none") {
-    // Compared with the defaults (Teuchos' isDefault flag is not set when validation adds the whole sublist).
-    const auto defaults = AdaptiveSimulation::getValidParameters().sublist("Adaptivity");
-    std::string ignored;
-    for (auto it = a.begin(); it != a.end(); ++it)
-      if (a.name(it) != "Strategy" && !(a.entry(it).getAny() == defaults.getEntry(a.name(it)).getAny()))
-        ignored += (ignored.empty() ? "" : ", ") + a.name(it);
-    if (!ignored.empty() && comm.getRank() == 0)
-      std::cerr << "signorini: warning: " << deckPath
-                << ": Adaptivity/Strategy = none runs one pass on the deck's mesh; without effect: Adaptivity/"
-                << ignored << std::endl;
+    warn("runs one pass on the deck's mesh", keysSetWithoutEffect(a, [](const std::string& k) { return k != "Strategy"; }));
     return;
   }
+  if (strategy == "uniform")
+    warn("refines every cell", keysSetWithoutEffect(a, [](const std::string& k) {
+           return k == "Refinement Fraction" || k == "Coarsening Fraction" || k == "Tie Tolerance";
+         }));
   const int cycles = a.get<int>("Cycles");
   const double fraction = a.get<double>("Refinement Fraction"), coarsen = a.get<double>("Coarsening Fraction");
   const int maxLevel = a.get<int>("Maximum Level"), baseLevel = deck.sublist("Mesh").get<int>("Refinement Level");
@@ -242,7 +256,14 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       }
       const auto start = std::chrono::steady_clock::now();
       std::vector<std::shared_ptr<mesh::Forest>> next(nSteps);
-      const bool lastPlanned = l == cycles - 1;  // no next cycle: nothing to mark or refine
+      // No next cycle: nothing to mark or refine. Also when every cell of every step is at the
+      // Maximum Level and none is coarsened: the next cycle would repeat this one.
+      bool atMaximum = l > 0 && (coarsen == 0 || strategy == "uniform");
+      for (size_t n = 0; atMaximum && n < meshes.size(); ++n) atMaximum = meshes[n]->minimumLevel() >= maxLevel;
+      if (atMaximum && l < cycles - 1)
+        core::rootOut(rank) << "signorini: cycle " << l << " is the last: every cell of every step is at Adaptivity/"
+                            << "Maximum Level = " << maxLevel << ", so a further cycle would repeat it" << std::endl;
+      const bool lastPlanned = l == cycles - 1 || atMaximum;
       double etaMax = 0;
       const double s1Tolerance = deck_.sublist("Estimator").get<double>("S1 Relative Tolerance");
       dynamics::StepHook hook = [&](const dynamics::StepView& s) {
@@ -331,7 +352,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         return it == last.phaseSeconds.end() ? 0.0 : it->second;
       };
       const auto tr0 = std::chrono::steady_clock::now();
-      const bool stop = (maxDofs > 0 && last.totalDofs >= maxDofs) || (tol > 0 && etaMax <= tol) || l + 1 == cycles;
+      const bool stop = (maxDofs > 0 && last.totalDofs >= maxDofs) || (tol > 0 && etaMax <= tol) || lastPlanned;
       if (!stop) {  // Algorithm 5.3, then the next cycle's meshes.
         mesh::regulariseSteps(next);
         meshes = next;

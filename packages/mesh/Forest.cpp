@@ -1,6 +1,7 @@
 #include "Forest.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <set>
 #include <tuple>
 
@@ -76,6 +77,16 @@ void Forest::localLevels(std::vector<unsigned char>& levels, p4est_quadrant_t& f
       levels.push_back(static_cast<unsigned char>(p4est_quadrant_array_index(quadrants, i)->level));
   }
   first = p4est_->global_first_position[p4est_->mpirank];
+}
+
+int Forest::minimumLevel() const {
+  std::vector<unsigned char> levels;
+  p4est_quadrant_t first;
+  localLevels(levels, first);
+  int local = std::numeric_limits<int>::max(), global = 0;
+  for (unsigned char l : levels) local = std::min(local, static_cast<int>(l));
+  MPI_Allreduce(&local, &global, 1, MPI_INT, MPI_MIN, comm_);
+  return global - coarse_->levelOffset();
 }
 
 void Forest::compact() {

@@ -60,6 +60,9 @@ class Forest {
   /// on every rank; either forest may be compact). Equal cells partitioned differently over the
   /// ranks count as different (only a rebuild that was not needed, never a wrong reuse).
   bool sameCells(const Forest& other) const;
+  /// The smallest level of all cells of all ranks, counted from the coarse mesh's cells (as
+  /// Q1Mesh::cellLevel; either form). Collective.
+  int minimumLevel() const;
   /// Bytes of memory this rank uses for the forest (in whichever form it is).
   size_t bytes() const;
   /// Enforces the 2:1 face balance (at most one hanging node per edge; paper Algorithm 5.2).

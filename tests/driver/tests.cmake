@@ -287,6 +287,21 @@ signorini_add_driver_test(adaptive_keys_without_strategy EXIT 0
   REGEX "warning: .*Strategy = none .*without effect: Adaptivity/(Cycles, Refinement Fraction|Refinement Fraction, Cycles)\n"
         "good[.]xml done: 4 steps"
   FILES good.steps.csv good.e)
+# Strategy = uniform marks every cell: a warning names the marking keys the deck sets.
+signorini_add_driver_test(adaptive_uniform_ignores_fractions EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=2"
+       --set "Adaptivity/Refinement Fraction=0.2" ${decks}/good.xml
+  REGEX "warning: .*Strategy = uniform refines every cell; without effect: Adaptivity/Refinement Fraction\n"
+        "good[.]xml done: 4 steps"
+  FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
+# Once every cell is at the Maximum Level, a further cycle would repeat the last: the run stops
+# there (cycle 1 of 4) and says why; that cycle's files get the final names.
+signorini_add_driver_test(adaptive_stops_at_maximum_level EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=4"
+       --set "Adaptivity/Maximum Level=1" ${decks}/good.xml
+  REGEX "cycle 1 is the last: every cell of every step is at Adaptivity/Maximum Level = 1"
+        "cycle 1: total unknowns 324," "good[.]xml done: 4 steps"
+  FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
 signorini_add_driver_test(mesh_too_many_cells_per_rank EXIT 1
   ARGS --output-dir {OUT} --set "Mesh/Refinement Level=18" ${decks}/good.xml
   REGEX "Mesh/Cells X = 4, Cells Y = 4, Refinement Level = 18: a mesh of 1[.]1e[+]12 cells on 2 rank[(]s[)]: .* more than the .* that 32-bit local indices allow")
