@@ -47,6 +47,20 @@ ParameterList readDeck(const std::string& path, const std::vector<std::string>& 
 
 int main(int argc, char** argv) {
   signorini::core::keepFreedMemory();
+  // Kokkos answers "--help" and "-h" with its own 60 lines of options: they are kept from it and
+  // mean our usage (Kokkos' own is "--kokkos-help").
+  std::vector<char*> args{argv[0]};
+  bool help = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i], before = argv[i - 1];
+    if ((arg == "--help" || arg == "-h") && before != "--set" && before != "--output-dir")
+      help = true;
+    else
+      args.push_back(argv[i]);
+  }
+  args.push_back(nullptr);
+  argc = static_cast<int>(args.size()) - 1;
+  argv = args.data();
   Tpetra::ScopeGuard tpetra(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   const int rank = comm->getRank();
@@ -55,12 +69,13 @@ int main(int argc, char** argv) {
   std::vector<std::string> decks, overrides;
   std::string outputDir;
   bool checkOnly = false;
+  if (help) {
+    out << kUsage;
+    return 0;
+  }
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--help" || arg == "-h") {
-      out << kUsage;
-      return 0;
-    } else if (arg == "--print-parameters") {
+    if (arg == "--print-parameters") {
       signorini::core::printParameters(out, signorini::adapt::AdaptiveSimulation::getValidParameters());
       return 0;
     } else if (arg == "--check") {

@@ -164,6 +164,15 @@ signorini_add_driver_test(usage_option_without_value EXIT 2
   ARGS --output-dir
   REGEX "--output-dir needs a value")
 
+# --help and -h print our usage and nothing before it (Kokkos used to answer them with its own
+# options first); Kokkos' options still pass through to Kokkos.
+signorini_add_driver_test(usage_help EXIT 0
+  ARGS --help
+  REGEX "^usage: signorini [[]options[]]")
+signorini_add_driver_test(usage_help_short_with_kokkos_option EXIT 0
+  ARGS --kokkos-disable-warnings -h
+  REGEX "^usage: signorini [[]options[]]")
+
 # Batches: a failing deck does not stop the others, but the exit status says something failed.
 signorini_add_driver_test(batch_bad_then_good EXIT 1
   ARGS --output-dir {OUT} ${decks}/unknown-key.xml ${decks}/good.xml
