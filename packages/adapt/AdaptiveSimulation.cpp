@@ -225,8 +225,8 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   // The run's files appear together when it has succeeded, replacing every file an earlier run
   // left under this base (also cycle tables and series it does not write again); a failed run
   // leaves the earlier files as they were.
-  sim_->createOutputDirectory();
   io::OutputStaging staging;
+  sim_->createOutputDirectory();
   io::retireOnCommit(base, io::isRunOutputSuffix);
   std::unique_ptr<io::CsvWriter> cyclesCsv;
   core::onRootCollectively(*comm, [&] {

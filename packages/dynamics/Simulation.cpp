@@ -101,14 +101,11 @@ std::string stemOf(const std::string& path) {
 
 /// Checks on rank 0 that \p dir can hold the run's files by creating it (and its parents) and a
 /// probe file there; with \p keep false, removes again every directory it created (a --check
-/// leaves no trace). The verdict is shared so every rank fails together.
+/// leaves no trace), with \p keep true, hands them to the open staging scope, which removes them
+/// if the run fails (io::removeOnFailure). The verdict is shared so every rank fails together.
 void ensureWritableDirectory(const std::string& dir, const Comm& comm, bool keep) {
   core::onRootCollectively(comm, [&] {
     std::vector<std::string> created;
-    auto removeCreated = [&] {
-      if (!keep)
-        for (auto it = created.rbegin(); it != created.rend(); ++it) ::rmdir(it->c_str());
-    };
     std::string partial;
     std::stringstream ss(dir);
     if (!dir.empty() && dir[0] == '/') partial = "/";
@@ -123,7 +120,10 @@ void ensureWritableDirectory(const std::string& dir, const Comm& comm, bool keep
       std::fclose(f);
       std::remove(probe.c_str());
     }
-    removeCreated();
+    if (!f || !keep)
+      for (auto it = created.rbegin(); it != created.rend(); ++it) ::rmdir(it->c_str());
+    else
+      io::removeOnFailure(created);
     if (!f) SIGNORINI_USER_ERROR("Output/Directory: cannot write to '" << dir << "'");
   });
 }
@@ -535,8 +535,8 @@ void Simulation::checkMeshFits(double globalCells, const std::string& cause, dou
 RunSummary Simulation::run() {
   // The run's files appear when it has succeeded and replace every file an earlier run left under
   // this base; a failed run leaves them as they were (io::OutputStaging).
-  createOutputDirectory();
   io::OutputStaging staging;
+  createOutputDirectory();
   io::retireOnCommit(outputBase(), io::isRunOutputSuffix);
   std::vector<std::shared_ptr<mesh::Forest>> meshes(numSteps(), impl_->initialForest);
   auto summary = runPass(meshes, StepHook(), PassOptions());

@@ -107,7 +107,8 @@ class Simulation {
   long long initialUnknowns() const;
   RCP<const Comm> comm() const;
   const std::string& outputBase() const;  ///< output folder + "/" + basename
-  /// Creates the output folder (and its parents) if it is missing; run() does this first. The
+  /// Creates the output folder (and its parents) if it is missing; run() does this first, in its
+  /// staging scope, so that a failed run removes them again (io::removeOnFailure). The
   /// constructor only checks that it could (and leaves no folder behind). Collective.
   void createOutputDirectory() const;
   /// Throws core::UserError naming \p cause if a step mesh of \p globalCells cells certainly

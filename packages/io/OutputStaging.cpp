@@ -25,6 +25,7 @@ struct Staging {
   int depth = 0;
   std::map<std::string, std::string> partOf;  // final path -> staged file
   std::vector<Retirement> retired;
+  std::vector<std::string> createdDirectories;  // outermost first
 };
 
 Staging& staging() {
@@ -84,8 +85,11 @@ OutputStaging::~OutputStaging() {
   if (!outermost_ || done_) return;
   std::error_code ec;
   for (const auto& [finalPath, part] : s.partOf) fs::remove(part, ec);
+  // fs::remove of a directory is rmdir: it stays if something else was put there meanwhile.
+  for (auto it = s.createdDirectories.rbegin(); it != s.createdDirectories.rend(); ++it) fs::remove(*it, ec);
   s.partOf.clear();
   s.retired.clear();
+  s.createdDirectories.clear();
 }
 
 void OutputStaging::commit() {
@@ -96,6 +100,7 @@ void OutputStaging::commit() {
   auto retired = std::move(s.retired);
   s.partOf.clear();
   s.retired.clear();
+  s.createdDirectories.clear();
   // The staged files first; if one cannot take its name, the run's files all go (those renamed
   // already and the others) and nothing is retired.
   std::vector<std::string> renamed;
@@ -116,6 +121,11 @@ void OutputStaging::commit() {
   for (const auto& f : renamed) keep.insert(fs::path(f).lexically_normal());
   for (const auto& r : retired)
     for (const auto& f : retiredFiles(r, keep)) fs::remove(f, ec);
+}
+
+void removeOnFailure(const std::vector<std::string>& createdDirectories) {
+  auto& s = staging();
+  if (s.depth > 0) s.createdDirectories.insert(s.createdDirectories.end(), createdDirectories.begin(), createdDirectories.end());
 }
 
 void publish(const std::string& part, const std::string& finalPath) {

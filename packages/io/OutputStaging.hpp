@@ -5,11 +5,13 @@
 /// adapt::AdaptiveSimulation::run) the final names are only recorded, and commit() at the end of
 /// the run makes them visible together: it renames every staged file, then removes the files an
 /// earlier run left under the names retired with retireOnCommit() that this run did not write
-/// again. A run that fails (its scope ends without commit) removes its staged files, so the
+/// again. A run that fails (its scope ends without commit) removes its staged files (and the
+/// output directories it created, if empty), so the
 /// results of an earlier run in the same directory stay as they were. The state is per process
 /// (the output files are written on rank 0).
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace signorini::io {
 
@@ -32,6 +34,9 @@ class OutputStaging {
   bool done_ = false;
 };
 
+/// Directories the open scope's run created for its output (parents first): a run that fails
+/// removes them again if they are empty. Outside a scope: nothing.
+void removeOnFailure(const std::vector<std::string>& createdDirectories);
 /// Renames \p part to \p finalPath now, or at the commit of the open scope.
 void publish(const std::string& part, const std::string& finalPath);
 /// Removes the published file \p finalPath (in a scope: its staged file, or nothing).

@@ -193,6 +193,12 @@ signorini_add_driver_test(solver_failure_mid_run EXIT 1
   ARGS --output-dir {OUT} ${decks}/solver-failure.xml
   REGEX "step 1/4"
         "solver-failure[.]xml: solver failure: linear solver .* did not reach the relative tolerance")
+signorini_add_driver_test(solver_failure_in_new_directory EXIT 1
+  ARGS --output-dir {OUT}/new/deeper ${decks}/solver-failure.xml
+  REGEX "solver-failure[.]xml: solver failure")
+signorini_add_driver_test(adaptive_failure_in_new_directory EXIT 1
+  ARGS --output-dir {OUT}/new --set "Adaptivity/Strategy=uniform" ${decks}/solver-failure.xml
+  REGEX "solver-failure[.]xml: solver failure")
 
 # Rerunning into a directory that holds an earlier run's results under the same base name: a run
 # that fails leaves all of them as they were (its own files appear only when the whole run has
