@@ -83,7 +83,8 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
   core::addDouble(a, "Maximum Total Unknowns", 0.0,
                   "Stop after the cycle whose total unknowns (sum over steps) reach this number; 0: no limit", 0.0);
   core::addDouble(a, "Tolerance", 0.0, "Stop after the cycle whose estimate max_n eta^n is below this; 0: off", 0.0);
-  core::addInt(a, "Maximum Level", 14, "Cells are not refined beyond this level", 0, 25);
+  core::addInt(a, "Maximum Level", 14, "Cells are not refined beyond this level; once every cell of every step is at it (and nothing "
+               "coarsens), that cycle is the last", 0, 25);
   core::addChoice(a, "Transfer", "L2 projection", "I_h between step meshes (paper Sec. 3.2)",
                   {"L2 projection", "interpolation"});
   core::addBool(a, "Report Transfer Energy", true,

@@ -66,7 +66,8 @@ struct LinearSolver::Impl {
 
 core::ParameterList LinearSolver::getValidParameters() {
   core::ParameterList p("Linear Solver");
-  core::addString(p, "Method", "CG", "Belos solver name (13.2: \"CG\", \"PSEUDOBLOCK CG\", \"GMRES\", ...); A is SPD");
+  core::addString(p, "Method", "CG", "Belos solver name (13.2: \"CG\", \"PSEUDOBLOCK CG\", \"GMRES\", \"MINRES\", ...; an unknown name "
+                  "is refused with the list Belos knows); A is SPD. Parallel/Reproducible Arithmetic: \"CG\" only");
   core::addChoice(p, "Preconditioner", "auto",
                   "\"auto\": Jacobi if c k / h_min is below 'Auto MueLu Courant Number', else MueLu (DESIGN 1.6)",
                   {"auto", "MueLu", "Jacobi", "none"});
