@@ -17,6 +17,7 @@
 #include "Allocator.hpp"
 #include "DeckReader.hpp"
 #include "Error.hpp"
+#include "Interrupt.hpp"
 #include "ParameterTools.hpp"
 #include "PhaseTimers.hpp"
 #include "AdaptiveSimulation.hpp"
@@ -62,6 +63,7 @@ int main(int argc, char** argv) {
   argc = static_cast<int>(args.size()) - 1;
   argv = args.data();
   Tpetra::ScopeGuard tpetra(&argc, &argv);
+  signorini::core::installInterruptHandlers();
   auto comm = Tpetra::getDefaultComm();
   const int rank = comm->getRank();
   auto& out = signorini::core::rootOut(rank);
@@ -123,6 +125,9 @@ int main(int argc, char** argv) {
         out << " " << phase << " " << std::fixed << std::setprecision(3) << seconds;
       out << std::endl;
       for (const auto& f : summary.files) out << "  wrote " << f << std::endl;
+    } catch (signorini::core::Interrupted& e) {  // the run's files are gone; the remaining decks do not run
+      if (rank == 0) std::cerr << "signorini: " << path << ": " << e.what() << "; its files were removed" << std::endl;
+      return 128 + e.signal();
     } catch (signorini::core::UserError& e) {
       ++failures;
       const std::string what = e.what();

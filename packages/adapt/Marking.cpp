@@ -91,7 +91,7 @@ long long cellsOfFraction(double fraction, long long cells, bool roundUp) {
   // A decimal fraction is stored with a relative error up to 2^-53 and the product adds as much:
   // 0.55 * 100 gives 55.000000000000007, which means 55 cells, not 56.
   const double nearest = std::round(x);
-  if (std::abs(x - nearest) <= 8 * std::numeric_limits<double>::epsilon() * std::max(1.0, x))
+  if (std::abs(x - nearest) <= 8 * std::numeric_limits<double>::epsilon() * x)  // relative: 1e-17 of 100 is 1
     return static_cast<long long>(nearest);
   return static_cast<long long>(roundUp ? std::ceil(x) : std::floor(x));
 }

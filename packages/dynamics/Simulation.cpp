@@ -24,6 +24,7 @@
 #include "OutputStaging.hpp"
 #include "Error.hpp"
 #include "Forest.hpp"
+#include "Interrupt.hpp"
 #include "JacobiCG.hpp"
 #include "ReproducibleLinearAlgebra.hpp"
 #include "ReproducibleSum.hpp"
@@ -95,8 +96,10 @@ std::string directoryOf(const std::string& path) {
 std::string stemOf(const std::string& path) {
   const auto slash = path.find_last_of('/');
   std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  const auto dot = name.rfind(".xml");
-  return dot == std::string::npos ? name : name.substr(0, dot);
+  const std::string xml = ".xml";
+  if (name.size() >= xml.size() && name.compare(name.size() - xml.size(), xml.size(), xml) == 0)
+    name.resize(name.size() - xml.size());
+  return name;
 }
 
 /// Checks on rank 0 that \p dir can hold the run's files by creating it (and its parents) and a
@@ -439,7 +442,9 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   if (reproducible && I.components != 1)
     SIGNORINI_USER_ERROR("Parallel/Reproducible Arithmetic: available for Problem/Type = \"scalar wave\" only "
                          "(the elasticity assembler and estimator do not order their sums yet)");
-  solvers::LinearSolver::checkParameters(deck.sublist("Linear Solver"), reproducible);
+  const std::string solverWarning = solvers::LinearSolver::checkParameters(deck.sublist("Linear Solver"), reproducible);
+  if (!solverWarning.empty() && comm->getRank() == 0)
+    std::cerr << "signorini: warning: " << deckPath << ": " << solverWarning << std::endl;
   core::setReproducibleArithmetic(reproducible);
   if (file.empty())
     checkMeshFits(meshParams.get<int>("Cells X") * std::pow(4.0, level) * meshParams.get<int>("Cells Y"),
@@ -496,6 +501,9 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
                                              << "': must be a plain file name (no '/', not '.', '..' or blank); "
                                                 "Output/Directory or --output-dir chooses the folder");
   I.basename = basename.empty() ? stemOf(deckPath) : basename;
+  if (basename.empty() && (I.basename.empty() || I.basename[0] == '.'))
+    SIGNORINI_USER_ERROR("the deck's file name '" << deckPath << "' gives the output basename '" << I.basename
+                                                 << "' (hidden or empty files); set Output/Basename");
   I.outputBase = I.outDir + "/" + I.basename;
   ensureWritableDirectory(I.outDir, *comm, false);
 }
@@ -680,6 +688,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   try {
     writeOutputs(0, 0.0, solvers::ContactQPResult(), 0.0, 0.0, 0.0, StepExtras());
     for (int n = 1; n <= nSteps; ++n) {
+      core::throwIfInterrupted(*I.comm);
       const double t = n * k;
       const auto tR0 = std::chrono::steady_clock::now();
       // The step's Newmark predictors, formed on the mesh of step n-1 and moved with it.

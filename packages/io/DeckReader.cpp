@@ -10,7 +10,7 @@
 
 #include <Teuchos_FileInputSource.hpp>
 #include <Teuchos_XMLObject.hpp>
-#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <Teuchos_XMLParameterListReader.hpp>
 
 #include "Error.hpp"
 
@@ -39,7 +39,8 @@ void checkEntries(const Teuchos::XMLObject& node, const std::string& path, const
     const auto& child = node.getChild(i);
     const std::string name = child.hasAttribute("name") ? child.getAttribute("name") : "?";
     const std::string full = path.empty() ? name : path + "/" + name;
-    if ((child.getTag() == "ParameterList" || child.getTag() == "Parameter") && !names.insert(name).second)
+    if ((child.getTag() == "ParameterList" || child.getTag() == "Parameter") && child.hasAttribute("name") &&
+        !names.insert(name).second)
       SIGNORINI_USER_ERROR(file << ": '" << full << "' is given twice");
     if (child.getTag() == "ParameterList") {
       checkEntries(child, full, file);
@@ -62,9 +63,10 @@ Teuchos::ParameterList readDeckFile(const std::string& path) {
   if (!std::ifstream(path)) SIGNORINI_USER_ERROR(path << ": cannot open the deck (missing or unreadable file)");
   Teuchos::ParameterList deck;
   try {
+    // Read once: a deck from a pipe ("<(...)", /dev/stdin) cannot be read a second time.
     const Teuchos::XMLObject xml = Teuchos::FileInputSource(path).getObject();
     checkEntries(xml, "", path);
-    Teuchos::updateParametersFromXmlFile(path, Teuchos::outArg(deck));
+    deck = Teuchos::XMLParameterListReader().toParameterList(xml);
   } catch (core::UserError&) {
     throw;
   } catch (std::exception& e) {

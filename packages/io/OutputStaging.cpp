@@ -66,6 +66,9 @@ bool isExodusSeriesSuffix(const std::string& suffix) {
 }
 
 bool isRunOutputSuffix(std::string suffix) {
+  const std::string part = ".part";  // left by a run that was killed
+  if (suffix.size() > part.size() && suffix.compare(suffix.size() - part.size(), part.size(), part) == 0)
+    suffix.resize(suffix.size() - part.size());
   if (suffix.rfind(".cycle", 0) == 0) {  // ".cycle<digits>" first: a file of that cycle follows
     size_t end = 6;
     while (end < suffix.size() && std::isdigit(static_cast<unsigned char>(suffix[end]))) ++end;

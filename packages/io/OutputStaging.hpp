@@ -49,7 +49,8 @@ void republish(const std::string& from, const std::string& to);
 void retireOnCommit(const std::string& basePath, const std::function<bool(const std::string& suffix)>& matches);
 /// Whether "<base><suffix>" is a file that a run with output base "<base>" writes: its step and
 /// cycle tables ("<base>.steps.csv", "<base>.cycles.csv"), its Exodus series ("<base>.e",
-/// "<base>.e-s.<digits>") and those files of single cycles ("<base>.cycle<digits>.steps.csv", ...).
+/// "<base>.e-s.<digits>") and those files of single cycles ("<base>.cycle<digits>.steps.csv", ...),
+/// also as the ".part" files that a killed run leaves.
 bool isRunOutputSuffix(std::string suffix);
 /// Whether \p suffix is ".e-s.<digits>", the suffix of the files after the first of an Exodus series.
 bool isExodusSeriesSuffix(const std::string& suffix);

@@ -1,6 +1,8 @@
 #include "LinearSolver.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <map>
 
 #include <BelosLinearProblem.hpp>
 #include <BelosSolverFactory.hpp>
@@ -81,26 +83,55 @@ core::ParameterList LinearSolver::getValidParameters() {
   return p;
 }
 
-void LinearSolver::checkParameters(const core::ParameterList& params, bool reproducible) {
+const std::vector<std::string>& LinearSolver::supportedMethods() {
+  // Belos 13.2's methods that solve our SPD systems with a left preconditioner and our parameters
+  // quietly (BICGSTAB and FLEXIBLE GMRES need a right one, FIXED POINT diverges, the polynomial and
+  // seed variants refuse "Convergence Tolerance" or print debugging output, LSQR its iterations).
+  static const std::vector<std::string> methods = {"CG",    "PSEUDOBLOCK CG", "BLOCK CG",          "GMRES",
+                                                   "PSEUDOBLOCK GMRES", "BLOCK GMRES", "MINRES", "TFQMR",
+                                                   "PSEUDOBLOCK TFQMR", "GCRODR"};
+  return methods;
+}
+
+std::string LinearSolver::canonicalMethod(const std::string& method) {
+  std::string name;
+  for (char c : method) name += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  static const std::map<std::string, std::string> aliases = {
+      {"PSEUDO BLOCK CG", "PSEUDOBLOCK CG"},
+      {"PSEUDOBLOCKCG", "PSEUDOBLOCK CG"},
+      {"PSEUDO BLOCK GMRES", "PSEUDOBLOCK GMRES"},
+      {"PSEUDOBLOCKGMRES", "PSEUDOBLOCK GMRES"},
+      {"TRANSPOSE-FREE QMR", "TFQMR"},
+      {"PSEUDO BLOCK TFQMR", "PSEUDOBLOCK TFQMR"},
+      {"PSEUDO BLOCK TRANSPOSE-FREE QMR", "PSEUDOBLOCK TFQMR"},
+      {"RECYCLING GMRES", "GCRODR"}};
+  const auto alias = aliases.find(name);
+  if (alias != aliases.end()) name = alias->second;
+  const auto& methods = supportedMethods();
+  return std::find(methods.begin(), methods.end(), name) == methods.end() ? std::string() : name;
+}
+
+std::string LinearSolver::checkParameters(const core::ParameterList& params, bool reproducible) {
   const std::string method = params.get<std::string>("Method");
   const std::string preconditioner = params.get<std::string>("Preconditioner");
-  if (reproducible && preconditioner != "auto" && preconditioner != "Jacobi")
+  const std::string canonical = canonicalMethod(method);
+  if (canonical.empty()) {
+    std::ostringstream names;
+    for (const auto& name : supportedMethods()) names << (names.tellp() > 0 ? ", " : "") << name;
+    SIGNORINI_USER_ERROR("Linear Solver/Method: \"" << method << "\" is not one of the Krylov methods for these "
+                         "symmetric positive definite systems: " << names.str() << " (any case)");
+  }
+  if (!reproducible) return "";
+  if (preconditioner != "auto" && preconditioner != "Jacobi")
     SIGNORINI_USER_ERROR("Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\" (or \"auto\"), not \""
                          << preconditioner << "\"");
-  if (reproducible && method != "CG")
+  if (canonical != "CG")
     SIGNORINI_USER_ERROR("Linear Solver/Method: reproducible arithmetic solves with its own Jacobi CG and needs "
                          "\"CG\", not \"" << method << "\"");
-  Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
-  if (!factory.isSupported(method)) {
-    std::ostringstream names;
-    std::vector<std::string> seen;
-    for (const auto& name : factory.supportedSolverNames())
-      if (std::find(seen.begin(), seen.end(), name) == seen.end()) {
-        names << (seen.empty() ? "" : ", ") << name;
-        seen.push_back(name);
-      }
-    SIGNORINI_USER_ERROR("Linear Solver/Method: Belos does not know \"" << method << "\"; it knows " << names.str());
-  }
+  std::string ignored;
+  for (const char* sublist : {"Belos", "MueLu"})
+    if (params.sublist(sublist).numParams() > 0) ignored += std::string(ignored.empty() ? "" : ", ") + "Linear Solver/" + sublist;
+  return ignored.empty() ? "" : "reproducible arithmetic solves with its own Jacobi CG; without effect: " + ignored;
 }
 
 LinearSolver::LinearSolver(const core::ParameterList& params, RCP<const Comm> comm) : impl_(std::make_unique<Impl>()) {
@@ -158,16 +189,21 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
   belosParams->set("Convergence Tolerance", I.params.get<double>("Relative Tolerance"));
   belosParams->set("Maximum Iterations", I.params.get<int>("Maximum Iterations"));
   Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
+  const std::string method = canonicalMethod(I.params.get<std::string>("Method"));
+  SIGNORINI_ASSERT(!method.empty(), "Linear Solver/Method is checked by checkParameters()");
+  I.solver = factory.create(method, Teuchos::null);
+  // ||r|| <= tol ||b|| where the method lets us choose the scaling (MINRES, e.g., does not).
+  const auto valid = I.solver->getValidParameters();
+  for (const char* scaling : {"Implicit Residual Scaling", "Explicit Residual Scaling"})
+    if (valid->isParameter(scaling) && !belosParams->isParameter(scaling)) belosParams->set(scaling, "Norm of RHS");
   try {
-    I.solver = factory.create(I.params.get<std::string>("Method"), Teuchos::null);
-    // ||r|| <= tol ||b|| where the method lets us choose the scaling (MINRES, e.g., does not).
-    const auto valid = I.solver->getValidParameters();
-    for (const char* scaling : {"Implicit Residual Scaling", "Explicit Residual Scaling"})
-      if (valid->isParameter(scaling) && !belosParams->isParameter(scaling)) belosParams->set(scaling, "Norm of RHS");
     I.solver->setParameters(belosParams);
-  } catch (std::exception& e) {
-    SIGNORINI_USER_ERROR("Linear Solver/Method: Belos cannot create '" << I.params.get<std::string>("Method")
-                                                                       << "': " << e.what());
+  } catch (std::exception& e) {  // Teuchos' message: the first lines name the key; the rest lists the valid ones
+    std::string what = core::withoutSourceLocation(e.what());
+    const auto valid = what.find("The valid parameters");
+    if (valid != std::string::npos) what.resize(valid);
+    while (!what.empty() && std::isspace(static_cast<unsigned char>(what.back()))) what.pop_back();
+    SIGNORINI_USER_ERROR("Linear Solver/Belos: Belos' \"" << method << "\" refuses its parameters: " << what);
   }
   I.problem = Teuchos::rcp(new Belos::LinearProblem<Scalar, MultiVector, Operator>());
   I.problem->setOperator(Anc);
@@ -201,12 +237,17 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
   I.problem->setRHS(Teuchos::rcpFromRef(b));
   I.problem->setProblem();
   I.solver->setProblem(I.problem);
-  Belos::ReturnType ret;
+  Belos::ReturnType ret = Belos::Unconverged;
   try {
     ret = I.solver->solve();
-  } catch (const std::logic_error& e) {  // Belos refuses the problem, e.g. BICGSTAB a left preconditioner
-    SIGNORINI_USER_ERROR("Linear Solver/Method: Belos' \"" << I.params.get<std::string>("Method")
-                                                            << "\" cannot solve this system: " << e.what());
+  } catch (const Belos::StatusTestError& e) {  // Belos 13.2 throws it for a residual norm that is NaN
+    std::ostringstream os;
+    os << "linear solver " << I.params.get<std::string>("Method") << " + " << I.precName << " stopped: "
+       << (std::string(e.what()).find("NaN") != std::string::npos
+               ? "a residual is not a number, so the system or its right-hand side is not finite (are the "
+                 "problem's data within the range of doubles?)"
+               : core::withoutSourceLocation(e.what()));
+    throw core::SolverError(os.str());
   }
   const int its = I.solver->getNumIters();
   I.iterations += its;

@@ -6,6 +6,7 @@
 /// Belos and MueLu headers stay in LinearSolver.cpp (compile time).
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "ParameterTools.hpp"
 #include "Types.hpp"
@@ -15,11 +16,17 @@ namespace signorini::solvers {
 class LinearSolver {
  public:
   static core::ParameterList getValidParameters();
+  /// The Belos methods (canonical names) that solve the SPD systems here with a left preconditioner.
+  static const std::vector<std::string>& supportedMethods();
+  /// \p method in any case, or one of Belos' aliases ("PSEUDO BLOCK CG"), as its name in
+  /// supportedMethods(); empty if it is none of them.
+  static std::string canonicalMethod(const std::string& method);
   /// Cross-parameter rules of a validated "Linear Solver" sublist, checked before any output
-  /// exists: Belos must know "Method"; under reproducible arithmetic (our own Jacobi CG) the
-  /// method must be "CG" and the preconditioner "Jacobi" or "auto". Throws core::UserError
-  /// naming the key.
-  static void checkParameters(const core::ParameterList& params, bool reproducible);
+  /// exists: "Method" is one of supportedMethods(); under reproducible arithmetic (our own Jacobi
+  /// CG) it must be "CG" and the preconditioner "Jacobi" or "auto". Throws core::UserError naming
+  /// the key. Returns a warning (empty if none): the Belos and MueLu sublists a deck sets have no
+  /// effect under reproducible arithmetic.
+  static std::string checkParameters(const core::ParameterList& params, bool reproducible);
   /// \param params a validated "Linear Solver" sublist.
   LinearSolver(const core::ParameterList& params, RCP<const Comm> comm);
   ~LinearSolver();

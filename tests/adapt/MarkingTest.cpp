@@ -105,6 +105,10 @@ TEST(Marking, DecimalFractionsCountTheCellsTheyMean) {
     }
   }
   EXPECT_GT(offByRounding, 0);  // the plain ceil/floor would fail this test
+  // Tiny fractions of a few cells still mean a cell when rounded up (not a rounding error of 0).
+  EXPECT_EQ(adapt::cellsOfFraction(1e-17, 100, true), 1);
+  EXPECT_EQ(adapt::cellsOfFraction(1e-17, 100, false), 0);
+  EXPECT_EQ(adapt::cellsOfFraction(0.0, 100, true), 0);
   // ... and the strategies use it: 55% and 29% of 100 distinct indicators.
   auto comm = Tpetra::getDefaultComm();
   MPI_Comm raw = core::rawMpiComm(*comm);

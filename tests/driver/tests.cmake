@@ -383,3 +383,10 @@ signorini_add_driver_test(reproducible_arithmetic_scalar_only EXIT 1
 signorini_add_driver_test(check_reproducible_deck EXIT 0
   ARGS --check --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" ${decks}/good.xml
   REGEX "good[.]xml is valid; the run would do:" "reproducible arithmetic: the same bits on any number of ranks")
+
+# Ctrl-C and SIGTERM end a run cleanly (no files, exit status 128 + signal); a rerun removes the
+# '.part' files of a run that was killed outright.
+add_test(NAME driver_interrupted_run
+  COMMAND bash ${SIGNORINI_DRIVER_TEST_DIR}/interrupt.sh $<TARGET_FILE:signorini> ${SIGNORINI_MPIEXEC}
+          ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/driver/interrupted_run)
+set_tests_properties(driver_interrupted_run PROPERTIES TIMEOUT 120 LABELS driver PROCESSORS 2)
