@@ -51,10 +51,12 @@ int main(int argc, char** argv) {
   // Kokkos answers "--help" and "-h" with its own 60 lines of options: they are kept from it and
   // mean our usage (Kokkos' own is "--kokkos-help").
   std::vector<char*> args{argv[0]};
-  bool help = false;
+  bool help = false, kokkosHelp = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i], before = argv[i - 1];
-    if ((arg == "--help" || arg == "-h") && before != "--set" && before != "--output-dir")
+    const bool option = before != "--set" && before != "--output-dir";
+    kokkosHelp = kokkosHelp || (option && arg == "--kokkos-help");
+    if ((arg == "--help" || arg == "-h") && option)
       help = true;
     else
       args.push_back(argv[i]);
@@ -71,6 +73,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> decks, overrides;
   std::string outputDir;
   bool checkOnly = false;
+  if (kokkosHelp) return 0;  // Kokkos has printed its options
   if (help) {
     out << kUsage;
     return 0;

@@ -183,9 +183,15 @@ std::string AdaptiveSimulation::plan() const {
   if (strategy == "none") {
     os << "one pass on the initial mesh";
   } else {
-    os << "Algorithm 5.1: " << a.get<int>("Cycles") << " cycle(s), strategy " << strategy;
+    const int cycles = a.get<int>("Cycles");
+    const int levels = a.get<int>("Maximum Level") - deck_.sublist("Mesh").get<int>("Refinement Level");
+    os << "Algorithm 5.1: " << cycles << " cycle(s)";
+    if (strategy == "uniform" && cycles > levels + 1)
+      os << " (" << levels + 1 << ": then every cell is at Maximum Level " << a.get<int>("Maximum Level") << ")";
+    os << ", strategy " << strategy;
     if (strategy != "uniform") os << " " << 100 * a.get<double>("Refinement Fraction") << "%";
-    if (a.get<double>("Coarsening Fraction") > 0) os << ", coarsening " << 100 * a.get<double>("Coarsening Fraction") << "%";
+    if (strategy != "uniform" && a.get<double>("Coarsening Fraction") > 0)
+      os << ", coarsening " << 100 * a.get<double>("Coarsening Fraction") << "%";
     if (a.get<double>("Maximum Total Unknowns") > 0) os << ", stop at " << a.get<double>("Maximum Total Unknowns") << " total unknowns";
     if (a.get<double>("Tolerance") > 0) os << ", stop at eta <= " << a.get<double>("Tolerance");
   }

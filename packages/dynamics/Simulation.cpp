@@ -1,9 +1,11 @@
 #include "Simulation.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -102,32 +104,54 @@ std::string stemOf(const std::string& path) {
   return name;
 }
 
-/// Checks on rank 0 that \p dir can hold the run's files by creating it (and its parents) and a
-/// probe file there; with \p keep false, removes again every directory it created (a --check
-/// leaves no trace), with \p keep true, hands them to the open staging scope, which removes them
-/// if the run fails (io::removeOnFailure). The verdict is shared so every rank fails together.
-void ensureWritableDirectory(const std::string& dir, const Comm& comm, bool keep) {
+/// Whether a file can be created in the existing directory \p dir (a probe with a name of this
+/// process, created exclusively and removed again).
+bool canCreateIn(const std::string& dir) {
+  const std::string probe = dir + "/.signorini-write-test-" + std::to_string(::getpid());
+  const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
+  if (fd < 0) return false;
+  ::close(fd);
+  ::unlink(probe.c_str());
+  return true;
+}
+
+/// Checks on rank 0 that \p dir can hold the run's files. With \p create false (set-up, --check)
+/// nothing is created: every existing part of the path must be a directory and a file must be
+/// creatable in the deepest one (so another run's fresh folder is never touched). With \p create
+/// true (the run) the missing folders are made and handed to the open staging scope, which
+/// removes them if the run fails (io::removeOnFailure). The verdict is shared so every rank
+/// fails together.
+void ensureWritableDirectory(const std::string& dir, const Comm& comm, bool create) {
   core::onRootCollectively(comm, [&] {
     std::vector<std::string> created;
-    std::string partial;
+    std::string partial, deepest = ".";
+    bool ok = true;
     std::stringstream ss(dir);
-    if (!dir.empty() && dir[0] == '/') partial = "/";
-    for (std::string part; std::getline(ss, part, '/');) {
+    if (!dir.empty() && dir[0] == '/') partial = deepest = "/";
+    for (std::string part; ok && std::getline(ss, part, '/');) {
       if (part.empty()) continue;
       partial += part + "/";
-      if (::mkdir(partial.c_str(), 0755) == 0) created.push_back(partial);
+      struct stat info;
+      if (::stat(partial.c_str(), &info) == 0) {
+        ok = S_ISDIR(info.st_mode);
+        deepest = partial;
+      } else if (errno != ENOENT) {
+        ok = false;  // e.g. ENOTDIR: a file on the way
+      } else if (!create) {
+        break;  // the rest would be created in `deepest`
+      } else if (::mkdir(partial.c_str(), 0755) == 0) {
+        created.push_back(partial);
+        deepest = partial;
+      } else {
+        ok = false;
+      }
     }
-    const std::string probe = dir + "/.signorini-write-test";
-    FILE* f = std::fopen(probe.c_str(), "w");
-    if (f) {
-      std::fclose(f);
-      std::remove(probe.c_str());
-    }
-    if (!f || !keep)
-      for (auto it = created.rbegin(); it != created.rend(); ++it) ::rmdir(it->c_str());
-    else
+    ok = ok && canCreateIn(deepest);
+    if (ok)
       io::removeOnFailure(created);
-    if (!f) SIGNORINI_USER_ERROR("Output/Directory: cannot write to '" << dir << "'");
+    else
+      for (auto it = created.rbegin(); it != created.rend(); ++it) ::rmdir(it->c_str());
+    if (!ok) SIGNORINI_USER_ERROR("Output/Directory: cannot write to '" << dir << "'");
   });
 }
 

@@ -93,6 +93,8 @@ signorini_add_bad_deck_test(duplicate_key ${decks}/duplicate-key.xml
 signorini_add_bad_deck_test(directory_as_deck ${decks}
   "decks: is a directory, not a deck")
 
+signorini_add_bad_deck_test(hidden_basename_from_deck_name ${decks}/.hidden.xml
+  "the deck's file name '.*/[.]hidden[.]xml' gives the output basename '[.]hidden' [(]hidden or empty files[)]; set Output/Basename")
 # Validation against Simulation::getValidParameters().
 signorini_add_bad_deck_test(unknown_key ${decks}/unknown-key.xml
   "unknown-key[.]xml: unknown parameter 'Time Stepp' in sublist 'Time Integration'"
@@ -169,6 +171,9 @@ signorini_add_driver_test(usage_option_without_value EXIT 2
 signorini_add_driver_test(usage_help EXIT 0
   ARGS --help
   REGEX "^usage: signorini [[]options[]]")
+signorini_add_driver_test(usage_kokkos_help EXIT 0
+  ARGS --kokkos-help
+  REGEX "Kokkos command line arguments")
 signorini_add_driver_test(usage_help_short_with_kokkos_option EXIT 0
   ARGS --kokkos-disable-warnings -h
   REGEX "^usage: signorini [[]options[]]")
@@ -356,6 +361,11 @@ signorini_add_driver_test(check_creates_no_directory EXIT 0
 signorini_add_driver_test(check_unwritable_output_dir EXIT 1
   ARGS --check --output-dir /dev/null/out ${decks}/good.xml
   REGEX "Output/Directory: cannot write to '/dev/null/out'")
+# The plan of a uniform run counts the cycles the Maximum Level allows and no coarsening.
+signorini_add_driver_test(check_uniform_plan EXIT 0
+  ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=20"
+       --set "Adaptivity/Maximum Level=3" --set "Adaptivity/Coarsening Fraction=0.4" ${decks}/good.xml
+  REGEX "Algorithm 5[.]1: 20 cycle[(]s[)] [(]4: then every cell is at Maximum Level 3[)], strategy uniform\n")
 signorini_add_driver_test(check_bad_deck EXIT 1
   ARGS --check --output-dir {OUT} ${decks}/good.xml ${decks}/penetrating.xml
   REGEX "good[.]xml is valid" "Problem/Initial Displacement penetrates the obstacle" "1 of 2 deck[(]s[)] failed")
@@ -372,10 +382,27 @@ signorini_add_driver_test(reproducible_arithmetic_needs_cg EXIT 1
   REGEX "Linear Solver/Method: reproducible arithmetic solves with its own Jacobi CG and needs \"CG\", not \"GMRES\"")
 signorini_add_driver_test(unknown_krylov_method EXIT 1
   ARGS --check --output-dir {OUT} --set "Linear Solver/Method=CGG" ${decks}/good.xml
-  REGEX "Linear Solver/Method: Belos does not know \"CGG\"; it knows [^\n]*PSEUDOBLOCK CG")
-signorini_add_driver_test(krylov_method_refusing_the_system EXIT 1
-  ARGS --output-dir {OUT} --set "Linear Solver/Method=BICGSTAB" ${decks}/good.xml
-  REGEX "Linear Solver/Method: Belos' \"BICGSTAB\" cannot solve this system: .*left-preconditioned")
+  REGEX "Linear Solver/Method: \"CGG\" is not one of the Krylov methods for these symmetric positive definite systems: CG, PSEUDOBLOCK CG, ")
+# Belos knows BICGSTAB, but it needs a right preconditioner: refused before the run, not at the first solve.
+signorini_add_driver_test(krylov_method_needing_a_right_preconditioner EXIT 1
+  ARGS --check --output-dir {OUT} --set "Linear Solver/Method=BICGSTAB" ${decks}/good.xml
+  REGEX "Linear Solver/Method: \"BICGSTAB\" is not one of the Krylov methods")
+signorini_add_driver_test(reproducible_arithmetic_method_in_any_case EXIT 0
+  ARGS --check --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" --set "Linear Solver/Method=cg"
+       ${decks}/good.xml
+  REGEX "good[.]xml is valid")
+signorini_add_driver_test(reproducible_arithmetic_ignores_belos_sublist EXIT 0
+  ARGS --check --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" --set "Linear Solver/Belos/Verbosity=1"
+       ${decks}/good.xml
+  REGEX "warning: .*good[.]xml: reproducible arithmetic solves with its own Jacobi CG; without effect: Linear Solver/Belos\n"
+        "good[.]xml is valid")
+# Data beyond the range of doubles: Belos meets a NaN residual, a solver failure about the data.
+signorini_add_driver_test(density_beyond_doubles EXIT 1
+  ARGS --output-dir {OUT} --set "Problem/Density=1e300" ${decks}/good.xml
+  REGEX "solver failure: linear solver CG [+] Jacobi stopped: a residual is not a number")
+signorini_add_driver_test(belos_sublist_unknown_key EXIT 1
+  ARGS --check --output-dir {OUT} --set "Linear Solver/Belos/Bogus Key=1" ${decks}/good.xml
+  REGEX "Linear Solver/Belos: Belos' \"CG\" refuses its parameters: .*Bogus Key")
 signorini_add_driver_test(reproducible_arithmetic_scalar_only EXIT 1
   ARGS --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" --set "Problem/Type=plane strain elasticity"
        ${decks}/good.xml

@@ -8,6 +8,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "../TestMesh.hpp"
+#include "Error.hpp"
 #include "Expression.hpp"
 #include "LinearSolver.hpp"
 #include "Q1Assembler.hpp"
@@ -96,4 +97,36 @@ TEST(LinearSolver, ElasticityMueLuIterationsStayBoundedUnderRefinement) {
   }
   EXPECT_LE(withModes.back(), 1.5 * withModes.front() + 2) << "iterations grow with refinement";
   EXPECT_LE(withModes.back(), without.back());
+}
+
+TEST(LinearSolver, EverySupportedMethodSolvesTheStepSystemAndOthersAreRefused) {
+  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 4, 4, 2);  // 16 x 16 cells
+  const auto& m = tm.build();
+  fem::Q1Assembler asmb(m, m.nodesOnSegments(1u << 0));
+  auto A = asmb.assembleOperator(1.0, 0.01, 1.0, 1.0);
+  Vector b(m.ownedMap()), r(m.ownedMap());
+  asmb.assembleLoad(core::Expression("sin(3*x) + y", "test"), 0.0, 1.0, b);
+  for (const auto& method : solvers::LinearSolver::supportedMethods()) {
+    for (const std::string& spelling : {method, std::string("pseudo block cg")}) {
+      core::ParameterList p;
+      p.set("Method", spelling);
+      p.set("Preconditioner", "Jacobi");
+      core::validateDeck(p, solvers::LinearSolver::getValidParameters(), "test");
+      EXPECT_EQ(solvers::LinearSolver::checkParameters(p, false), "") << spelling;
+      solvers::LinearSolver solver(p, m.comm());
+      solver.setOperator(A, 1.0);
+      Vector x(m.ownedMap());
+      solver.solve(b, x);
+      A->apply(x, r);
+      r.update(1.0, b, -1.0);
+      EXPECT_LE(r.norm2(), 1e-10 * b.norm2()) << spelling;
+    }
+  }
+  EXPECT_EQ(solvers::LinearSolver::canonicalMethod("Transpose-Free QMR"), "TFQMR");
+  for (const std::string refused : {"BICGSTAB", "FLEXIBLE GMRES", "LSQR", "CGG", ""}) {
+    core::ParameterList p;
+    p.set("Method", refused);
+    core::validateDeck(p, solvers::LinearSolver::getValidParameters(), "test");
+    EXPECT_THROW(solvers::LinearSolver::checkParameters(p, false), core::UserError) << refused;
+  }
 }
