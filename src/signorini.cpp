@@ -6,7 +6,9 @@
 /// Each deck is read and validated on every rank (so a bad deck fails everywhere at once),
 /// the mesh and problem are set up, and the run writes <basename>.steps.csv and <basename>.e.
 /// A failing deck is reported and the next one still runs; the exit status is non-zero if any failed.
+#include <filesystem>
 #include <iomanip>
+#include <map>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -108,12 +110,19 @@ int main(int argc, char** argv) {
   }
 
   int failures = 0;
+  std::map<std::string, std::string> deckOfBase;  // output bases of this batch (normalised)
   for (const auto& path : decks) {
     out << "signorini: " << (checkOnly ? "checking " : "running ") << path << " on " << comm->getSize() << " rank(s)"
         << std::endl;
     try {
       const auto deck = readDeck(path, overrides);
       signorini::adapt::AdaptiveSimulation sim(deck, path, outputDir, comm);
+      const std::string base = std::filesystem::absolute(sim.outputBase()).lexically_normal().string();
+      const auto earlier = deckOfBase.emplace(base, path);
+      if (!earlier.second)
+        throw signorini::core::UserError("writes to the output base '" + sim.outputBase() + "' of the batch's deck " +
+                                         earlier.first->second + ", whose results it would replace; give one " +
+                                         "of them its own Output/Basename or run it separately");
       if (checkOnly) {
         std::istringstream lines(sim.plan());
         out << "signorini: " << path << " is valid; the run would do:" << std::endl;

@@ -172,6 +172,8 @@ AdaptiveSimulation::AdaptiveSimulation(const core::ParameterList& deck, const st
 
 AdaptiveSimulation::~AdaptiveSimulation() = default;
 
+const std::string& AdaptiveSimulation::outputBase() const { return sim_->outputBase(); }
+
 std::string AdaptiveSimulation::plan() const {
   const auto& a = deck_.sublist("Adaptivity");
   const auto& t = deck_.sublist("Time Integration");

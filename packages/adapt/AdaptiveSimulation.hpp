@@ -37,6 +37,8 @@ class AdaptiveSimulation {
   /// What run() will do, in a few lines (steps, unknowns of the initial mesh, cycles and
   /// strategy, output base): the driver's --check prints it.
   std::string plan() const;
+  /// The output folder and basename of the run's files ("<folder>/<basename>").
+  const std::string& outputBase() const;
   const std::vector<CycleSummary>& cycles() const { return cycles_; }
 
  private:

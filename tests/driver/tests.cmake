@@ -185,6 +185,13 @@ signorini_add_driver_test(batch_bad_then_good EXIT 1
         "good[.]xml done: 4 steps"
         "1 of 2 deck[(]s[)] failed"
   FILES good.steps.csv good.e)
+# Two decks of one batch with the same output base: the second is refused before it replaces the
+# first's results (here the same deck twice).
+signorini_add_driver_test(batch_same_output_base EXIT 1
+  ARGS --output-dir {OUT} ${decks}/good.xml ${decks}/../decks/good.xml
+  REGEX "good[.]xml: writes to the output base '.*/good' of the batch's deck .*good[.]xml, whose results it would replace"
+        "1 of 2 deck[(]s[)] failed"
+  FILES good.steps.csv good.e)
 signorini_add_driver_test(batch_good_then_bad EXIT 1
   ARGS --output-dir {OUT} ${decks}/good.xml ${decks}/penetrating.xml
   REGEX "good[.]xml done: 4 steps"
