@@ -38,8 +38,9 @@ const char* kUsage =
 using signorini::core::ParameterList;
 
 /// Reads and validates one deck with the command-line overrides applied.
-ParameterList readDeck(const std::string& path, const std::vector<std::string>& overrides) {
-  ParameterList deck = signorini::io::readDeckFile(path);
+ParameterList readDeck(const std::string& path, const std::vector<std::string>& overrides,
+                       const signorini::Comm& comm) {
+  ParameterList deck = signorini::io::readDeckFile(path, comm);
   const auto valid = signorini::adapt::AdaptiveSimulation::getValidParameters();
   for (const auto& o : overrides) signorini::core::applyOverride(deck, o, valid);
   signorini::core::validateDeck(deck, valid, path);
@@ -67,9 +68,9 @@ int main(int argc, char** argv) {
   argc = static_cast<int>(args.size()) - 1;
   argv = args.data();
   Tpetra::ScopeGuard tpetra(&argc, &argv);
-  signorini::core::installInterruptHandlers();
   auto comm = Tpetra::getDefaultComm();
   const int rank = comm->getRank();
+  signorini::core::installInterruptHandlers(rank == 0);
   auto& out = signorini::core::rootOut(rank);
 
   std::vector<std::string> decks, overrides;
@@ -111,49 +112,66 @@ int main(int argc, char** argv) {
 
   int failures = 0;
   std::map<std::string, std::string> deckOfBase;  // output bases of this batch (normalised)
-  for (const auto& path : decks) {
-    out << "signorini: " << (checkOnly ? "checking " : "running ") << path << " on " << comm->getSize() << " rank(s)"
-        << std::endl;
+  // A signal between decks (or during a --check) stops the batch; the decks after it do not run.
+  auto stopIfInterrupted = [&](const std::string& where) {
     try {
-      const auto deck = readDeck(path, overrides);
-      signorini::adapt::AdaptiveSimulation sim(deck, path, outputDir, comm);
-      const std::string base = std::filesystem::absolute(sim.outputBase()).lexically_normal().string();
-      const auto earlier = deckOfBase.emplace(base, path);
-      if (!earlier.second)
-        throw signorini::core::UserError("writes to the output base '" + sim.outputBase() + "' of the batch's deck " +
-                                         earlier.first->second + ", whose results it would replace; give one " +
-                                         "of them its own Output/Basename or run it separately");
-      if (checkOnly) {
-        std::istringstream lines(sim.plan());
-        out << "signorini: " << path << " is valid; the run would do:" << std::endl;
-        for (std::string line; std::getline(lines, line);) out << "  " << line << std::endl;
-        continue;
-      }
-      const auto summary = sim.run();
-      out << "signorini: " << path << " done: " << summary.steps << " steps, " << summary.dofsPerStep
-          << " unknowns per step, " << summary.wallSeconds << " s" << std::endl;
-      out << "  phase seconds:";
-      for (const auto& [phase, seconds] : summary.phaseSeconds)
-        out << " " << phase << " " << std::fixed << std::setprecision(3) << seconds;
-      out << std::endl;
-      for (const auto& f : summary.files) out << "  wrote " << f << std::endl;
-    } catch (signorini::core::Interrupted& e) {  // the run's files are gone; the remaining decks do not run
-      if (rank == 0) std::cerr << "signorini: " << path << ": " << e.what() << "; its files were removed" << std::endl;
-      return 128 + e.signal();
-    } catch (signorini::core::UserError& e) {
-      ++failures;
-      const std::string what = e.what();
-      if (rank == 0)
-        std::cerr << "signorini: error: " << (what.rfind(path, 0) == 0 ? "" : path + ": ") << what << std::endl;
-    } catch (signorini::core::SolverError& e) {
-      ++failures;
-      if (rank == 0) std::cerr << "signorini: " << path << ": solver failure: " << e.what() << std::endl;
-    } catch (std::exception& e) {  // a bug or a library error: still a clean non-zero exit
-      ++failures;
-      if (rank == 0)
-        std::cerr << "signorini: " << path << ": unexpected error: " << signorini::core::withoutSourceLocation(e.what())
-                  << std::endl;
+      signorini::core::throwIfInterrupted(*comm);
+    } catch (signorini::core::Interrupted& e) {
+      if (rank == 0) std::cerr << "signorini: " << e.what() << " " << where << std::endl;
+      throw;
     }
+  };
+  try {
+    for (const auto& path : decks) {
+      stopIfInterrupted("before " + path + ", which did not run (nor any deck after it)");
+      out << "signorini: " << (checkOnly ? "checking " : "running ") << path << " on " << comm->getSize() << " rank(s)"
+          << std::endl;
+      try {
+        const auto deck = readDeck(path, overrides, *comm);
+        signorini::adapt::AdaptiveSimulation sim(deck, path, outputDir, comm);
+        std::error_code ec;  // links resolved: two names of one folder are one folder
+        std::string base = std::filesystem::weakly_canonical(sim.outputBase(), ec).string();
+        if (ec) base = std::filesystem::absolute(sim.outputBase()).lexically_normal().string();
+        const auto earlier = deckOfBase.emplace(base, path);
+        if (!earlier.second)
+          throw signorini::core::UserError("writes to the output base '" + sim.outputBase() + "' of the batch's deck " +
+                                           earlier.first->second + ", whose results it would replace; give one " +
+                                           "of them its own Output/Basename or run it separately");
+        if (checkOnly) {
+          std::istringstream lines(sim.plan());
+          out << "signorini: " << path << " is valid; the run would do:" << std::endl;
+          for (std::string line; std::getline(lines, line);) out << "  " << line << std::endl;
+          continue;
+        }
+        const auto summary = sim.run();
+        out << "signorini: " << path << " done: " << summary.steps << " steps, " << summary.dofsPerStep
+            << " unknowns per step, " << summary.wallSeconds << " s" << std::endl;
+        out << "  phase seconds:";
+        for (const auto& [phase, seconds] : summary.phaseSeconds)
+          out << " " << phase << " " << std::fixed << std::setprecision(3) << seconds;
+        out << std::endl;
+        for (const auto& f : summary.files) out << "  wrote " << f << std::endl;
+      } catch (signorini::core::Interrupted& e) {  // the run's files are gone; the remaining decks do not run
+        if (rank == 0) std::cerr << "signorini: " << path << ": " << e.what() << "; its files were removed" << std::endl;
+        return 128 + e.signal();
+      } catch (signorini::core::UserError& e) {
+        ++failures;
+        const std::string what = e.what();
+        if (rank == 0)
+          std::cerr << "signorini: error: " << (what.rfind(path, 0) == 0 ? "" : path + ": ") << what << std::endl;
+      } catch (signorini::core::SolverError& e) {
+        ++failures;
+        if (rank == 0) std::cerr << "signorini: " << path << ": solver failure: " << e.what() << std::endl;
+      } catch (std::exception& e) {  // a bug or a library error: still a clean non-zero exit
+        ++failures;
+        if (rank == 0)
+          std::cerr << "signorini: " << path << ": unexpected error: " << signorini::core::withoutSourceLocation(e.what())
+                    << std::endl;
+      }
+    }
+    if (checkOnly) stopIfInterrupted("during the check");
+  } catch (signorini::core::Interrupted& e) {
+    return 128 + e.signal();
   }
   if (failures) out << "signorini: " << failures << " of " << decks.size() << " deck(s) failed" << std::endl;
   return failures ? 1 : 0;

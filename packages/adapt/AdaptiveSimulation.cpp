@@ -14,6 +14,7 @@
 
 #include "CsvWriter.hpp"
 #include "Error.hpp"
+#include "Interrupt.hpp"
 #include "MpiComm.hpp"
 #include "OutputStaging.hpp"
 #include "JacobiCG.hpp"
@@ -383,6 +384,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         for (const auto& f : last.files)
           if (isExodusFile(f)) io::unpublish(f);
     }
+    core::throwIfInterrupted(*comm);  // a signal during the last step: the files go
     core::onRootCollectively(*comm, [&] {
       if (cyclesCsv) cyclesCsv->commit();
       staging.commit();

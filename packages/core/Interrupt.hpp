@@ -1,9 +1,11 @@
 #pragma once
 /// \file Interrupt.hpp
-/// Ctrl-C (SIGINT) and SIGTERM end a run cleanly: the handler only records the signal, the time
-/// stepper checks at every step on all ranks together and throws Interrupted, and the run's
-/// output staging removes its files on the way out (io::OutputStaging). A second signal ends the
-/// process at once (the default action).
+/// Ctrl-C (SIGINT), SIGTERM, SIGHUP and SIGPIPE end a run cleanly: the handler only records the
+/// signal, the time stepper checks at every step (and the runs before their files get their
+/// final names) on all ranks together and throws Interrupted, and the run's output staging
+/// removes its files on the way out (io::OutputStaging). A second SIGINT, SIGTERM or SIGHUP more
+/// than a second after the first ends the process at once (the default action); copies within a
+/// second (a signal to the process and to its group) count as one.
 #include <stdexcept>
 
 #include "Types.hpp"
@@ -20,8 +22,9 @@ class Interrupted : public std::runtime_error {
   int signal_;
 };
 
-/// Installs the handlers for SIGINT and SIGTERM (once, in the driver's main).
-void installInterruptHandlers();
+/// Installs the handlers (once, in the driver's main); \p printNotice (rank 0) prints a line on
+/// stderr when the first signal arrives.
+void installInterruptHandlers(bool printNotice);
 /// Throws Interrupted on every rank if any rank of \p comm received a signal. Collective.
 void throwIfInterrupted(const Comm& comm);
 

@@ -518,6 +518,7 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   I.initialDiscretisation = std::move(d);
   I.outDir = outputDir.empty() ? out.get<std::string>("Directory") : outputDir;
   if (I.outDir.empty()) SIGNORINI_USER_ERROR("Output/Directory: empty (\".\" is the working directory)");
+  while (I.outDir.size() > 1 && I.outDir.back() == '/') I.outDir.pop_back();  // "out/" writes "out/x", not "out//x"
   const std::string& basename = out.get<std::string>("Basename");
   if (basename.find('/') != std::string::npos || basename == "." || basename == ".." ||
       (!basename.empty() && basename.find_first_not_of(" \t") == std::string::npos))
@@ -572,6 +573,7 @@ RunSummary Simulation::run() {
   io::retireOnCommit(outputBase(), io::isRunOutputSuffix);
   std::vector<std::shared_ptr<mesh::Forest>> meshes(numSteps(), impl_->initialForest);
   auto summary = runPass(meshes, StepHook(), PassOptions());
+  core::throwIfInterrupted(*impl_->comm);  // a signal during the last step: the files go
   core::onRootCollectively(*impl_->comm, [&] { staging.commit(); });
   return summary;
 }

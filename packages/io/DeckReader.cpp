@@ -5,14 +5,17 @@
 #include <cstdlib>
 #include <fstream>
 #include <set>
+#include <sstream>
 
 #include <sys/stat.h>
 
-#include <Teuchos_FileInputSource.hpp>
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_StringInputSource.hpp>
 #include <Teuchos_XMLObject.hpp>
 #include <Teuchos_XMLParameterListReader.hpp>
 
 #include "Error.hpp"
+#include "MpiComm.hpp"
 
 namespace signorini::io {
 namespace {
@@ -56,15 +59,24 @@ void checkEntries(const Teuchos::XMLObject& node, const std::string& path, const
 
 }  // namespace
 
-Teuchos::ParameterList readDeckFile(const std::string& path) {
+namespace {
+
+/// The deck's text, read once (a deck from a pipe cannot be read a second time).
+std::string readText(const std::string& path) {
   struct stat info;
   if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
     SIGNORINI_USER_ERROR(path << ": is a directory, not a deck");
-  if (!std::ifstream(path)) SIGNORINI_USER_ERROR(path << ": cannot open the deck (missing or unreadable file)");
+  std::ifstream in(path);
+  if (!in) SIGNORINI_USER_ERROR(path << ": cannot open the deck (missing or unreadable file)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+Teuchos::ParameterList parseDeck(const std::string& text, const std::string& path) {
   Teuchos::ParameterList deck;
   try {
-    // Read once: a deck from a pipe ("<(...)", /dev/stdin) cannot be read a second time.
-    const Teuchos::XMLObject xml = Teuchos::FileInputSource(path).getObject();
+    const Teuchos::XMLObject xml = Teuchos::StringInputSource(text).getObject();
     checkEntries(xml, "", path);
     deck = Teuchos::XMLParameterListReader().toParameterList(xml);
   } catch (core::UserError&) {
@@ -76,6 +88,20 @@ Teuchos::ParameterList readDeckFile(const std::string& path) {
     SIGNORINI_USER_ERROR(path << ": malformed XML deck: " << what);
   }
   return deck;
+}
+
+}  // namespace
+
+Teuchos::ParameterList readDeckFile(const std::string& path) { return parseDeck(readText(path), path); }
+
+Teuchos::ParameterList readDeckFile(const std::string& path, const Comm& comm) {
+  std::string text;
+  core::onRootCollectively(comm, [&] { text = readText(path); });
+  long long size = static_cast<long long>(text.size());
+  Teuchos::broadcast(comm, 0, Teuchos::outArg(size));
+  text.resize(static_cast<size_t>(size));
+  if (size > 0) Teuchos::broadcast(comm, 0, static_cast<int>(size), &text[0]);
+  return parseDeck(text, path);
 }
 
 }  // namespace signorini::io

@@ -6,9 +6,15 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "Types.hpp"
+
 namespace signorini::io {
 
-/// Throws core::UserError naming \p path for a missing file, malformed XML or a bad number.
+/// Throws core::UserError naming \p path for a missing file, malformed XML, a bad number or a
+/// key given twice. Reads the file once (a pipe works).
 Teuchos::ParameterList readDeckFile(const std::string& path);
+/// The same, collective: rank 0 reads the file and every rank parses its text, so all ranks get
+/// the same deck or the same error (another node's missing or different file, stdin under mpirun).
+Teuchos::ParameterList readDeckFile(const std::string& path, const Comm& comm);
 
 }  // namespace signorini::io

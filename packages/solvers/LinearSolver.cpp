@@ -8,6 +8,7 @@
 #include <BelosSolverFactory.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <MueLu_MasterList.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -20,6 +21,19 @@ namespace signorini::solvers {
 using BelosSolver = Belos::SolverManager<Scalar, MultiVector, Operator>;
 
 namespace {
+
+/// Teuchos' message about an invalid parameter without its source location and without the list of
+/// valid parameters that follows (hundreds of lines for MueLu).
+std::string firstLines(const std::string& message) {
+  std::string what = core::withoutSourceLocation(message);
+  for (const char* tail : {"The valid parameters", "\nValid parameters"}) {
+    const auto at = what.find(tail);
+    if (at != std::string::npos) what.resize(at);
+  }
+  while (!what.empty() && std::isspace(static_cast<unsigned char>(what.back()))) what.pop_back();
+  return what;
+}
+
 /// Y = D^{-1} X with D the diagonal of A (one Jacobi sweep from zero, as Ifpack2's RELAXATION
 /// computes it, without Ifpack2's parameter validation and set-up on every new mesh).
 class JacobiPreconditioner : public Operator {
@@ -68,8 +82,9 @@ struct LinearSolver::Impl {
 
 core::ParameterList LinearSolver::getValidParameters() {
   core::ParameterList p("Linear Solver");
-  core::addString(p, "Method", "CG", "Belos solver name (13.2: \"CG\", \"PSEUDOBLOCK CG\", \"GMRES\", \"MINRES\", ...; an unknown name "
-                  "is refused with the list Belos knows); A is SPD. Parallel/Reproducible Arithmetic: \"CG\" only");
+  core::addString(p, "Method", "CG", "Belos Krylov method for the SPD step systems with a left preconditioner: CG, PSEUDOBLOCK CG, "
+                  "BLOCK CG, GMRES, PSEUDOBLOCK GMRES, BLOCK GMRES, MINRES, TFQMR, PSEUDOBLOCK TFQMR or GCRODR (any "
+                  "case, Belos' aliases); Parallel/Reproducible Arithmetic: \"CG\" only");
   core::addChoice(p, "Preconditioner", "auto",
                   "\"auto\": Jacobi if c k / h_min is below 'Auto MueLu Courant Number', else MueLu (DESIGN 1.6)",
                   {"auto", "MueLu", "Jacobi", "none"});
@@ -121,6 +136,13 @@ std::string LinearSolver::checkParameters(const core::ParameterList& params, boo
     SIGNORINI_USER_ERROR("Linear Solver/Method: \"" << method << "\" is not one of the Krylov methods for these "
                          "symmetric positive definite systems: " << names.str() << " (any case)");
   }
+  // MueLu's own validation prints its whole parameter table (hundreds of lines) before it throws.
+  const auto& muelu = params.sublist("MueLu");
+  const auto valid = MueLu::MasterList::List();
+  for (auto it = muelu.begin(); it != muelu.end(); ++it)
+    if (!muelu.entry(it).isList() && !valid->isParameter(muelu.name(it)))
+      SIGNORINI_USER_ERROR("Linear Solver/MueLu: '" << muelu.name(it) << "' is not a MueLu parameter "
+                           "(MueLu's masterList.xml lists them)");
   if (!reproducible) return "";
   if (preconditioner != "auto" && preconditioner != "Jacobi")
     SIGNORINI_USER_ERROR("Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\" (or \"auto\"), not \""
@@ -181,7 +203,12 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
     mueluParams.setParameters(I.params.sublist("MueLu"));
     // MueLu gets its own copy of A (the assemblers' matrices view arrays their pattern shares).
     RCP<Operator> op = Teuchos::rcp(new CrsMatrix(*A, Teuchos::Copy));
-    I.prec = MueLu::CreateTpetraPreconditioner(op, mueluParams);
+    try {
+      I.prec = MueLu::CreateTpetraPreconditioner(op, mueluParams);
+    } catch (const std::exception& e) {
+      if (I.params.sublist("MueLu").numParams() == 0) throw;  // not the user's settings
+      SIGNORINI_USER_ERROR("Linear Solver/MueLu: MueLu cannot be set up with these parameters: " << firstLines(e.what()));
+    }
   } else if (choice == "Jacobi") {
     I.prec = Teuchos::rcp(new JacobiPreconditioner(*A));
   }
@@ -198,12 +225,8 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
     if (valid->isParameter(scaling) && !belosParams->isParameter(scaling)) belosParams->set(scaling, "Norm of RHS");
   try {
     I.solver->setParameters(belosParams);
-  } catch (std::exception& e) {  // Teuchos' message: the first lines name the key; the rest lists the valid ones
-    std::string what = core::withoutSourceLocation(e.what());
-    const auto valid = what.find("The valid parameters");
-    if (valid != std::string::npos) what.resize(valid);
-    while (!what.empty() && std::isspace(static_cast<unsigned char>(what.back()))) what.pop_back();
-    SIGNORINI_USER_ERROR("Linear Solver/Belos: Belos' \"" << method << "\" refuses its parameters: " << what);
+  } catch (std::exception& e) {
+    SIGNORINI_USER_ERROR("Linear Solver/Belos: Belos' \"" << method << "\" refuses its parameters: " << firstLines(e.what()));
   }
   I.problem = Teuchos::rcp(new Belos::LinearProblem<Scalar, MultiVector, Operator>());
   I.problem->setOperator(Anc);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Ctrl-C ends a run cleanly: SIGINT to the driver (1 rank) or SIGTERM to mpirun (2 ranks, as
-# mpirun passes Ctrl-C on) in the middle of the adaptive paper deck leaves no file of the run and
-# no '.part' file; on 1 rank the exit status is 130 (128 + SIGINT). A later successful run
+# Ctrl-C ends a run cleanly: SIGINT to the driver (1 rank, also twice at once), SIGHUP, a closed
+# stdout (SIGPIPE) or SIGTERM to mpirun (2 ranks, as mpirun passes Ctrl-C on) in the middle of the
+# adaptive paper deck leaves no file of the run and no '.part' file; on 1 rank the exit status is
+# 128 + the signal. A later successful run
 # removes the '.part' files that a run killed outright (SIGKILL) left.
 # Usage: interrupt.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
 set -uo pipefail
@@ -32,6 +33,53 @@ grep -q "interrupted by signal 2" "$work/one.log" || fail "1 rank: no 'interrupt
 status=$(interrupt two TERM "$mpiexec" --allow-run-as-root --oversubscribe -np 2 "$signorini")
 [ "$status" != 0 ] || fail "2 ranks: exit status 0 after SIGTERM"
 [ -z "$(ls -A "$work/two")" ] || fail "2 ranks: files left: $(ls -A "$work/two")"
+
+# The same signal twice at once (timeout(1) signals the process and its group) is one request.
+interrupt_twice() {
+  mkdir -p "$work/twice"
+  # Steps of about half a second (a fine mesh, Exodus output), so both signals arrive within one.
+  "$signorini" --output-dir "$work/twice" --set 'Mesh/Refinement Level=8' --set 'Time Integration/Final Time=0.05' \
+    "$src/tests/driver/decks/good.xml" > "$work/twice.log" 2>&1 &
+  local pid=$!
+  for _ in $(seq 600); do
+    [ "$(grep -c '^  step ' "$work/twice.log")" -ge 1 ] && break
+    sleep 0.05
+  done
+  kill -INT "$pid"; sleep 0.1; kill -INT "$pid"  # separate deliveries, within a second
+  wait "$pid"
+  echo $?
+}
+status=$(interrupt_twice)
+[ "$status" = 130 ] || { cat "$work/twice.log"; fail "twice: exit status $status, expected 130"; }
+grep -q "interrupted by signal 2" "$work/twice.log" || fail "twice: killed at once instead of stopping cleanly"
+[ -z "$(ls -A "$work/twice")" ] || fail "twice: files left: $(ls -A "$work/twice")"
+
+status=$(interrupt hangup HUP "$signorini")
+[ "$status" = 129 ] || { cat "$work/hangup.log"; fail "SIGHUP: exit status $status, expected 129"; }
+[ -z "$(ls -A "$work/hangup")" ] || fail "SIGHUP: files left: $(ls -A "$work/hangup")"
+
+# stdout closed by the reader (SIGPIPE at the next progress line): the run stops cleanly.
+mkdir -p "$work/pipe"
+"$signorini" --output-dir "$work/pipe" "$src/inputs/membrane.xml" 2> "$work/pipe.log" | head -2 > /dev/null
+status=${PIPESTATUS[0]}
+[ "$status" = 141 ] || { cat "$work/pipe.log"; fail "SIGPIPE: exit status $status, expected 141"; }
+[ -z "$(ls -A "$work/pipe")" ] || fail "SIGPIPE: files left: $(ls -A "$work/pipe")"
+
+# A --check of a batch stops at the next deck (it used to check them all and exit 0).
+deck="$src/tests/driver/decks/good.xml"
+"$signorini" --check --output-dir "$work/check" --set 'Mesh/Refinement Level=8' "$deck" "$deck" "$deck" "$deck" \
+  > "$work/check.log" 2>&1 &
+pid=$!
+for _ in $(seq 600); do
+  grep -q '^signorini: checking' "$work/check.log" && break
+  sleep 0.05
+done
+kill -INT "$pid"
+wait "$pid"
+status=$?
+[ "$status" = 130 ] || { cat "$work/check.log"; fail "--check: exit status $status after SIGINT, expected 130"; }
+grep -q "interrupted by signal 2 (Interrupt) before .*good[.]xml, which did not run" "$work/check.log" ||
+  { cat "$work/check.log"; fail "--check: no message naming the deck that did not run"; }
 
 status=$(interrupt killed KILL "$signorini")
 ls "$work/killed" | grep -q '[.]part$' || fail "SIGKILL left no '.part' file (the control)"

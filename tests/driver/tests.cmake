@@ -407,6 +407,14 @@ signorini_add_driver_test(reproducible_arithmetic_ignores_belos_sublist EXIT 0
 signorini_add_driver_test(density_beyond_doubles EXIT 1
   ARGS --output-dir {OUT} --set "Problem/Density=1e300" ${decks}/good.xml
   REGEX "solver failure: linear solver CG [+] Jacobi stopped: a residual is not a number")
+signorini_add_driver_test(muelu_sublist_unknown_key EXIT 1
+  ARGS --check --output-dir {OUT} --set "Linear Solver/Preconditioner=MueLu" --set "Linear Solver/MueLu/bogus key=1"
+       ${decks}/good.xml
+  REGEX "Linear Solver/MueLu: 'bogus key' is not a MueLu parameter")
+signorini_add_driver_test(muelu_sublist_bad_value EXIT 1
+  ARGS --check --output-dir {OUT} --set "Linear Solver/Preconditioner=MueLu" --set "Linear Solver/MueLu/smoother: type=FOO"
+       ${decks}/good.xml
+  REGEX "Linear Solver/MueLu: MueLu cannot be set up with these parameters: Could not construct any smoother")
 signorini_add_driver_test(belos_sublist_unknown_key EXIT 1
   ARGS --check --output-dir {OUT} --set "Linear Solver/Belos/Bogus Key=1" ${decks}/good.xml
   REGEX "Linear Solver/Belos: Belos' \"CG\" refuses its parameters: .*Bogus Key")
@@ -424,3 +432,8 @@ add_test(NAME driver_interrupted_run
   COMMAND bash ${SIGNORINI_DRIVER_TEST_DIR}/interrupt.sh $<TARGET_FILE:signorini> ${SIGNORINI_MPIEXEC}
           ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/driver/interrupted_run)
 set_tests_properties(driver_interrupted_run PROPERTIES TIMEOUT 120 LABELS driver PROCESSORS 2)
+# Cases that need a shell: a deck on stdin under mpirun, one output base reached through a link.
+add_test(NAME driver_shell_cases
+  COMMAND bash ${SIGNORINI_DRIVER_TEST_DIR}/shell_cases.sh $<TARGET_FILE:signorini> ${SIGNORINI_MPIEXEC}
+          ${PROJECT_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/driver/shell_cases)
+set_tests_properties(driver_shell_cases PROPERTIES TIMEOUT 120 LABELS driver PROCESSORS 2)

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Driver cases that need a shell: a deck on stdin under mpirun (rank 0 reads it for every rank;
+# the other ranks' stdin is empty, and they used to fail alone while rank 0 waited forever), and a
+# batch whose second deck reaches the first one's output base through a symbolic link.
+# Usage: shell_cases.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
+set -uo pipefail
+signorini=$1 mpiexec=$2 src=$3 work=$4
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+good="$src/tests/driver/decks/good.xml"
+
+timeout 20 "$mpiexec" --allow-run-as-root --oversubscribe -np 2 "$signorini" --check --output-dir "$work/stdin" \
+  /dev/stdin < "$good" > "$work/stdin.log" 2>&1
+status=$?
+[ "$status" = 0 ] || { cat "$work/stdin.log"; fail "a deck on stdin on 2 ranks: exit status $status"; }
+grep -q "/dev/stdin is valid" "$work/stdin.log" || fail "a deck on stdin: not checked"
+
+# Two decks whose Output/Directory differ only by a link, with the same Output/Basename.
+mkdir -p "$work/real" && ln -s real "$work/link"
+for d in real link; do
+  sed "s|<Parameter name=\"Write Exodus\" type=\"bool\" value=\"true\"/>|&\
+    <Parameter name=\"Directory\" type=\"string\" value=\"$work/$d\"/>\
+    <Parameter name=\"Basename\" type=\"string\" value=\"same\"/>|" "$good" > "$work/deck-$d.xml"
+done
+"$signorini" "$work/deck-real.xml" "$work/deck-link.xml" > "$work/batch.log" 2>&1
+status=$?
+[ "$status" = 1 ] || { cat "$work/batch.log"; fail "a batch writing one output base twice (through a link): exit status $status"; }
+grep -q "deck-link[.]xml: writes to the output base '.*/link/same' of the batch's deck .*deck-real[.]xml" "$work/batch.log" ||
+  { cat "$work/batch.log"; fail "no message naming both decks"; }
+echo "a deck on stdin runs on 2 ranks; one output base through a link is refused"
