@@ -115,13 +115,13 @@ bool canCreateIn(const std::string& dir) {
   return true;
 }
 
-/// Checks on rank 0 that \p dir can hold the run's files. With \p create false (set-up, --check)
-/// nothing is created: every existing part of the path must be a directory and a file must be
-/// creatable in the deepest one (so another run's fresh folder is never touched). With \p create
-/// true (the run) the missing folders are made and handed to the open staging scope, which
-/// removes them if the run fails (io::removeOnFailure). The verdict is shared so every rank
-/// fails together.
-void ensureWritableDirectory(const std::string& dir, const Comm& comm, bool create) {
+/// Checks on rank 0 that \p dir (named by \p key in messages) can hold the run's files. With
+/// \p create false (set-up, --check) nothing is created: every existing part of the path must be
+/// a directory and a file must be creatable in the deepest one (so another run's fresh folder is
+/// never touched). With \p create true (the run) the missing folders are made and handed to the
+/// open staging scope, which removes them if the run fails (io::removeOnFailure). The verdict is
+/// shared so every rank fails together.
+void ensureWritableDirectory(const std::string& dir, const std::string& key, const Comm& comm, bool create) {
   core::onRootCollectively(comm, [&] {
     std::vector<std::string> created;
     std::string partial, deepest = ".";
@@ -151,7 +151,7 @@ void ensureWritableDirectory(const std::string& dir, const Comm& comm, bool crea
       io::removeOnFailure(created);
     else
       for (auto it = created.rbegin(); it != created.rend(); ++it) ::rmdir(it->c_str());
-    if (!ok) SIGNORINI_USER_ERROR("Output/Directory: cannot write to '" << dir << "'");
+    if (!ok) SIGNORINI_USER_ERROR(key << ": cannot write to '" << dir << "'");
   });
 }
 
@@ -224,6 +224,7 @@ struct Simulation::Impl {
   RCP<const Comm> comm;
   core::ParameterList deck;
   std::string deckPath, outDir, basename, outputBase;
+  std::string outDirKey;  ///< where outDir comes from: "Output/Directory" or "--output-dir"
   std::shared_ptr<mesh::CoarseMesh> coarse;
   int components = 1;  // unknowns per node (1 scalar wave, 2 elasticity)
   std::unique_ptr<mesh::BoundarySegments> segments;
@@ -530,10 +531,13 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     SIGNORINI_USER_ERROR("the deck's file name '" << deckPath << "' gives the output basename '" << I.basename
                                                  << "' (hidden or empty files); set Output/Basename");
   I.outputBase = I.outDir + "/" + I.basename;
-  ensureWritableDirectory(I.outDir, *comm, false);
+  I.outDirKey = outputDir.empty() ? "Output/Directory" : "--output-dir";
+  ensureWritableDirectory(I.outDir, I.outDirKey, *comm, false);
 }
 
-void Simulation::createOutputDirectory() const { ensureWritableDirectory(impl_->outDir, *impl_->comm, true); }
+void Simulation::createOutputDirectory() const {
+  ensureWritableDirectory(impl_->outDir, impl_->outDirKey, *impl_->comm, true);
+}
 
 Simulation::~Simulation() = default;
 

@@ -136,6 +136,13 @@ std::string LinearSolver::checkParameters(const core::ParameterList& params, boo
     SIGNORINI_USER_ERROR("Linear Solver/Method: \"" << method << "\" is not one of the Krylov methods for these "
                          "symmetric positive definite systems: " << names.str() << " (any case)");
   }
+  // The Belos keys that signorini sets from its own (they would be overridden silently).
+  const auto& belos = params.sublist("Belos");
+  for (const auto& [key, ours] : {std::pair<const char*, const char*>{"Convergence Tolerance", "Relative Tolerance"},
+                                  {"Maximum Iterations", "Maximum Iterations"}})
+    if (belos.isParameter(key))
+      SIGNORINI_USER_ERROR("Linear Solver/Belos/" << key << ": set by signorini from Linear Solver/" << ours
+                                                  << "; set that instead");
   // MueLu's own validation prints its whole parameter table (hundreds of lines) before it throws.
   const auto& muelu = params.sublist("MueLu");
   const auto valid = MueLu::MasterList::List();
@@ -143,7 +150,11 @@ std::string LinearSolver::checkParameters(const core::ParameterList& params, boo
     if (!muelu.entry(it).isList() && !valid->isParameter(muelu.name(it)))
       SIGNORINI_USER_ERROR("Linear Solver/MueLu: '" << muelu.name(it) << "' is not a MueLu parameter "
                            "(MueLu's masterList.xml lists them)");
-  if (!reproducible) return "";
+  if (!reproducible) {
+    if ((preconditioner == "Jacobi" || preconditioner == "none") && muelu.numParams() > 0)
+      return "Linear Solver/Preconditioner = " + preconditioner + "; without effect: Linear Solver/MueLu";
+    return "";
+  }
   if (preconditioner != "auto" && preconditioner != "Jacobi")
     SIGNORINI_USER_ERROR("Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\" (or \"auto\"), not \""
                          << preconditioner << "\"");

@@ -142,10 +142,13 @@ signorini_add_bad_deck_test(bad_expression ${decks}/bad-expression.xml
 # the working directory, must stay empty).
 signorini_add_driver_test(unwritable_output_dir_under_file EXIT 1
   ARGS --output-dir /dev/null/out ${decks}/good.xml
+  REGEX "--output-dir: cannot write to '/dev/null/out'")
+signorini_add_driver_test(unwritable_output_directory_key EXIT 1
+  ARGS --set "Output/Directory=/dev/null/out" ${decks}/good.xml
   REGEX "Output/Directory: cannot write to '/dev/null/out'")
 signorini_add_driver_test(unwritable_output_dir_in_proc EXIT 1
   ARGS --output-dir /proc/signorini-not-writable ${decks}/good.xml
-  REGEX "Output/Directory: cannot write to '/proc/signorini-not-writable'")
+  REGEX "--output-dir: cannot write to '/proc/signorini-not-writable'")
 
 # --set overrides are validated like the deck.
 signorini_add_driver_test(set_unknown_key EXIT 1
@@ -367,7 +370,7 @@ signorini_add_driver_test(check_creates_no_directory EXIT 0
   REGEX "good[.]xml is valid")
 signorini_add_driver_test(check_unwritable_output_dir EXIT 1
   ARGS --check --output-dir /dev/null/out ${decks}/good.xml
-  REGEX "Output/Directory: cannot write to '/dev/null/out'")
+  REGEX "--output-dir: cannot write to '/dev/null/out'")
 # The plan of a uniform run counts the cycles the Maximum Level allows and no coarsening.
 signorini_add_driver_test(check_uniform_plan EXIT 0
   ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=20"
@@ -415,6 +418,14 @@ signorini_add_driver_test(muelu_sublist_bad_value EXIT 1
   ARGS --check --output-dir {OUT} --set "Linear Solver/Preconditioner=MueLu" --set "Linear Solver/MueLu/smoother: type=FOO"
        ${decks}/good.xml
   REGEX "Linear Solver/MueLu: MueLu cannot be set up with these parameters: Could not construct any smoother")
+signorini_add_driver_test(belos_sublist_key_set_by_signorini EXIT 1
+  ARGS --check --output-dir {OUT} --set "Linear Solver/Belos/Maximum Iterations=1" ${decks}/good.xml
+  REGEX "Linear Solver/Belos/Maximum Iterations: set by signorini from Linear Solver/Maximum Iterations; set that instead")
+signorini_add_driver_test(muelu_sublist_without_muelu EXIT 0
+  ARGS --check --output-dir {OUT} --set "Linear Solver/Preconditioner=Jacobi" --set "Linear Solver/MueLu/verbosity=high"
+       ${decks}/good.xml
+  REGEX "warning: .*good[.]xml: Linear Solver/Preconditioner = Jacobi; without effect: Linear Solver/MueLu\n"
+        "good[.]xml is valid")
 signorini_add_driver_test(belos_sublist_unknown_key EXIT 1
   ARGS --check --output-dir {OUT} --set "Linear Solver/Belos/Bogus Key=1" ${decks}/good.xml
   REGEX "Linear Solver/Belos: Belos' \"CG\" refuses its parameters: .*Bogus Key")
