@@ -475,7 +475,15 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     checkMeshFits(meshParams.get<int>("Cells X") * std::pow(4.0, level) * meshParams.get<int>("Cells Y"),
                   "Mesh/Cells X = " + std::to_string(meshParams.get<int>("Cells X")) + ", Cells Y = " +
                       std::to_string(meshParams.get<int>("Cells Y")) + ", Refinement Level = " + std::to_string(level));
-  I.coarse = mesh::CoarseMesh::create(meshParams);
+  {  // every rank reads a mesh file itself: one rank's error (another node's file) is every rank's
+    std::string error;
+    try {
+      I.coarse = mesh::CoarseMesh::create(meshParams);
+    } catch (const core::UserError& e) {
+      error = e.what();
+    }
+    core::throwFirstUserError(*comm, error);
+  }
   if (!file.empty())
     checkMeshFits(I.coarse->numTrees() * std::pow(4.0, level + I.coarse->levelOffset()),
                   "Mesh/File with " + std::to_string(I.coarse->numTrees()) + " cells, Refinement Level = " +

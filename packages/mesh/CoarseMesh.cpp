@@ -34,7 +34,12 @@ std::shared_ptr<CoarseMesh> CoarseMesh::create(const core::ParameterList& p) {
   if (p.get<std::string>("Type") == "exodus") {
     const std::string file = p.get<std::string>("File");
     if (file.empty()) SIGNORINI_USER_ERROR("Mesh/File: Type is \"exodus\" but no file is given");
-    const io::QuadMesh m = io::readExodusQuadMesh(file);
+    io::QuadMesh m;
+    try {
+      m = io::readExodusQuadMesh(file);
+    } catch (const core::UserError& e) {
+      SIGNORINI_USER_ERROR("Mesh/File: " << e.what());
+    }
     return fromQuads(m.x, m.y, m.quads, m.sideSets, file);
   }
   const double x0 = p.get<double>("X0"), x1 = p.get<double>("X1");

@@ -127,7 +127,7 @@ signorini_add_bad_deck_test(exodus_missing_side_set ${decks}/exodus-missing-side
   "its side sets: bottom, left, right, top")
 
 signorini_add_bad_deck_test(exodus_missing_file ${decks}/exodus-missing-file.xml
-  "Exodus II mesh file '[^']*no-such-mesh[.]exo' does not exist")
+  "Mesh/File: Exodus II mesh file '[^']*no-such-mesh[.]exo' does not exist")
 
 # Problem set-up.
 signorini_add_bad_deck_test(unknown_segment_name ${decks}/unknown-segment-name.xml
