@@ -27,7 +27,7 @@ extern "C" void recordSignal(int signal) {
     if (!received) received = signal;
     return;
   }
-  if (!received) {
+  if (!received || received == SIGPIPE) {  // the first request of the user (or of a signal sender)
     received = signal;
     clock_gettime(CLOCK_MONOTONIC, &firstAt);
     if (announce) {
