@@ -153,7 +153,7 @@ int main(int argc, char** argv) {
         for (const auto& f : summary.files) out << "  wrote " << f << std::endl;
       } catch (signorini::core::Interrupted& e) {  // the run's files are gone; the remaining decks do not run
         if (rank == 0) std::cerr << "signorini: " << path << ": " << e.what() << "; its files were removed" << std::endl;
-        return 128 + e.signal();
+        throw;
       } catch (signorini::core::UserError& e) {
         ++failures;
         const std::string what = e.what();
@@ -170,7 +170,7 @@ int main(int argc, char** argv) {
       }
     }
     if (checkOnly) stopIfInterrupted("during the check");
-  } catch (signorini::core::Interrupted& e) {
+  } catch (signorini::core::Interrupted& e) {  // reported where it was caught first
     return 128 + e.signal();
   }
   if (failures) out << "signorini: " << failures << " of " << decks.size() << " deck(s) failed" << std::endl;

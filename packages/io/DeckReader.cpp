@@ -57,10 +57,6 @@ void checkEntries(const Teuchos::XMLObject& node, const std::string& path, const
   }
 }
 
-}  // namespace
-
-namespace {
-
 /// The deck's text, read once (a deck from a pipe cannot be read a second time).
 std::string readText(const std::string& path) {
   struct stat info;
