@@ -75,7 +75,7 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> decks, overrides;
   std::string outputDir;
-  bool checkOnly = false;
+  bool checkOnly = false, outputDirGiven = false;
   if (kokkosHelp) return 0;  // Kokkos has printed its options
   if (help) {
     out << kUsage;
@@ -93,7 +93,21 @@ int main(int argc, char** argv) {
         if (rank == 0) std::cerr << "signorini: " << arg << " needs a value\n" << kUsage;
         return 2;
       }
-      (arg == "--set" ? overrides.emplace_back(argv[++i]) : outputDir = argv[++i]);
+      const std::string value = argv[++i];
+      // Given twice, the last one would win silently (a key given twice in a deck is an error too).
+      std::string earlier;
+      if (arg == "--output-dir" && outputDirGiven) earlier = "--output-dir '" + outputDir + "'";
+      const auto keyOf = [](const std::string& spec) { return spec.substr(0, spec.find('=')); };
+      for (const auto& o : overrides)
+        if (arg == "--set" && value.find('=') != std::string::npos && keyOf(o) == keyOf(value))
+          earlier = "--set '" + o + "'";
+      if (!earlier.empty()) {
+        if (rank == 0)
+          std::cerr << "signorini: " << arg << " '" << value << "' repeats " << earlier << "; give it once\n";
+        return 2;
+      }
+      (arg == "--set" ? overrides.emplace_back(value) : outputDir = value);
+      outputDirGiven = outputDirGiven || arg == "--output-dir";
       if (arg == "--output-dir" && outputDir.empty()) {
         if (rank == 0) std::cerr << "signorini: --output-dir needs a directory (\".\" for the working directory)\n";
         return 2;
@@ -110,7 +124,7 @@ int main(int argc, char** argv) {
     return 2;
   }
 
-  int failures = 0;
+  int failures = 0, finished = 0;  // decks that failed; decks that ran (or were checked) to their end
   std::map<std::string, std::string> deckOfBase;  // output bases of this batch (normalised)
   // A signal between decks (or during a --check) stops the batch; the decks after it do not run.
   auto stopIfInterrupted = [&](const std::string& where) {
@@ -141,6 +155,7 @@ int main(int argc, char** argv) {
           std::istringstream lines(sim.plan());
           out << "signorini: " << path << " is valid; the run would do:" << std::endl;
           for (std::string line; std::getline(lines, line);) out << "  " << line << std::endl;
+          ++finished;
           continue;
         }
         const auto summary = sim.run();
@@ -151,6 +166,7 @@ int main(int argc, char** argv) {
           out << " " << phase << " " << std::fixed << std::setprecision(3) << seconds;
         out << std::endl;
         for (const auto& f : summary.files) out << "  wrote " << f << std::endl;
+        ++finished;
       } catch (signorini::core::Interrupted& e) {  // the run's files are gone; the remaining decks do not run
         if (rank == 0) std::cerr << "signorini: " << path << ": " << e.what() << "; its files were removed" << std::endl;
         throw;
@@ -171,6 +187,10 @@ int main(int argc, char** argv) {
     }
     if (checkOnly) stopIfInterrupted("during the check");
   } catch (signorini::core::Interrupted& e) {  // reported where it was caught first
+    if (decks.size() > 1)
+      out << "signorini: batch interrupted: " << finished << " of " << decks.size() << " deck(s) "
+          << (checkOnly ? "checked" : "done") << ", " << failures << " failed, "
+          << decks.size() - finished - failures << " stopped or not " << (checkOnly ? "checked" : "run") << std::endl;
     return 128 + e.signal();
   }
   if (failures) out << "signorini: " << failures << " of " << decks.size() << " deck(s) failed" << std::endl;

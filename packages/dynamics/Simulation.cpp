@@ -104,6 +104,19 @@ std::string stemOf(const std::string& path) {
   return name;
 }
 
+/// Whether \p path names a file descriptor (/dev/fd/N, /proc/self/fd/N, /proc/PID/fd/N), as bash's
+/// process substitution <(...) passes a deck.
+bool isFileDescriptorPath(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  if (slash == std::string::npos || slash + 1 == path.size() ||
+      path.find_first_not_of("0123456789", slash + 1) != std::string::npos)
+    return false;
+  const std::string dir = path.substr(0, slash);
+  const auto fd = std::string("/fd");
+  return dir == "/dev/fd" || (dir.rfind("/proc/", 0) == 0 && dir.size() > fd.size() &&
+                              dir.compare(dir.size() - fd.size(), fd.size(), fd) == 0);
+}
+
 /// Whether a file can be created in the existing directory \p dir (a probe with a name of this
 /// process, created exclusively and removed again).
 bool canCreateIn(const std::string& dir) {
@@ -538,6 +551,9 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   if (basename.empty() && (I.basename.empty() || I.basename[0] == '.'))
     SIGNORINI_USER_ERROR("the deck's file name '" << deckPath << "' gives the output basename '" << I.basename
                                                  << "' (hidden or empty files); set Output/Basename");
+  if (basename.empty() && isFileDescriptorPath(deckPath))
+    SIGNORINI_USER_ERROR("a deck read through a file descriptor (a pipe or a process substitution) gives no "
+                         "name for the outputs; set Output/Basename");
   I.outputBase = I.outDir + "/" + I.basename;
   I.outDirKey = outputDir.empty() ? "Output/Directory" : "--output-dir";
   ensureWritableDirectory(I.outDir, I.outDirKey, *comm, false);

@@ -80,6 +80,25 @@ status=$?
 [ "$status" = 130 ] || { cat "$work/check.log"; fail "--check: exit status $status after SIGINT, expected 130"; }
 grep -q "interrupted by signal 2 (Interrupt) before .*good[.]xml, which did not run" "$work/check.log" ||
   { cat "$work/check.log"; fail "--check: no message naming the deck that did not run"; }
+grep -q "batch interrupted: 1 of 4 deck(s) checked, 0 failed, 3 stopped or not checked" "$work/check.log" ||
+  { cat "$work/check.log"; fail "--check: no summary of the interrupted batch"; }
+
+# A batch interrupted in its second deck keeps the first deck's results and says what ran.
+mkdir -p "$work/batch"
+"$signorini" --output-dir "$work/batch" "$deck" "$src/inputs/membrane.xml" > "$work/batch.log" 2>&1 &
+pid=$!
+for _ in $(seq 600); do
+  grep -A2 '^signorini: running .*membrane[.]xml' "$work/batch.log" | grep -q '^  step ' && break
+  sleep 0.05
+done
+kill -INT "$pid"
+wait "$pid"
+status=$?
+[ "$status" = 130 ] || { cat "$work/batch.log"; fail "batch: exit status $status after SIGINT, expected 130"; }
+grep -q "batch interrupted: 1 of 2 deck(s) done, 0 failed, 1 stopped or not run" "$work/batch.log" ||
+  { cat "$work/batch.log"; fail "batch: no summary of the interrupted batch"; }
+[ "$(ls "$work/batch" | tr '\n' ' ')" = "good.e good.steps.csv " ] ||
+  fail "batch: expected the first deck's files only, found: $(ls -A "$work/batch")"
 
 status=$(interrupt killed KILL "$signorini")
 ls "$work/killed" | grep -q '[.]part$' || fail "SIGKILL left no '.part' file (the control)"

@@ -168,6 +168,14 @@ signorini_add_driver_test(usage_unknown_option EXIT 2
 signorini_add_driver_test(usage_option_without_value EXIT 2
   ARGS --output-dir
   REGEX "--output-dir needs a value")
+# An option given twice would keep the last value silently (a key given twice in a deck is an error).
+signorini_add_driver_test(usage_set_repeated EXIT 2
+  ARGS --output-dir {OUT} --set "Time Integration/Final Time=0.004" --set "Problem/Density=2"
+       --set "Time Integration/Final Time=0.008" ${decks}/good.xml
+  REGEX "--set 'Time Integration/Final Time=0[.]008' repeats --set 'Time Integration/Final Time=0[.]004'; give it once")
+signorini_add_driver_test(usage_output_dir_repeated EXIT 2
+  ARGS --output-dir {OUT} --output-dir {OUT}/b ${decks}/good.xml
+  REGEX "--output-dir '.*/b' repeats --output-dir '.*'; give it once")
 
 # --help and -h print our usage and nothing before it (Kokkos used to answer them with its own
 # options first); Kokkos' options still pass through to Kokkos.
