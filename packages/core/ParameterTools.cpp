@@ -256,13 +256,15 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
     out = std::strtod(value.c_str(), &end);
     return !value.empty() && end && *end == '\0';
   };
+  bool intOutOfRange = false;  // set by parseInt for an integer that an int cannot hold
   auto parseInt = [&](int& out) {
     char* end = nullptr;
     errno = 0;
     const long l = std::strtol(value.c_str(), &end, 10);
-    if (errno == ERANGE || l < std::numeric_limits<int>::min() || l > std::numeric_limits<int>::max()) return false;
+    if (value.empty() || !end || *end != '\0') return false;
+    intOutOfRange = errno == ERANGE || l < std::numeric_limits<int>::min() || l > std::numeric_limits<int>::max();
     out = static_cast<int>(l);
-    return !value.empty() && end && *end == '\0';
+    return !intOutOfRange;
   };
   auto parseBool = [&](bool& out) {
     if (value == "true" || value == "1") return out = true, true;
@@ -295,6 +297,9 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
     d->set(key, x);
   } else if (t == typeid(int)) {
     int i;
+    if (!parseInt(i) && intOutOfRange)
+      SIGNORINI_USER_ERROR("--set '" << spec << "': '" << value << "' is out of the range of an int ("
+                                     << std::numeric_limits<int>::min() << " to " << std::numeric_limits<int>::max() << ")");
     if (!parseInt(i)) fail("int");
     d->set(key, i);
   } else if (t == typeid(bool)) {

@@ -20,19 +20,21 @@
 namespace signorini::io {
 namespace {
 
+/// Whether \p v holds one number and nothing else but surrounding blanks (as Teuchos reads it).
 bool isWholeDouble(const std::string& v) {
-  if (v.empty()) return false;
   char* end = nullptr;
   std::strtod(v.c_str(), &end);
-  return *end == '\0';
+  return end != v.c_str() && std::string(end).find_first_not_of(" \t\r\n") == std::string::npos;
 }
 
-bool isWholeInt(const std::string& v) {
-  if (v.empty()) return false;
+enum class IntText { valid, notInteger, outOfRange };
+IntText classifyInt(const std::string& v) {
   char* end = nullptr;
   errno = 0;
   const long l = std::strtol(v.c_str(), &end, 10);
-  return *end == '\0' && errno != ERANGE && l >= INT32_MIN && l <= INT32_MAX;
+  if (end == v.c_str() || std::string(end).find_first_not_of(" \t\r\n") != std::string::npos)
+    return IntText::notInteger;
+  return errno == ERANGE || l < INT32_MIN || l > INT32_MAX ? IntText::outOfRange : IntText::valid;
 }
 
 /// Numbers that convert in full, and no name twice in one list (Teuchos keeps the last silently).
@@ -51,8 +53,11 @@ void checkEntries(const Teuchos::XMLObject& node, const std::string& path, const
       const std::string type = child.getAttribute("type"), value = child.getAttribute("value");
       if (type == "double" && !isWholeDouble(value))
         SIGNORINI_USER_ERROR(file << ": '" << full << "' = \"" << value << "\" is not a number");
-      if (type == "int" && !isWholeInt(value))
+      if (type == "int" && classifyInt(value) == IntText::notInteger)
         SIGNORINI_USER_ERROR(file << ": '" << full << "' = \"" << value << "\" is not an integer");
+      if (type == "int" && classifyInt(value) == IntText::outOfRange)
+        SIGNORINI_USER_ERROR(file << ": '" << full << "' = \"" << value << "\" is out of the range of an int ("
+                                  << INT32_MIN << " to " << INT32_MAX << ")");
     }
   }
 }
@@ -71,8 +76,10 @@ std::string readText(const std::string& path) {
 
 Teuchos::ParameterList parseDeck(const std::string& text, const std::string& path) {
   Teuchos::ParameterList deck;
+  const std::string byteOrderMark = "\xEF\xBB\xBF";  // UTF-8, as some editors write it; the parser refuses it
+  const bool marked = text.compare(0, byteOrderMark.size(), byteOrderMark) == 0;
   try {
-    const Teuchos::XMLObject xml = Teuchos::StringInputSource(text).getObject();
+    const Teuchos::XMLObject xml = Teuchos::StringInputSource(marked ? text.substr(byteOrderMark.size()) : text).getObject();
     checkEntries(xml, "", path);
     deck = Teuchos::XMLParameterListReader().toParameterList(xml);
   } catch (core::UserError&) {

@@ -367,6 +367,16 @@ TEST(ApplyOverride, OverriddenValueIsStillRangeChecked) {
   EXPECT_CONTAINS(msg, "[0, 2]");
 }
 
+TEST(ApplyOverride, NamesWhatIsWrongWithAnInteger) {
+  EXPECT_CONTAINS(overrideError("Mesh/Cells X=4.5"), "'4.5' is not a valid int");
+  EXPECT_CONTAINS(overrideError("Mesh/Cells X=eight"), "'eight' is not a valid int");
+  for (const std::string big : {"2147483648", "-2147483649", "99999999999999999999"})
+    EXPECT_CONTAINS(overrideError("Mesh/Cells X=" + big), "'" + big + "' is out of the range of an int");
+  ParameterList deck;
+  applyOverride(deck, "Mesh/Cells X=2147483647", makeValid());
+  EXPECT_EQ(deck.sublist("Mesh").get<int>("Cells X"), 2147483647);
+}
+
 TEST(ApplyOverride, UnknownKeySuggestsClosest) {
   const auto msg = overrideError("Time Integration/Time Stp=0.01");
   EXPECT_CONTAINS(msg, "Time Integration/Time Stp=0.01");  // the --set spec

@@ -60,3 +60,57 @@ TEST(DeckReader, RefusesAKeyGivenTwiceButNotTheSameNameInTwoLists) {
   }
   std::remove(path.c_str());
 }
+
+namespace {
+
+/// The message of the error io::readDeckFile gives for a deck with \p text, or "" if it reads it.
+std::string errorReading(const std::string& text) {
+  const std::string path = temporaryPath("numbers.xml");
+  std::ofstream(path) << text;
+  std::string message;
+  try {
+    io::readDeckFile(path);
+  } catch (const core::UserError& e) {
+    message = e.what();
+  }
+  std::remove(path.c_str());
+  return message;
+}
+
+std::string deckWith(const std::string& type, const std::string& value) {
+  return "<ParameterList name=\"deck\"><Parameter name=\"x\" type=\"" + type + "\" value=\"" + value +
+         "\"/></ParameterList>\n";
+}
+
+}  // namespace
+
+TEST(DeckReader, ReadsNumbersWithSurroundingBlanksAndNamesWhatIsWrongWithTheOthers) {
+  const std::string path = temporaryPath("blanks.xml");
+  std::ofstream(path) << "<ParameterList name=\"deck\"><Parameter name=\"k\" type=\"double\" value=\" 0.0025 \"/>"
+                         "<Parameter name=\"n\" type=\"int\" value=\" 16\t\"/></ParameterList>\n";
+  Teuchos::ParameterList deck;
+  EXPECT_NO_THROW(deck = io::readDeckFile(path));
+  std::remove(path.c_str());
+  EXPECT_EQ(deck.get<double>("k"), 0.0025);
+  EXPECT_EQ(deck.get<int>("n"), 16);
+  for (const char* bad : {"", " ", "0.1 0.2", "0.1x", "x"})
+    EXPECT_NE(errorReading(deckWith("double", bad)).find("is not a number"), std::string::npos) << "'" << bad << "'";
+  for (const char* bad : {"", "4 5", "4.5", "1e3"})
+    EXPECT_NE(errorReading(deckWith("int", bad)).find("is not an integer"), std::string::npos) << "'" << bad << "'";
+  for (const char* big : {"2147483648", "-2147483649", "99999999999999999999"})
+    EXPECT_NE(errorReading(deckWith("int", big)).find("is out of the range of an int (-2147483648 to 2147483647)"),
+              std::string::npos)
+        << big;
+  EXPECT_EQ(errorReading(deckWith("int", "2147483647")), "");
+  EXPECT_EQ(errorReading(deckWith("int", "-2147483648")), "");
+}
+
+TEST(DeckReader, ReadsADeckThatStartsWithAUtf8ByteOrderMark) {
+  const std::string path = temporaryPath("bom.xml");
+  std::ofstream(path) << "\xEF\xBB\xBF" << kDeck;
+  Teuchos::ParameterList deck;
+  EXPECT_NO_THROW(deck = io::readDeckFile(path));
+  std::remove(path.c_str());
+  EXPECT_EQ(deck.sublist("Time Integration").get<double>("Time Step"), 0.0025);
+  EXPECT_NE(errorReading(std::string("\xEF\xBB") + kDeck).find("malformed XML deck"), std::string::npos);
+}
