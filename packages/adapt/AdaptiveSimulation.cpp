@@ -14,6 +14,7 @@
 
 #include "CsvWriter.hpp"
 #include "Error.hpp"
+#include "StringTools.hpp"
 #include "Interrupt.hpp"
 #include "MpiComm.hpp"
 #include "OutputStaging.hpp"
@@ -32,7 +33,7 @@ namespace {
 /// only the file name counts, not the directories).
 bool isExodusFile(const std::string& path) {
   const std::string name = std::filesystem::path(path).filename().string();
-  if (name.size() > 2 && name.compare(name.size() - 2, 2, ".e") == 0) return true;
+  if (name.size() > 2 && core::endsWith(name, ".e")) return true;
   const auto series = name.rfind(".e-s.");
   return series != std::string::npos && io::isExodusSeriesSuffix(name.substr(series));
 }

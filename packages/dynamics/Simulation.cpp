@@ -25,6 +25,7 @@
 #include "CsvWriter.hpp"
 #include "OutputStaging.hpp"
 #include "Error.hpp"
+#include "StringTools.hpp"
 #include "Forest.hpp"
 #include "Interrupt.hpp"
 #include "JacobiCG.hpp"
@@ -98,9 +99,7 @@ std::string directoryOf(const std::string& path) {
 std::string stemOf(const std::string& path) {
   const auto slash = path.find_last_of('/');
   std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  const std::string xml = ".xml";
-  if (name.size() >= xml.size() && name.compare(name.size() - xml.size(), xml.size(), xml) == 0)
-    name.resize(name.size() - xml.size());
+  if (core::endsWith(name, ".xml")) name.resize(name.size() - 4);
   return name;
 }
 
@@ -112,9 +111,7 @@ bool isFileDescriptorPath(const std::string& path) {
       path.find_first_not_of("0123456789", slash + 1) != std::string::npos)
     return false;
   const std::string dir = path.substr(0, slash);
-  const auto fd = std::string("/fd");
-  return dir == "/dev/fd" || (dir.rfind("/proc/", 0) == 0 && dir.size() > fd.size() &&
-                              dir.compare(dir.size() - fd.size(), fd.size(), fd) == 0);
+  return dir == "/dev/fd" || (dir.rfind("/proc/", 0) == 0 && core::endsWith(dir, "/fd"));
 }
 
 /// Whether a file can be created in the existing directory \p dir (a probe with a name of this

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "Error.hpp"
+#include "StringTools.hpp"
 
 namespace signorini::io {
 namespace fs = std::filesystem;
@@ -67,7 +68,7 @@ bool isExodusSeriesSuffix(const std::string& suffix) {
 
 bool isRunOutputSuffix(std::string suffix) {
   const std::string part = ".part";  // left by a run that was killed
-  if (suffix.size() > part.size() && suffix.compare(suffix.size() - part.size(), part.size(), part) == 0)
+  if (suffix.size() > part.size() && core::endsWith(suffix, part))
     suffix.resize(suffix.size() - part.size());
   if (suffix.rfind(".cycle", 0) == 0) {  // ".cycle<digits>" first: a file of that cycle follows
     size_t end = 6;
