@@ -3,8 +3,9 @@
 ///
 ///   signorini [--print-parameters] [--check] [--output-dir DIR] [--set 'Sublist/key=value']... DECK.xml [DECK2.xml ...]
 ///
-/// Each deck is read and validated on every rank (so a bad deck fails everywhere at once),
-/// the mesh and problem are set up, and the run writes <basename>.steps.csv and <basename>.e.
+/// Rank 0 reads each deck for all ranks; every rank validates it (so a bad deck fails everywhere
+/// at once), the mesh and problem are set up, and the run writes its files under
+/// <Output/Directory>/<basename> (README "Outputs": the step table, Exodus series, cycle tables).
 /// A failing deck is reported and the next one still runs; the exit status is non-zero if any failed.
 #include <filesystem>
 #include <iomanip>
@@ -94,18 +95,15 @@ int main(int argc, char** argv) {
         return 2;
       }
       const std::string value = argv[++i];
-      // Given twice, the last one would win silently (a key given twice in a deck is an error too).
+      // Given twice, the last one wins (as scripts that add to a command expect), with a warning.
       std::string earlier;
       if (arg == "--output-dir" && outputDirGiven) earlier = "--output-dir '" + outputDir + "'";
       const auto keyOf = [](const std::string& spec) { return spec.substr(0, spec.find('=')); };
       for (const auto& o : overrides)
         if (arg == "--set" && value.find('=') != std::string::npos && keyOf(o) == keyOf(value))
           earlier = "--set '" + o + "'";
-      if (!earlier.empty()) {
-        if (rank == 0)
-          std::cerr << "signorini: " << arg << " '" << value << "' repeats " << earlier << "; give it once\n";
-        return 2;
-      }
+      if (!earlier.empty() && rank == 0)
+        std::cerr << "signorini: warning: " << arg << " '" << value << "' replaces the earlier " << earlier << "\n";
       (arg == "--set" ? overrides.emplace_back(value) : outputDir = value);
       outputDirGiven = outputDirGiven || arg == "--output-dir";
       if (arg == "--output-dir" && outputDir.empty()) {
@@ -144,7 +142,8 @@ int main(int argc, char** argv) {
         const auto deck = readDeck(path, overrides, *comm);
         signorini::adapt::AdaptiveSimulation sim(deck, path, outputDir, comm);
         std::error_code ec;  // links resolved: two names of one folder are one folder
-        std::string base = std::filesystem::weakly_canonical(sim.outputBase(), ec).string();
+        // (absolute first: weakly_canonical keeps a relative path relative while none of it exists)
+        std::string base = std::filesystem::weakly_canonical(std::filesystem::absolute(sim.outputBase()), ec).string();
         if (ec) base = std::filesystem::absolute(sim.outputBase()).lexically_normal().string();
         const auto earlier = deckOfBase.emplace(base, path);
         if (!earlier.second)

@@ -168,14 +168,17 @@ signorini_add_driver_test(usage_unknown_option EXIT 2
 signorini_add_driver_test(usage_option_without_value EXIT 2
   ARGS --output-dir
   REGEX "--output-dir needs a value")
-# An option given twice would keep the last value silently (a key given twice in a deck is an error).
-signorini_add_driver_test(usage_set_repeated EXIT 2
-  ARGS --output-dir {OUT} --set "Time Integration/Final Time=0.004" --set "Problem/Density=2"
-       --set "Time Integration/Final Time=0.008" ${decks}/good.xml
-  REGEX "--set 'Time Integration/Final Time=0[.]008' repeats --set 'Time Integration/Final Time=0[.]004'; give it once")
-signorini_add_driver_test(usage_output_dir_repeated EXIT 2
-  ARGS --output-dir {OUT} --output-dir {OUT}/b ${decks}/good.xml
-  REGEX "--output-dir '.*/b' repeats --output-dir '.*'; give it once")
+# An option given twice: the last one wins (scripts add overrides to a command), with a warning
+# naming both.
+signorini_add_driver_test(set_repeated_last_wins EXIT 0
+  ARGS --check --output-dir {OUT} --set "Time Integration/Final Time=0.0025" --set "Problem/Density=2"
+       --set "Time Integration/Final Time=0.005" ${decks}/good.xml
+  REGEX "warning: --set 'Time Integration/Final Time=0[.]005' replaces the earlier --set 'Time Integration/Final Time=0[.]0025'"
+        "2 steps of k = 0[.]0025 to T = 0[.]005")
+signorini_add_driver_test(output_dir_repeated_last_wins EXIT 0
+  ARGS --check --output-dir {OUT}/first --output-dir {OUT}/second ${decks}/good.xml
+  REGEX "warning: --output-dir '[^']*/out/second' replaces the earlier --output-dir '[^']*/out/first'"
+        "output: [^ ]*/out/second/good[.][*]")
 
 # --help and -h print our usage and nothing before it (Kokkos used to answer them with its own
 # options first); Kokkos' options still pass through to Kokkos.
@@ -203,6 +206,13 @@ signorini_add_driver_test(batch_same_output_base EXIT 1
   REGEX "good[.]xml: writes to the output base '.*/good' of the batch's deck .*good[.]xml, whose results it would replace"
         "1 of 2 deck[(]s[)] failed"
   FILES good.steps.csv good.e)
+# The same with a relative output folder that the first deck creates (the base was compared
+# relative before the folder existed and absolute after).
+signorini_add_driver_test(batch_same_relative_new_output_base EXIT 1
+  ARGS --output-dir new ${decks}/good.xml ${decks}/good.xml
+  REGEX "good[.]xml: writes to the output base 'new/good' of the batch's deck .*good[.]xml, whose results it would replace"
+        "1 of 2 deck[(]s[)] failed"
+  FILES new/good.steps.csv new/good.e)
 signorini_add_driver_test(batch_good_then_bad EXIT 1
   ARGS --output-dir {OUT} ${decks}/good.xml ${decks}/penetrating.xml
   REGEX "good[.]xml done: 4 steps"
