@@ -251,17 +251,20 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
   auto fail = [&](const std::string& type) {
     SIGNORINI_USER_ERROR("--set '" << spec << "': '" << value << "' is not a valid " << type);
   };
+  // Numbers may have blanks around them, as in a deck.
+  const auto first = value.find_first_not_of(" \t"), last = value.find_last_not_of(" \t");
+  const std::string number = first == std::string::npos ? "" : value.substr(first, last - first + 1);
   auto parseDouble = [&](double& out) {
     char* end = nullptr;
-    out = std::strtod(value.c_str(), &end);
-    return !value.empty() && end && *end == '\0';
+    out = std::strtod(number.c_str(), &end);
+    return !number.empty() && end && *end == '\0';
   };
   bool intOutOfRange = false;  // set by parseInt for an integer that an int cannot hold
   auto parseInt = [&](int& out) {
     char* end = nullptr;
     errno = 0;
-    const long l = std::strtol(value.c_str(), &end, 10);
-    if (value.empty() || !end || *end != '\0') return false;
+    const long l = std::strtol(number.c_str(), &end, 10);
+    if (number.empty() || !end || *end != '\0') return false;
     intOutOfRange = errno == ERANGE || l < std::numeric_limits<int>::min() || l > std::numeric_limits<int>::max();
     out = static_cast<int>(l);
     return !intOutOfRange;

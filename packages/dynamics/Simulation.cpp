@@ -87,7 +87,8 @@ core::ParameterList outputParameters() {
   core::addBool(p, "Measure Contact Overhead", false,
                 "Also solve each step without contact (same A, preconditioner and initial guess) and report its "
                 "time as time_unconstrained: the contact solve costs time_contact / time_unconstrained of it");
-  core::addNamedStrings(p, "Probes", "Named points \"x, y\": u interpolated there becomes the CSV column probe:<name>");
+  core::addNamedStrings(p, "Probes", "Named points \"x, y\": u interpolated there becomes the CSV column probe:<name> (elasticity: "
+                          "probe:<name>:x and probe:<name>:y); a name holds no comma, quote or line break");
   return p;
 }
 
@@ -506,6 +507,10 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   for (auto it = out.sublist("Probes").begin(); it != out.sublist("Probes").end(); ++it) {
     const std::string name = out.sublist("Probes").name(it);
     const std::string spec = Teuchos::any_cast<std::string>(out.sublist("Probes").entry(it).getAny());
+    // The name becomes a CSV header field, which a comma, a quote or a line break would split.
+    if (name.find_first_of(",\"\n\r") != std::string::npos || name.find_first_not_of(" \t") == std::string::npos)
+      SIGNORINI_USER_ERROR("Output/Probes/" << name << ": a probe's name is a CSV column header; it must not be "
+                                               "blank or hold a comma, a quote or a line break");
     double x, y;
     char extra;
     if (std::sscanf(spec.c_str(), " %lf , %lf %c", &x, &y, &extra) != 2)

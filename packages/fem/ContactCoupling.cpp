@@ -405,11 +405,10 @@ std::vector<double> ContactCoupling::weightedObstacle(const core::Expression& g,
     const auto& x = edges_[e];
     for (int q = 0; q < 3; ++q) {
       const double px = x[0] + kGauss3Point[q] * (x[2] - x[0]), py = x[1] + kGauss3Point[q] * (x[3] - x[1]);
-      gqh(e, q) = g(px, py, t);
+      std::string bad;  // "<key>: '<text>' evaluates to nan at (x, y), t = ..."
+      gqh(e, q) = g.sample(px, py, t, bad);
       // The edges are the same on every rank, so every rank stops here alike.
-      if (!std::isfinite(gqh(e, q)))
-        SIGNORINI_USER_ERROR("Problem/Obstacle: evaluates to " << gqh(e, q) << " at (" << px << ", " << py
-                                                               << ") on the contact boundary, t = " << t);
+      if (!bad.empty()) SIGNORINI_USER_ERROR(bad << " on the contact boundary");
     }
   }
   Kokkos::deep_copy(gq, gqh);

@@ -377,6 +377,17 @@ TEST(ApplyOverride, NamesWhatIsWrongWithAnInteger) {
   EXPECT_EQ(deck.sublist("Mesh").get<int>("Cells X"), 2147483647);
 }
 
+TEST(ApplyOverride, NumbersMayHaveBlanksAroundThemAsInADeck) {
+  ParameterList deck;
+  const auto valid = makeValid();
+  applyOverride(deck, "Mesh/Cells X= 8 ", valid);
+  applyOverride(deck, "Time Integration/Time Step=\t0.01 ", valid);
+  EXPECT_EQ(deck.sublist("Mesh").get<int>("Cells X"), 8);
+  EXPECT_EQ(deck.sublist("Time Integration").get<double>("Time Step"), 0.01);
+  EXPECT_CONTAINS(overrideError("Mesh/Cells X= "), "is not a valid int");
+  EXPECT_CONTAINS(overrideError("Time Integration/Time Step=0.01 0.02"), "is not a valid double");
+}
+
 TEST(ApplyOverride, UnknownKeySuggestsClosest) {
   const auto msg = overrideError("Time Integration/Time Stp=0.01");
   EXPECT_CONTAINS(msg, "Time Integration/Time Stp=0.01");  // the --set spec

@@ -305,7 +305,17 @@ signorini_add_driver_test(bad_empty_output_directory EXIT 1
   REGEX "Output/Directory: empty")
 signorini_add_driver_test(bad_obstacle_not_a_number EXIT 1
   ARGS --output-dir {OUT} --set "Problem/Obstacle=sqrt(y - 2)" ${decks}/good.xml
-  REGEX "Problem/Obstacle: evaluates to -?nan at [(]")
+  REGEX "Problem/Obstacle: 'sqrt[(]y - 2[)]' evaluates to -?nan at [(].* on the contact boundary")
+# Probes: the point must parse and lie in the mesh; the name becomes a CSV header field.
+signorini_add_driver_test(bad_probe_name_with_comma EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probes/a,b=0.5, 0.5" ${decks}/good.xml
+  REGEX "Output/Probes/a,b: a probe's name is a CSV column header; it must not be blank or hold a comma")
+signorini_add_driver_test(bad_probe_point EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probes/centre=0.5 0.5" ${decks}/good.xml
+  REGEX "Output/Probes/centre: expected \"x, y\", got \"0[.]5 0[.]5\"")
+signorini_add_driver_test(bad_probe_outside_the_mesh EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probes/far=5, 0.5" ${decks}/good.xml
+  REGEX "Output/Probes/far: point [(]5, 0[.]5[)] is outside the mesh")
 # The Exodus file cannot take its final name when the run ends: the step table goes too.
 signorini_add_driver_test(output_exodus_not_renamable EXIT 1
   ARGS --output-dir {OUT} ${decks}/good.xml
