@@ -624,9 +624,10 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
 
   std::vector<std::string> columns = {"step", "t", "dofs", "active", "qp_iterations", "cg_iterations",
                                       "linear_solves", "linear_iterations", "energy", "newmark_energy",
-                                      "contact_force", "max_lambda", "min_gap", "max_complementarity",
+                                      "contact_force", "max_lambda", "min_lambda", "min_gap", "max_complementarity",
                                       "time_assembly", "time_contact", "time_output", "time_unconstrained",
                                       "time_remesh", "time_estimate", "cells"};
+  const size_t timeOutputColumn = std::find(columns.begin(), columns.end(), "time_output") - columns.begin();
   const int nc = I.problem->components();
   for (const auto& p : I.probes)
     for (int c = 0; c < nc; ++c) columns.push_back("probe:" + p.first + (nc == 1 ? "" : c == 0 ? ":x" : ":y"));
@@ -696,7 +697,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     std::vector<double> row = {double(step), t, dofs, double(qr.active), double(qr.activeSetIterations),
                                double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),
                                energy, I.newmarkEnergy(*d, energy, *a), force,
-                               toPhysical * qr.maxLambda, qr.minGap, toPhysical * qr.maxComplementarity, tAssembly,
+                               toPhysical * qr.maxLambda, toPhysical * qr.minLambda, qr.minGap,
+                               toPhysical * qr.maxComplementarity, tAssembly,
                                tContact, 0.0, tFree, tRemesh, tEstimate, double(d->forest->numGlobalCells())};
     for (const auto& p : I.probes)
       for (int c = 0; c < nc; ++c) row.push_back(d->assembler->evaluateComponent(uOverlap, p.second[0], p.second[1], c));
@@ -737,12 +739,17 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       for (const auto& p : parts) nodal.push_back(p.get());
       exodus->write(d->builtAtStep, *d->mesh, t, nodal, cell, contactEdges, contact);
     }
-    row[16] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    row[timeOutputColumn] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (csv) csv->row(row);
   };
 
   try {
-    writeOutputs(0, 0.0, solvers::ContactQPResult(), 0.0, 0.0, 0.0, StepExtras());
+    solvers::ContactQPResult initial;  // no QP at t = 0; the initial state's gap
+    if (d->coupling) {
+      initial.minGap = gap.empty() ? 0.0 : 1e300;
+      for (size_t j = 0; j < gap.size(); ++j) initial.minGap = std::min(initial.minGap, gap[j] / d->coupling->segmentLength()[j]);
+    }
+    writeOutputs(0, 0.0, initial, 0.0, 0.0, 0.0, StepExtras());
     for (int n = 1; n <= nSteps; ++n) {
       core::throwIfInterrupted(*I.comm);
       const double t = n * k;

@@ -365,10 +365,12 @@ ContactQPResult ContactQP::finish(ContactQPResult res, const LinearSolver& solve
   const int m = static_cast<int>(lambda.size());
   res.linearIterations = static_cast<int>(solver.totalIterations() - its0);
   res.maxLambda = -1e300;
+  res.minLambda = 0.0;
   res.minGap = 1e300;
   for (int j = 0; j < m; ++j) {
     res.active += lambda[j] < 0 ? 1 : 0;
     res.maxLambda = std::max(res.maxLambda, lambda[j]);
+    res.minLambda = std::min(res.minLambda, lambda[j]);
     res.minGap = std::min(res.minGap, G[j] / segLen_[j]);
     res.maxComplementarity = std::max(res.maxComplementarity, std::abs(lambda[j] * G[j]) / segLen_[j]);
   }

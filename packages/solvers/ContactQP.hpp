@@ -27,7 +27,8 @@ struct ContactQPResult {
   int linearSolves = 0;         ///< A-solves in total
   int linearIterations = 0;     ///< Krylov iterations of all A-solves
   int active = 0;               ///< segments in contact
-  double maxLambda = 0;         ///< max_j lambda_j (<= 0 up to tolerance)
+  double maxLambda = 0;         ///< max_j lambda_j (<= 0 by the KKT conditions; 0 while a segment is free)
+  double minLambda = 0;         ///< min_j lambda_j (the largest contact pressure, with its sign; 0 without contact)
   double minGap = 0;            ///< min_j G_j / |E_j| [length]
   double maxComplementarity = 0;  ///< max_j |lambda_j G_j| / |E_j|
 };

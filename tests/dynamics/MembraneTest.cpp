@@ -201,10 +201,15 @@ TEST(Membrane, KKTConditionsHoldAtEveryStep) {
   for (const auto& r : t.rows) {
     contactSteps += r[t.column("active")] > 0;
     EXPECT_LE(r[t.column("max_lambda")], 0.0);
+    EXPECT_LE(r[t.column("min_lambda")], r[t.column("max_lambda")]);
+    EXPECT_EQ(r[t.column("min_lambda")] < 0.0, r[t.column("active")] > 0);  // the largest pressure where in contact
     EXPECT_GE(r[t.column("min_gap")], -tol);
     EXPECT_LE(r[t.column("max_complementarity")], 1e-6);
   }
   EXPECT_GT(contactSteps, 200);  // touches at t ~ 0.05; the impacting nodes chatter (DESIGN 1.6)
+  // Step 0 (no QP) reports the initial state's gap: u = 0 against sin(pi y) - 1.05, smallest on the
+  // segments of length H = 2h = 1/16 beside y = 1/2, whose mean is 1.05 - (16/pi) cos(7 pi/16).
+  EXPECT_NEAR(t.rows.front()[t.column("min_gap")], 1.05 - 16 / M_PI * std::cos(7 * M_PI / 16), 1e-9);
   // The first contact happens near t = 0.05 (DESIGN 1.5).
   double first = -1;
   for (const auto& r : t.rows)
