@@ -250,6 +250,9 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   });
   std::vector<std::shared_ptr<mesh::Forest>> meshes(nSteps, sim_->initialForest());
   dynamics::RunSummary last;
+  std::vector<std::string> earlierFiles;  // kept files of the cycles before the last
+  std::map<std::string, double> phaseSeconds;  // over all cycles
+  const auto runStart = std::chrono::steady_clock::now();
   try {
     for (int l = 0; l < cycles; ++l) {
       {  // the largest step mesh of this cycle and the forests of all its steps
@@ -341,6 +344,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       options.reportTransferEnergy = ap.get<bool>("Report Transfer Energy");
       options.compactMeshes = compactMeshes;
       last = sim_->runPass(meshes, hook, options);
+      for (const auto& [phase, seconds] : last.phaseSeconds) phaseSeconds[phase] += seconds;
       // Memory of the stored meshes of this cycle (steps with equal meshes share one forest).
       std::set<const mesh::Forest*> unique;
       long long cells = 0, storedCells = 0;
@@ -381,9 +385,12 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         if (!lastPlanned) last.files = promoteToFinalName(last.files, base + ".cycle" + std::to_string(l), base, *comm);
           break;
       }
-      if (mayStopEarly && !writeAll && !lastPlanned)  // written in case it was the last: it was not
-        for (const auto& f : last.files)
-          if (isExodusFile(f)) io::unpublish(f);
+      const bool dropExodus = mayStopEarly && !writeAll && !lastPlanned;  // written in case it was the last: it was not
+      for (const auto& f : last.files)
+        if (dropExodus && isExodusFile(f))
+          io::unpublish(f);
+        else
+          earlierFiles.push_back(f);
     }
     core::throwIfInterrupted(*comm);  // a signal during the last step: the files go
     core::onRootCollectively(*comm, [&] {
@@ -394,7 +401,10 @@ dynamics::RunSummary AdaptiveSimulation::run() {
     if (cyclesCsv) cyclesCsv->remove();
     throw;
   }
+  last.files.insert(last.files.begin(), earlierFiles.begin(), earlierFiles.end());
   if (cyclesCsv) last.files.push_back(cyclesCsv->path());
+  last.phaseSeconds = phaseSeconds;
+  last.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - runStart).count();
   return last;
 }
 

@@ -25,9 +25,9 @@ struct RunSummary {
   long long dofsPerStep = 0;   ///< unknowns of the last step
   long long totalDofs = 0;     ///< sum over the steps n = 1..N of the unknowns of T^n
   long meshChanges = 0;        ///< steps whose mesh differed from the previous step's
-  double wallSeconds = 0;
-  std::vector<std::string> files;
-  /// Wall seconds per phase (mesh, assembly, preconditioner, contact, output) over the whole run.
+  double wallSeconds = 0;      ///< the whole run (an adaptive run: all cycles)
+  std::vector<std::string> files;  ///< every file the run wrote (an adaptive run: also the earlier cycles')
+  /// Wall seconds per phase (mesh, assembly, preconditioner, contact, output) over the whole run (all cycles).
   std::map<std::string, double> phaseSeconds;
 };
 

@@ -70,11 +70,12 @@ signorini_add_driver_test(adaptive_stop_on_total_unknowns EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Maximum Total Unknowns=300"
        ${decks}/good.xml
   REGEX "cycle 1: total unknowns 324," "good[.]xml done: 4 steps, 81 unknowns per step"
+        "wrote [^ ]*/good[.]cycle0[.]steps[.]csv"
   FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
 signorini_add_driver_test(adaptive_stop_on_total_unknowns_all_cycles EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Maximum Total Unknowns=300"
        --set "Adaptivity/Write All Cycles=true" ${decks}/good.xml
-  REGEX "cycle 1: total unknowns 324,"
+  REGEX "cycle 1: total unknowns 324," "wrote [^ ]*/good[.]cycle0[.]steps[.]csv" "wrote [^ ]*/good[.]cycle0[.]e"
   FILES good.cycle0.steps.csv good.cycle0.e good.steps.csv good.e good.cycles.csv)
 signorini_add_driver_test(adaptive_stop_on_tolerance EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Tolerance=1e30"
