@@ -22,7 +22,8 @@ import netCDF4  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_results import exodus_frames, names, plot_eta, read_csv  # noqa: E402
+from plot_results import (InputError, exodus_frames, names, nearest_frame, plot_eta, read_csv,  # noqa: E402
+                          require_exodus, time_step)
 
 FOUNDATION_X, FOUNDATION_Y = 0.15, -0.005
 
@@ -57,11 +58,9 @@ def frame_data(f, i):
 
 def plot_meshes(base, steps, k, out, scale=5.0):
     frames = list(exodus_frames(base))
-    if not frames:
-        return
     fig, axes = plt.subplots((len(steps) + 2) // 3, 3, figsize=(15, 2.0 * ((len(steps) + 2) // 3)), squeeze=False)
     for ax, step in zip(axes.flat, steps):
-        time, f, i = min(frames, key=lambda fr: abs(fr[0] - step * k))
+        time, f, i, step = nearest_frame(frames, step, k)
         x, y, conn, ux, uy, _ = frame_data(f, i)
         X, Y = x + scale * ux, y + scale * uy
         for q in conn:
@@ -112,13 +111,22 @@ def main():
     ap.add_argument("--more-adaptive", action="append", default=[], metavar="BASE:LABEL",
                     help="a further adaptive run for the estimate plot (repeatable)")
     ap.add_argument("--steps", default="20,30,60,110,160,250", help="steps for the mesh pictures")
-    ap.add_argument("--time-step", type=float, default=1e-5)
+    ap.add_argument("--time-step", type=float, help="the run's time step (default: from its step table)")
     ap.add_argument("--out", default="out/plots-bar")
     a = ap.parse_args()
+    try:  # every input first: a missing file or column stops before any plot is written
+        for base in [a.adaptive, a.uniform] + [spec.split(":", 1)[0] for spec in a.more_adaptive]:
+            if base:
+                read_csv(base + ".cycles.csv", ["total_dofs", "eta"])
+        steps = read_csv(a.adaptive + ".steps.csv", ["t", "active"])
+        require_exodus(a.adaptive)
+        k = a.time_step or time_step(steps)
+    except InputError as e:
+        sys.exit(f"{os.path.basename(sys.argv[0])}: error: {e}")
     os.makedirs(a.out, exist_ok=True)
     plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out)
     os.replace(os.path.join(a.out, "eta_vs_unknowns.png"), os.path.join(a.out, "bar_eta_vs_unknowns.png"))
-    plot_meshes(a.adaptive, [int(s) for s in a.steps.split(",")], a.time_step, a.out)
+    plot_meshes(a.adaptive, [int(s) for s in a.steps.split(",")], k, a.out)
     intervals = contact_intervals(a.adaptive + ".steps.csv")
     print(f"{a.adaptive}: {len(intervals)} contact intervals [ms]: "
           + ", ".join(f"{t0 * 1e3:.2f}-{t1 * 1e3:.2f}" for t0, t1 in intervals))

@@ -15,6 +15,8 @@ import argparse
 import glob
 import os
 import re
+import sys
+import warnings
 
 import matplotlib
 
@@ -24,8 +26,53 @@ import netCDF4  # noqa: E402
 import numpy as np  # noqa: E402
 
 
-def read_csv(path):
-    return np.genfromtxt(path, delimiter=",", names=True)
+class InputError(Exception):
+    """A missing or unusable input: reported in one line before any plot is written."""
+
+
+def read_csv(path, columns=()):
+    """The table at path (numpy structured array); InputError if it is missing, cut short, empty or
+    lacks one of the columns."""
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: no such file")
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # an empty file: reported below
+            data = np.genfromtxt(path, delimiter=",", names=True)
+    except ValueError as e:  # rows of different lengths
+        raise InputError(f"{path}: not a complete table: {str(e).strip().splitlines()[-1].strip()}") from None
+    if data.dtype.names is None or data.size == 0:
+        raise InputError(f"{path}: no rows")
+    missing = [c for c in columns if c not in data.dtype.names]
+    if missing:
+        raise InputError(f"{path}: no column {', '.join(missing)}")
+    return data
+
+
+def require_exodus(base):
+    """InputError unless the run at base wrote Exodus output."""
+    if not os.path.isfile(base + ".e"):
+        raise InputError(f"{base}.e: no such file (the run wrote no Exodus output? Output/Write Exodus)")
+
+
+def time_step(steps):
+    """The time step of a step table (its first two rows)."""
+    return float(steps["t"][1] - steps["t"][0]) if steps.size > 1 else 1.0
+
+
+def nearest_frame(frames, step, k):
+    """(time, file, index, step) of the output frame nearest step n = step; says so when that is
+    another step (beyond the run, or between Exodus outputs)."""
+    time, f, i = min(frames, key=lambda fr: abs(fr[0] - step * k))
+    drawn = int(round(time / k))
+    if drawn != step:
+        print(f"note: step {step} is not in the output of {f}; drawing step {drawn} (t = {time:.4g})", file=sys.stderr)
+    return time, f, i, drawn
+
+
+def cycle_number(path):
+    """The cycle l of '<base>.cycle<l>.<suffix>'."""
+    return int(re.search(r"\.cycle(\d+)\.", path).group(1))
 
 
 def exodus_files(base):
@@ -50,8 +97,8 @@ def plot_eta(adaptive, uniform, more, out):
     runs = [(adaptive, "adaptive", "o-"), (uniform, "uniform", "s--")]
     runs += [(spec.split(":", 1)[0], spec.split(":", 1)[-1], "^-") for spec in more]
     for base, label, style in runs:
-        if base and os.path.exists(base + ".cycles.csv"):
-            c = np.atleast_1d(read_csv(base + ".cycles.csv"))
+        if base:
+            c = np.atleast_1d(read_csv(base + ".cycles.csv", ["total_dofs", "eta"]))
             plt.loglog(c["total_dofs"], c["eta"], style, label=label)
     plt.xlabel("total unknowns (sum over time steps)")
     plt.ylabel(r"estimated error $\eta = \max_n \eta^n$")
@@ -66,7 +113,8 @@ def plot_contributions(adaptive, out):
     s = read_csv(adaptive + ".steps.csv")[1:]
     plt.figure(figsize=(6, 4))
     for col, label in [("eta_star", r"$\eta_\star$"), ("s0", "$s_0$"), ("s1", "$s_1$")]:
-        plt.semilogy(s["t"], np.maximum(s[col], 1e-16), label=label)
+        # gaps where it is 0 (markers keep single steps visible)
+        plt.semilogy(s["t"], np.where(s[col] > 0, s[col], np.nan), ".-", ms=2, lw=1, label=label)
     plt.xlabel("t")
     plt.ylabel("contribution")
     plt.legend()
@@ -81,7 +129,8 @@ def plot_energy_and_probe(adaptive, uniform, out):
     fig, axes = plt.subplots(1, 3, figsize=(16, 4))
     runs = []
     if uniform:
-        runs += [(f, "uniform " + f.split(".")[-3], "-") for f in sorted(glob.glob(uniform + ".cycle*.steps.csv"))]
+        runs += [(f, f"uniform cycle {cycle_number(f)}", "-")
+                 for f in sorted(glob.glob(uniform + ".cycle*.steps.csv"), key=cycle_number)]
         runs.append((uniform + ".steps.csv", "uniform (last cycle)", "-"))
     runs.append((adaptive + ".steps.csv", "adaptive (last cycle)", "k--"))
     for path, label, style in runs:
@@ -119,15 +168,12 @@ def plot_energy_and_probe(adaptive, uniform, out):
 
 def plot_meshes(adaptive, steps, k, out):
     frames = list(exodus_frames(adaptive))
-    if not frames:
-        return
     n = len(steps)
     cols = min(n, 3)
     rows = (n + cols - 1) // cols
     fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 4 * rows), squeeze=False)
     for ax, step in zip(axes.flat, steps):
-        t = step * k
-        time, f, i = min(frames, key=lambda fr: abs(fr[0] - t))
+        time, f, i, step = nearest_frame(frames, step, k)
         with netCDF4.Dataset(f) as d:
             x, y = d.variables["coordx"][:], d.variables["coordy"][:]
             conn = d.variables["connect1"][:] - 1
@@ -189,12 +235,24 @@ def main():
     ap.add_argument("--two-h", help="output base of a run with H = 2h for the multiplier plot (default: --adaptive)")
     ap.add_argument("--h-equals-h", help="output base of the same run with Contact/Multiplier Segments = H = h")
     ap.add_argument("--steps", default="20,60,100,200,300,400", help="steps whose meshes are drawn")
-    ap.add_argument("--time-step", type=float, default=0.0025)
+    ap.add_argument("--time-step", type=float, help="the run's time step (default: from its step table)")
     ap.add_argument("--multiplier-time", type=float, default=0.5)
     ap.add_argument("--eta-only", action="store_true",
                     help="draw only eta_vs_unknowns.png (runs without Exodus output, e.g. the finer study)")
     ap.add_argument("--out", required=True)
     a = ap.parse_args()
+    try:  # every input first: a missing file or column stops before any plot is written
+        for base in [a.adaptive, a.uniform] + [spec.split(":", 1)[0] for spec in a.more_adaptive]:
+            if base:
+                read_csv(base + ".cycles.csv", ["total_dofs", "eta"])
+        if not a.eta_only:
+            steps = read_csv(a.adaptive + ".steps.csv", ["t", "energy", "eta_star", "s0", "s1"])
+            for base in [a.adaptive, a.two_h, a.h_equals_h]:
+                if base:
+                    require_exodus(base)
+            k = a.time_step or time_step(steps)
+    except InputError as e:
+        sys.exit(f"{os.path.basename(sys.argv[0])}: error: {e}")
     os.makedirs(a.out, exist_ok=True)
     plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out)
     if a.eta_only:
@@ -202,7 +260,7 @@ def main():
         return
     plot_contributions(a.adaptive, a.out)
     plot_energy_and_probe(a.adaptive, a.uniform, a.out)
-    plot_meshes(a.adaptive, [int(s) for s in a.steps.split(",")], a.time_step, a.out)
+    plot_meshes(a.adaptive, [int(s) for s in a.steps.split(",")], k, a.out)
     plot_multiplier([(a.two_h or a.adaptive, "H = 2h"), (a.h_equals_h, "H = h")], a.multiplier_time, a.out)
     print("wrote", ", ".join(sorted(os.listdir(a.out))))
 

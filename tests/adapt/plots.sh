@@ -1,0 +1,45 @@
+#!/usr/bin/env bash
+# The plotting scripts on short runs of the paper's decks: tools/plot_results.py draws every
+# figure (a requested step beyond the run is drawn as the last step, and said so), and both
+# tools/plot_results.py and tools/plot_bar.py stop with one line naming the file or column for a
+# missing run, a run without the adaptive columns or a table cut short, before writing anything.
+# Usage: plots.sh SIGNORINI SOURCE_DIR WORK_DIR
+set -uo pipefail
+signorini=$1 src=$2 work=$3
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+short=(--output-dir "$work" --set 'Time Integration/Final Time=0.1' --set 'Adaptivity/Cycles=2')
+"$signorini" "${short[@]}" "$src/inputs/membrane.xml" "$src/inputs/membrane-uniform.xml" > "$work/runs.log" 2>&1 ||
+  { cat "$work/runs.log"; fail "the runs failed"; }
+"$signorini" "${short[@]}" --set 'Adaptivity/Strategy=none' --set 'Output/Basename=plain' \
+  "$src/inputs/membrane.xml" > "$work/plain.log" 2>&1 || { cat "$work/plain.log"; fail "the plain run failed"; }
+plot=(/usr/bin/python3 "$src/tools/plot_results.py")
+
+"${plot[@]}" --adaptive "$work/membrane" --uniform "$work/membrane-uniform" --steps 20,40,60 --out "$work/plots" \
+  > "$work/plots.log" 2>&1 || { cat "$work/plots.log"; fail "plot_results.py failed on complete runs"; }
+for f in eta_vs_unknowns estimator_contributions meshes multiplier energy_and_probe; do
+  [ -s "$work/plots/$f.png" ] || fail "no $f.png"
+done
+grep -q "note: step 60 is not in the output of .*; drawing step 40 (t = 0.1)" "$work/plots.log" ||
+  { cat "$work/plots.log"; fail "no note on the step beyond the run"; }
+
+expect_error() {  # name regex command...: exit status 1, one line matching regex, nothing written
+  local name=$1 regex=$2
+  shift 2
+  "$@" --out "$work/$name" > "$work/$name.log" 2>&1
+  local status=$?
+  [ "$status" = 1 ] || { cat "$work/$name.log"; fail "$name: exit status $status, expected 1"; }
+  [ "$(wc -l < "$work/$name.log")" = 1 ] || { cat "$work/$name.log"; fail "$name: not one line"; }
+  grep -q "$regex" "$work/$name.log" || { cat "$work/$name.log"; fail "$name: message"; }
+  [ ! -e "$work/$name" ] || fail "$name: wrote $(ls "$work/$name")"
+}
+expect_error missing "plot_results.py: error: $work/nothing.cycles.csv: no such file" \
+  "${plot[@]}" --adaptive "$work/nothing"
+cp "$work/plain.steps.csv" "$work/not-adaptive.steps.csv" && cp "$work/membrane.cycles.csv" "$work/not-adaptive.cycles.csv"
+expect_error not_adaptive "not-adaptive.steps.csv: no column eta_star, s0, s1" "${plot[@]}" --adaptive "$work/not-adaptive"
+cp "$work/membrane.cycles.csv" "$work/cut.cycles.csv"
+head -c -40 "$work/membrane.steps.csv" > "$work/cut.steps.csv"
+expect_error cut "cut.steps.csv: not a complete table: .*columns instead of" "${plot[@]}" --adaptive "$work/cut"
+expect_error bar_missing "plot_bar.py: error: $work/nothing.cycles.csv: no such file" \
+  /usr/bin/python3 "$src/tools/plot_bar.py" --adaptive "$work/nothing"
+echo "plots drawn; missing, non-adaptive and cut-short runs refused in one line, nothing written"
