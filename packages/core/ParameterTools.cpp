@@ -316,4 +316,50 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
 
 void printParameters(std::ostream& os, const ParameterList& valid) { printRecursive(os, valid, ""); }
 
+namespace {
+
+std::string xmlEscaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '&') out += "&amp;";
+    else if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '"') out += "&quot;";
+    else out += c;
+  }
+  return out;
+}
+
+void writeXml(std::ostream& os, const ParameterList& list, const std::string& name, int depth) {
+  const std::string indent(static_cast<size_t>(2 * depth), ' ');
+  os << indent << "<ParameterList name=\"" << xmlEscaped(name) << "\">\n";
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const auto& entry = list.entry(it);
+    const std::string& key = list.name(it);
+    if (entry.isList()) {
+      writeXml(os, Teuchos::getValue<ParameterList>(entry), key, depth + 1);
+      continue;
+    }
+    const auto& any = entry.getAny();
+    std::ostringstream value;
+    if (any.type() == typeid(double))
+      value << std::setprecision(17) << Teuchos::any_cast<double>(any);
+    else if (any.type() == typeid(bool))
+      value << (Teuchos::any_cast<bool>(any) ? "true" : "false");
+    else
+      value << any;
+    os << indent << "  <Parameter name=\"" << xmlEscaped(key) << "\" type=\"" << typeName(any) << "\" value=\""
+       << xmlEscaped(value.str()) << "\"/>\n";
+  }
+  os << indent << "</ParameterList>\n";
+}
+
+}  // namespace
+
+std::string deckAsXml(const ParameterList& deck) {
+  std::ostringstream os;
+  writeXml(os, deck, deck.name(), 0);
+  return os.str();
+}
+
 }  // namespace signorini::core

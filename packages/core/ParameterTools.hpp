@@ -47,6 +47,10 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
 /// Prints every valid parameter with its path, type, default and doc string.
 void printParameters(std::ostream& os, const ParameterList& valid);
 
+/// \p deck as an XML deck that reads back to the same values (doubles with 17 significant digits),
+/// without Teuchos' ids, doc strings and validators: for the records of the output files.
+std::string deckAsXml(const ParameterList& deck);
+
 /// The name in \p candidates closest to \p name (edit distance, case-insensitive); empty if none.
 std::string closestName(const std::string& name, const std::vector<std::string>& candidates);
 

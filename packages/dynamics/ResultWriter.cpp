@@ -32,15 +32,16 @@ std::vector<T> gatherToRoot(const Comm& comm, const std::vector<T>& mine, MPI_Da
 
 ResultWriter::ResultWriter(const std::string& basePath, std::vector<std::string> nodalNames,
                            std::vector<std::string> cellNames, std::vector<std::string> contactNames,
-                           RCP<const Comm> comm)
+                           io::ExodusDescription description, RCP<const Comm> comm)
     : comm_(comm), numNodal_(nodalNames.size()), numCell_(cellNames.size()), numContact_(contactNames.size()) {
   if (comm_->getRank() == 0)
-    writer_ = std::make_unique<io::ExodusSeriesWriter>(basePath, nodalNames, cellNames, "contact", contactNames);
+    writer_ = std::make_unique<io::ExodusSeriesWriter>(basePath, nodalNames, cellNames, "contact", contactNames,
+                                                       std::move(description));
 }
 
 void ResultWriter::write(long meshId, const mesh::Q1Mesh& mesh, double time, const std::vector<const Vector*>& nodal,
                          const std::vector<std::vector<double>>& cell, const std::vector<int>& contactEdges,
-                         const std::vector<std::vector<double>>& contact) {
+                         const std::vector<std::vector<double>>& contact, const std::vector<double>& globals) {
   const LO nc = mesh.numLocalCells();
   const GO numGlobal = mesh.numGlobalNodes();
   const auto overlap = mesh.overlapMap();
@@ -135,7 +136,7 @@ void ResultWriter::write(long meshId, const mesh::Q1Mesh& mesh, double time, con
         sides.push_back({static_cast<int>(cellOffset[r] + allEdges[2 * pos]), static_cast<int>(allEdges[2 * pos + 1])});
         for (size_t f = 0; f < numContact_; ++f) sideOut[f].push_back(allEdgeValues[numContact_ * pos + f]);
       }
-    writer_->write(meshId, out, time, nodalOut, cellOut, sideOut);
+    writer_->write(meshId, out, time, nodalOut, cellOut, sideOut, globals);
   });
 }
 

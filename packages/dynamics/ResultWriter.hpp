@@ -14,13 +14,15 @@ namespace signorini::dynamics {
 
 class ResultWriter {
  public:
+  /// \p description: title, info records and global variable names of every file (rank 0's counts).
   ResultWriter(const std::string& basePath, std::vector<std::string> nodalNames, std::vector<std::string> cellNames,
-               std::vector<std::string> contactNames, RCP<const Comm> comm);
+               std::vector<std::string> contactNames, io::ExodusDescription description, RCP<const Comm> comm);
   /// \param nodal overlap-map vectors; \p cell one value per local cell per field;
-  /// \p contactEdges local boundary-edge indices on Gamma_C with \p contact values per field.
+  /// \p contactEdges local boundary-edge indices on Gamma_C with \p contact values per field;
+  /// \p globals one value per global variable (rank 0's are written).
   void write(long meshId, const mesh::Q1Mesh& mesh, double time, const std::vector<const Vector*>& nodal,
              const std::vector<std::vector<double>>& cell, const std::vector<int>& contactEdges,
-             const std::vector<std::vector<double>>& contact);
+             const std::vector<std::vector<double>>& contact, const std::vector<double>& globals);
   /// Final file names (rank 0), after finalising.
   std::vector<std::string> close();
   void abandon();

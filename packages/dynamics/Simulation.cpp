@@ -24,6 +24,7 @@
 #include "ContactQP.hpp"
 #include "CsvWriter.hpp"
 #include "OutputStaging.hpp"
+#include "ParameterTools.hpp"
 #include "Error.hpp"
 #include "StringTools.hpp"
 #include "Forest.hpp"
@@ -644,11 +645,23 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   std::unique_ptr<ResultWriter> exodus;
   std::vector<std::string> cellNames = {"level"};
   if (!options.cellFieldName.empty()) cellNames.push_back(options.cellFieldName);
-  if (outParams.get<bool>("Write Exodus") && options.writeExodus)
+  // The step table's columns but the step, the time and the timings are the Exodus files' global variables.
+  std::vector<size_t> globalColumns;
+  for (size_t c = 0; c < columns.size(); ++c)
+    if (columns[c] != "step" && columns[c] != "t" && columns[c].rfind("time_", 0) != 0) globalColumns.push_back(c);
+  if (outParams.get<bool>("Write Exodus") && options.writeExodus) {
+    io::ExodusDescription description;
+    description.title = "signorini: " + base.substr(base.find_last_of('/') + 1);
+    for (const size_t c : globalColumns) description.globalNames.push_back(columns[c]);
+    description.info = {"deck: " + I.deckPath, "ranks: " + std::to_string(I.comm->getSize()),
+                        "the deck as run (defaults and command-line overrides included):"};
+    std::istringstream lines(core::deckAsXml(I.deck));
+    for (std::string line; std::getline(lines, line);) description.info.push_back(line);
     exodus = std::make_unique<ResultWriter>(base, nc == 1 ? std::vector<std::string>{"u", "v", "a"}
                                                           : std::vector<std::string>{"u_x", "u_y", "v_x", "v_y", "a_x", "a_y"},
-                                            cellNames,
-                                            std::vector<std::string>{"lambda", "gap"}, I.comm);
+                                            cellNames, std::vector<std::string>{"lambda", "gap"}, std::move(description),
+                                            I.comm);
+  }
 
   RunSummary summary;
   const auto start = std::chrono::steady_clock::now();
@@ -737,7 +750,9 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
           parts.push_back(nc == 1 ? Teuchos::rcpFromRef(const_cast<Vector&>(*f)) : component(*f, c, nc, d->mesh->overlapMap()));
       std::vector<const Vector*> nodal;
       for (const auto& p : parts) nodal.push_back(p.get());
-      exodus->write(d->builtAtStep, *d->mesh, t, nodal, cell, contactEdges, contact);
+      std::vector<double> globals;
+      for (const size_t c : globalColumns) globals.push_back(row[c]);
+      exodus->write(d->builtAtStep, *d->mesh, t, nodal, cell, contactEdges, contact, globals);
     }
     row[timeOutputColumn] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (csv) csv->row(row);

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <stdexcept>
 #include <system_error>
@@ -256,6 +257,7 @@ struct ExodusSeriesWriter::Impl {
   std::vector<std::string> nodalNames, cellNames;
   std::string sideSetName;
   std::vector<std::string> sideNames;
+  ExodusDescription description;
 
   // The file being written (exoid >= 0 while open).
   int exoid = -1;
@@ -304,14 +306,16 @@ struct ExodusSeriesWriter::Impl {
     std::vector<std::string> allNames = nodalNames;
     allNames.insert(allNames.end(), cellNames.begin(), cellNames.end());
     allNames.insert(allNames.end(), sideNames.begin(), sideNames.end());
+    allNames.insert(allNames.end(), description.globalNames.begin(), description.globalNames.end());
     allNames.push_back(sideSetName);
     const auto nameLength = longestName(allNames);
     if (nameLength > static_cast<std::size_t>(MAX_NAME_LENGTH)) {
       check(ex_set_max_name_length(exoid, static_cast<int>(nameLength)), "ex_set_max_name_length");
     }
-    check(ex_put_init(exoid, "signorini results", 2, static_cast<int64_t>(numNodes),
+    check(ex_put_init(exoid, description.title.substr(0, MAX_LINE_LENGTH).c_str(), 2, static_cast<int64_t>(numNodes),
                       static_cast<int64_t>(numCells), 1, 0, numSides > 0 ? 1 : 0),
           "ex_put_init");
+    putRecords();
     std::vector<std::string> coordinateNames{"x", "y"};
     check(ex_put_coord_names(exoid, namePointers(coordinateNames).data()), "ex_put_coord_names");
     check(ex_put_block(exoid, EX_ELEM_BLOCK, 1, "QUAD4", static_cast<int64_t>(numCells), 4, 0, 0,
@@ -323,6 +327,7 @@ struct ExodusSeriesWriter::Impl {
             "ex_put_set_param");
       check(ex_put_name(exoid, EX_SIDE_SET, 1, sideSetName.c_str()), "ex_put_name(side set)");
     }
+    defineVariables(EX_GLOBAL, description.globalNames);
     defineVariables(EX_NODAL, nodalNames);
     defineVariables(EX_ELEM_BLOCK, cellNames);
     if (numSides > 0) defineVariables(EX_SIDE_SET, sideNames);
@@ -345,6 +350,30 @@ struct ExodusSeriesWriter::Impl {
     }
   }
 
+  /// The QA record (program, version, date, time of day) and the info records (split into lines
+  /// of at most MAX_LINE_LENGTH characters).
+  void putRecords() {
+    const std::time_t now = std::time(nullptr);
+    std::tm local{};
+    localtime_r(&now, &local);
+    char date[MAX_STR_LENGTH + 1], clock[MAX_STR_LENGTH + 1];
+    std::strftime(date, sizeof date, "%Y-%m-%d", &local);
+    std::strftime(clock, sizeof clock, "%H:%M:%S", &local);
+    std::string program = "signorini", version = SIGNORINI_VERSION;
+    char* qa[1][4] = {{program.data(), version.data(), date, clock}};
+    check(ex_put_qa(exoid, 1, qa), "ex_put_qa");
+    std::vector<std::string> lines;
+    const std::size_t piece = MAX_LINE_LENGTH - 1;  // and the continuation mark
+    for (const auto& line : description.info) {
+      std::size_t at = 0;
+      for (; line.size() - at > static_cast<std::size_t>(MAX_LINE_LENGTH); at += piece)
+        lines.push_back(line.substr(at, piece) + "\\");
+      lines.push_back(line.substr(at));
+    }
+    if (!lines.empty())
+      check(ex_put_info(exoid, static_cast<int>(lines.size()), namePointers(lines).data()), "ex_put_info");
+  }
+
   /// Declares result variables of one kind; blocks and sets get an all-true truth table.
   void defineVariables(ex_entity_type type, std::vector<std::string> names) {
     if (names.empty()) return;
@@ -352,7 +381,7 @@ struct ExodusSeriesWriter::Impl {
     check(ex_put_variable_param(exoid, type, count), "ex_put_variable_param");
     check(ex_put_variable_names(exoid, type, count, namePointers(names).data()),
           "ex_put_variable_names");
-    if (type != EX_NODAL) {
+    if (type != EX_NODAL && type != EX_GLOBAL) {
       std::vector<int> truthTable(names.size(), 1);  // one block or set
       check(ex_put_truth_table(exoid, type, 1, count, truthTable.data()), "ex_put_truth_table");
     }
@@ -422,9 +451,12 @@ struct ExodusSeriesWriter::Impl {
   /// Appends one time step to the open file.
   void appendStep(double time, const std::vector<std::vector<double>>& nodal,
                   const std::vector<std::vector<double>>& cell,
-                  const std::vector<std::vector<double>>& side) {
+                  const std::vector<std::vector<double>>& side, const std::vector<double>& globals) {
     const int step = numSteps + 1;
     check(ex_put_time(exoid, step, &time), "ex_put_time");
+    if (!globals.empty())
+      check(ex_put_var(exoid, step, EX_GLOBAL, 1, 0, static_cast<int64_t>(globals.size()), globals.data()),
+            "ex_put_var(global)");
     for (std::size_t i = 0; i < nodal.size(); ++i) {
       check(ex_put_var(exoid, step, EX_NODAL, static_cast<int>(i) + 1, 1,
                        static_cast<int64_t>(numNodes), nodal[i].data()),
@@ -448,8 +480,9 @@ struct ExodusSeriesWriter::Impl {
 
 ExodusSeriesWriter::ExodusSeriesWriter(std::string basePath, std::vector<std::string> nodalNames,
                                        std::vector<std::string> cellNames, std::string sideSetName,
-                                       std::vector<std::string> sideNames)
+                                       std::vector<std::string> sideNames, ExodusDescription description)
     : impl_(std::make_unique<Impl>()) {
+  impl_->description = std::move(description);
   impl_->basePath = std::move(basePath);
   impl_->nodalNames = std::move(nodalNames);
   impl_->cellNames = std::move(cellNames);
@@ -468,11 +501,14 @@ ExodusSeriesWriter::~ExodusSeriesWriter() {
 void ExodusSeriesWriter::write(long meshId, const QuadMesh& mesh, double time,
                                const std::vector<std::vector<double>>& nodal,
                                const std::vector<std::vector<double>>& cell,
-                               const std::vector<std::vector<double>>& side) {
+                               const std::vector<std::vector<double>>& side, const std::vector<double>& globals) {
   Impl& w = *impl_;
   if (w.finished) throw std::logic_error("ExodusSeriesWriter::write called after close/abandon");
   silenceExodus();
   w.checkData(mesh, nodal, cell, side);
+  if (globals.size() != w.description.globalNames.size())
+    throw std::logic_error("ExodusSeriesWriter::write: expected " + std::to_string(w.description.globalNames.size()) +
+                           " global values, got " + std::to_string(globals.size()));
   const bool newMesh = w.exoid < 0 || meshId != w.meshId;
   if (!newMesh) {
     const auto sideSet = mesh.sideSets.find(w.sideSetName);
@@ -486,7 +522,7 @@ void ExodusSeriesWriter::write(long meshId, const QuadMesh& mesh, double time,
   if (newMesh) w.finishFile();
   try {
     if (newMesh) w.startFile(meshId, mesh);
-    w.appendStep(time, nodal, cell, side);
+    w.appendStep(time, nodal, cell, side, globals);
   } catch (...) {
     w.dropFile();  // never leave a half-written file that close() would promote
     throw;

@@ -50,6 +50,18 @@ void removeExodusSeriesTail(const std::string& basePath);
 /// are named "<final name>.part", which that pattern ignores. When the first file of a run is
 /// started, leftover "<basePath>.e-s.<digits>" files of an earlier run are deleted, so that
 /// ParaView does not mix them into this run's series.
+/// What each file of a series says about itself besides the fields: its title, info records (for
+/// example the deck that made it, one line each) and global variables, one value per output time
+/// (energies, estimates: ParaView's "Plot Global Variables Over Time"). Every file also gets a QA
+/// record naming signorini, its version and the time the file was made.
+struct ExodusDescription {
+  std::string title = "signorini results";  ///< at most 80 characters are kept
+  /// Lines of more than 80 characters continue on the next record: each piece but the last has
+  /// 79 characters and a backslash.
+  std::vector<std::string> info;
+  std::vector<std::string> globalNames;
+};
+
 class ExodusSeriesWriter {
  public:
   /// \param basePath       output path without extension, e.g. "out/membrane"
@@ -57,9 +69,10 @@ class ExodusSeriesWriter {
   /// \param cellNames      names of element variables (level, indicator, ...)
   /// \param sideSetName    name of the one side set that carries side variables (e.g. "contact")
   /// \param sideNames      names of side-set variables (lambda, gap, ...)
+  /// \param description    title, info records and global variables of every file
   ExodusSeriesWriter(std::string basePath, std::vector<std::string> nodalNames,
                      std::vector<std::string> cellNames, std::string sideSetName,
-                     std::vector<std::string> sideNames);
+                     std::vector<std::string> sideNames, ExodusDescription description = {});
   ~ExodusSeriesWriter();  ///< closes and finalises the current file
   ExodusSeriesWriter(const ExodusSeriesWriter&) = delete;
   ExodusSeriesWriter& operator=(const ExodusSeriesWriter&) = delete;
@@ -67,13 +80,14 @@ class ExodusSeriesWriter {
   /// Appends one output time. When meshId differs from the previous call's, the current file
   /// is finalised and a new one is started with this mesh (mesh.sideSets[sideSetName] gives the
   /// sides carrying the side variables; an absent set means no sides).
-  /// nodal[i] has one value per vertex, cell[i] one per quad, side[i] one per side of the set.
+  /// nodal[i] has one value per vertex, cell[i] one per quad, side[i] one per side of the set,
+  /// globals one value per global variable of the description.
   /// Wrong counts or lengths, or a call after close()/abandon(), throw std::logic_error; a file
   /// that cannot be created or written throws core::UserError naming it.
   void write(long meshId, const QuadMesh& mesh, double time,
              const std::vector<std::vector<double>>& nodal,
              const std::vector<std::vector<double>>& cell,
-             const std::vector<std::vector<double>>& side);
+             const std::vector<std::vector<double>>& side, const std::vector<double>& globals = {});
 
   /// Finalises the current file (idempotent). Returns the final file names written so far.
   std::vector<std::string> close();

@@ -3,6 +3,8 @@
 // --print-parameters, all on small hand-made valid lists.
 #include <gtest/gtest.h>
 
+#include <Teuchos_XMLParameterListHelpers.hpp>
+
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -579,3 +581,24 @@ TEST(ClosestName, EmptyWhenNothingIsClose) {
 }
 
 }  // namespace
+
+// deckAsXml (the deck in the Exodus files' info records)
+
+TEST(DeckAsXml, ReadsBackToTheSameValues) {
+  ParameterList deck("my deck");
+  deck.sublist("Time Integration").set("Time Step", 0.1);
+  deck.sublist("Time Integration").set("Final Time", 1.0 / 3.0);
+  deck.sublist("Problem").set("Tiny", 1e-300);
+  deck.sublist("Problem").set("Obstacle", std::string("x < 0.5 && y > 0 ? \"a\" & 'b' : 1"));
+  deck.sublist("Problem").set("Empty", std::string());
+  deck.sublist("Mesh").set("Cells X", -7);
+  deck.sublist("Mesh").set("Verbose", true);
+  deck.sublist("Mesh").sublist("Boundary Segments").set("clamped", std::string("left"));
+  const std::string xml = deckAsXml(deck);
+  const auto back = Teuchos::getParametersFromXmlString(xml);
+  EXPECT_EQ(xml.rfind("<ParameterList name=\"my deck\">\n", 0), 0u) << xml;
+  EXPECT_TRUE(Teuchos::haveSameValues(deck, *back)) << xml;
+  EXPECT_EQ(back->sublist("Time Integration").get<double>("Final Time"), 1.0 / 3.0);  // every bit
+  EXPECT_EQ(xml.find("docString"), std::string::npos);
+  EXPECT_EQ(xml.find(" id="), std::string::npos);
+}

@@ -305,6 +305,75 @@ TEST_F(ExodusMeshTest, LongNamesSurvive) {
   EXPECT_EQ(back.sideSets.at(longName), mesh.sideSets.at("contact"));
 }
 
+/// The records of an Exodus file: its title, QA record and info records.
+struct Records {
+  std::string title;
+  std::vector<std::string> qa, info;
+};
+Records recordsOf(const std::string& file) {
+  Records r;
+  const int exoid = openForCheck(file);
+  if (exoid < 0) return r;
+  ex_init_params params{};
+  EXPECT_GE(ex_get_init_ext(exoid, &params), 0);
+  r.title = params.title;
+  EXPECT_EQ(ex_inquire_int(exoid, EX_INQ_QA), 1);
+  char fields[4][MAX_STR_LENGTH + 1];
+  char* qa[1][4] = {{fields[0], fields[1], fields[2], fields[3]}};
+  EXPECT_GE(ex_get_qa(exoid, qa), 0);
+  r.qa.assign(fields, fields + 4);
+  const auto n = static_cast<std::size_t>(ex_inquire_int(exoid, EX_INQ_INFO));
+  std::vector<std::vector<char>> buffers(n, std::vector<char>(MAX_LINE_LENGTH + 1, '\0'));
+  std::vector<char*> pointers;
+  for (auto& b : buffers) pointers.push_back(b.data());
+  if (n > 0) EXPECT_GE(ex_get_info(exoid, pointers.data()), 0);
+  for (auto& b : buffers) r.info.emplace_back(b.data());
+  ex_close(exoid);
+  return r;
+}
+
+std::vector<double> globalsAt(const std::string& file, int step, int count) {
+  std::vector<double> values(static_cast<std::size_t>(count));
+  const int exoid = openForCheck(file);
+  if (exoid < 0) return {};
+  EXPECT_GE(ex_get_var(exoid, step, EX_GLOBAL, 1, 0, count, values.data()), 0);
+  ex_close(exoid);
+  return values;
+}
+
+TEST_F(ExodusMeshTest, EveryFileOfASeriesCarriesTitleRecordsAndGlobals) {
+  const std::string longLine = std::string(79, 'a') + std::string(79, 'b') + "cd";  // 160 characters
+  ExodusDescription description;
+  description.title = "signorini: membrane";
+  description.info = {"deck: membrane.xml", longLine, std::string(80, 'e'), ""};
+  description.globalNames = {"energy", "eta"};
+  {
+    ExodusSeriesWriter writer(path("out"), {"u", "v"}, {"level"}, "contact", {"lambda"}, description);
+    const QuadMesh a = stripMesh(2), b = stripMesh(3);
+    writer.write(1, a, 0.0, {filled(6, 0.0), filled(6, 0.0)}, {filled(2, 0.0)}, {filled(2, 0.0)}, {1.0, 0.5});
+    writer.write(1, a, 0.1, {filled(6, 0.0), filled(6, 0.0)}, {filled(2, 0.0)}, {filled(2, 0.0)}, {0.9, 0.25});
+    writer.write(2, b, 0.2, {filled(8, 0.0), filled(8, 0.0)}, {filled(3, 0.0)}, {filled(3, 0.0)}, {0.8, 0.125});
+    EXPECT_THROW(writer.write(2, b, 0.3, {filled(8, 0.0), filled(8, 0.0)}, {filled(3, 0.0)}, {filled(3, 0.0)}, {1.0}),
+                 std::logic_error);
+  }
+  for (const std::string file : {path("out.e"), path("out.e-s.0001")}) {
+    const Records r = recordsOf(file);
+    EXPECT_EQ(r.title, "signorini: membrane") << file;
+    ASSERT_EQ(r.qa.size(), 4u);
+    EXPECT_EQ(r.qa[0], "signorini");
+    EXPECT_TRUE(std::regex_match(r.qa[1], std::regex("[0-9]+[.][0-9]+[.][0-9]+"))) << r.qa[1];
+    EXPECT_TRUE(std::regex_match(r.qa[2], std::regex("[0-9]{4}-[0-9]{2}-[0-9]{2}"))) << r.qa[2];
+    EXPECT_TRUE(std::regex_match(r.qa[3], std::regex("[0-9]{2}:[0-9]{2}:[0-9]{2}"))) << r.qa[3];
+    // The long line continues on the next records; a line of exactly 80 characters fits in one.
+    EXPECT_EQ(r.info, (std::vector<std::string>{"deck: membrane.xml", std::string(79, 'a') + "\\",
+                                                std::string(79, 'b') + "\\", "cd", std::string(80, 'e'), ""}))
+        << file;
+  }
+  EXPECT_EQ(globalsAt(path("out.e"), 1, 2), (std::vector<double>{1.0, 0.5}));
+  EXPECT_EQ(globalsAt(path("out.e"), 2, 2), (std::vector<double>{0.9, 0.25}));
+  EXPECT_EQ(globalsAt(path("out.e-s.0001"), 1, 2), (std::vector<double>{0.8, 0.125}));
+}
+
 TEST_F(ExodusMeshTest, UncreatableFileIsUserErrorNamingPath) {
   const std::string base = path("no/such/dir/out");
   auto writer = makeWriter(base);

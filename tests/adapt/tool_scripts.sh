@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# The plotting scripts on short runs of the paper's decks: tools/plot_results.py draws every
+# The scripts in tools/ on short runs of the paper's decks: tools/plot_results.py draws every
 # figure (a requested step beyond the run is drawn as the last step, and said so), and both
 # tools/plot_results.py and tools/plot_bar.py stop with one line naming the file or column for a
-# missing run, a run without the adaptive columns or a table cut short, before writing anything.
-# Usage: plots.sh SIGNORINI SOURCE_DIR WORK_DIR
+# missing run, a run without the adaptive columns or a table cut short, before writing anything;
+# tools/deck_from_exodus.py gives back the deck of a run from its Exodus file, and that deck
+# runs to the same step tables, bit for bit.
+# Usage: tool_scripts.sh SIGNORINI SOURCE_DIR WORK_DIR
 set -uo pipefail
 signorini=$1 src=$2 work=$3
 rm -rf "$work" && mkdir -p "$work"
@@ -42,4 +44,11 @@ head -c -40 "$work/membrane.steps.csv" > "$work/cut.steps.csv"
 expect_error cut "cut.steps.csv: not a complete table: .*columns instead of" "${plot[@]}" --adaptive "$work/cut"
 expect_error bar_missing "plot_bar.py: error: $work/nothing.cycles.csv: no such file" \
   /usr/bin/python3 "$src/tools/plot_bar.py" --adaptive "$work/nothing"
-echo "plots drawn; missing, non-adaptive and cut-short runs refused in one line, nothing written"
+
+/usr/bin/python3 "$src/tools/deck_from_exodus.py" "$work/membrane.e" > "$work/as-run.xml" || fail "no deck from the Exodus file"
+"$signorini" --output-dir "$work" --set 'Output/Basename=again' "$work/as-run.xml" > "$work/again.log" 2>&1 ||
+  { cat "$work/again.log"; fail "the deck from the Exodus file does not run"; }
+/usr/bin/python3 "$src/tools/compare_step_tables.py" "$work/membrane" "$work/again" ||
+  fail "the deck from the Exodus file ran to other step tables"
+echo "plots drawn; missing, non-adaptive and cut-short runs refused in one line, nothing written;" \
+  "the deck from an Exodus file reruns the run bit for bit"
