@@ -192,7 +192,8 @@ def plot_meshes(adaptive, steps, k, out):
 
 
 def contact_multiplier(base, t):
-    """Multiplier per contact edge at the output time nearest t: (edge midpoints, values)."""
+    """Multiplier per contact edge at the output time nearest t: (time, edge end points (n, 2, 2),
+    values)."""
     frames = list(exodus_frames(base))
     time, f, i = min(frames, key=lambda fr: abs(fr[0] - t))
     with netCDF4.Dataset(f) as d:
@@ -202,11 +203,11 @@ def contact_multiplier(base, t):
         sides = d.variables["side_ss1"][:] - 1
         var = names(d.variables["name_sset_var"]).index("lambda") + 1
         lam = d.variables[f"vals_sset_var{var}ss1"][i, :]
-        mids = []
+        ends = []
         for e, s in zip(elems, sides):
             a, b = conn[e][s], conn[e][(s + 1) % 4]
-            mids.append((0.5 * (x[a] + x[b]), 0.5 * (y[a] + y[b])))
-    return time, np.array(mids), np.array(lam)
+            ends.append(((x[a], y[a]), (x[b], y[b])))
+    return time, np.array(ends), np.array(lam)
 
 
 def plot_multiplier(bases, t, out):
@@ -214,10 +215,13 @@ def plot_multiplier(bases, t, out):
     for base, label in bases:
         if not base or not exodus_files(base):
             continue
-        time, mids, lam = contact_multiplier(base, t)
-        coord = mids[:, 1] if np.ptp(mids[:, 1]) > np.ptp(mids[:, 0]) else mids[:, 0]
-        order = np.argsort(coord)
-        plt.step(coord[order], lam[order], where="mid", label=f"{label} (t = {time:.4g})")
+        time, ends, lam = contact_multiplier(base, t)
+        axis = 1 if np.ptp(ends[:, :, 1]) > np.ptp(ends[:, :, 0]) else 0  # along Gamma_C
+        a, b = np.sort(ends[:, :, axis], axis=1).T
+        order = np.argsort(a)
+        # each edge's constant value from its start to its end, so the jumps sit at the edges' ends
+        plt.plot(np.column_stack([a[order], b[order]]).ravel(), np.repeat(lam[order], 2),
+                 label=f"{label} (t = {time:.4g})")
     plt.xlabel("position along the contact boundary")
     plt.ylabel(r"contact multiplier $\lambda$")
     plt.legend()
