@@ -1,32 +1,39 @@
 #!/usr/bin/python3
 """Compares the step tables (<base>.steps.csv and <base>.cycleN.steps.csv) of two runs value by
-value as written (17 significant digits, so equal text is equal bits), leaving out the wall-clock
+value, bit for bit (the doubles the text reads back to, so tables written with 17 significant
+digits by earlier versions compare with today's shortest text), leaving out the wall-clock
 columns time_*. Prints the first difference of every column that differs; exit status 1 if any
-differs or the tables do not match in shape.
-Usage: compare_step_tables.py BASE_A BASE_B"""
+differs or the tables do not match in shape. With --common-columns, columns that only one of the
+runs has (a version that added a column) are named and left out instead.
+Usage: compare_step_tables.py BASE_A BASE_B [--common-columns]"""
 import csv
 import glob
 import os
 import sys
 
 a, b = sys.argv[1], sys.argv[2]
+common = "--common-columns" in sys.argv[3:]
 names = sorted(os.path.basename(f)[len(os.path.basename(a)):] for f in glob.glob(a + ".cycle*.steps.csv")) + [".steps.csv"]
 differs = False
 compared = 0
 for suffix in names:
     ta = list(csv.reader(open(a + suffix)))
     tb = list(csv.reader(open(b + suffix)))
-    if ta[0] != tb[0] or len(ta) != len(tb):
+    if (ta[0] != tb[0] and not common) or len(ta) != len(tb):
         print(f"{suffix}: the tables differ in shape ({len(ta)} and {len(tb)} rows)")
         differs = True
         continue
+    only = [n for n in ta[0] if n not in tb[0]] + [n for n in tb[0] if n not in ta[0]]
+    if only:
+        print(f"{suffix}: left out, in one run only: {', '.join(only)}")
     for c, name in enumerate(ta[0]):
-        if name.startswith("time_"):
+        if name.startswith("time_") or name not in tb[0]:
             continue
+        cb = tb[0].index(name)
         compared += len(ta) - 1
         for row in range(1, len(ta)):
-            if ta[row][c] != tb[row][c]:
-                print(f"{suffix}: {name} differs first in row {row}: {ta[row][c]} against {tb[row][c]}")
+            if float(ta[row][c]).hex() != float(tb[row][cb]).hex():
+                print(f"{suffix}: {name} differs first in row {row}: {ta[row][c]} against {tb[row][cb]}")
                 differs = True
                 break
 print(f"{len(names)} step tables, {compared} values compared: {'differences' if differs else 'all equal'}")

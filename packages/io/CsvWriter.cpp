@@ -1,6 +1,8 @@
 #include "CsvWriter.hpp"
 
+#include <charconv>
 #include <cstdio>
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -15,7 +17,7 @@ CsvWriter::CsvWriter(std::string path, std::vector<std::string> columns)
   out_.open(path_ + ".part", std::ios::out | std::ios::trunc);
   if (!out_) SIGNORINI_USER_ERROR("cannot create output file '" << path_ << ".part'");
   for (size_t i = 0; i < columns_.size(); ++i) out_ << (i ? "," : "") << columns_[i];
-  out_ << "\n" << std::setprecision(17);
+  out_ << "\n";
   out_.flush();
 }
 
@@ -25,8 +27,16 @@ CsvWriter::~CsvWriter() {
 
 void CsvWriter::row(const std::vector<double>& values) {
   if (values.size() != columns_.size()) throw std::logic_error("CsvWriter::row: wrong number of values");
-  for (size_t i = 0; i < values.size(); ++i) out_ << (i ? "," : "") << values[i];
-  out_ << "\n";
+  // The shortest text that reads back to the same double (0.0975, not 0.097500000000000003):
+  // equal text is equal bits.
+  std::string line;
+  char number[32];
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (i) line += ',';
+    const auto end = std::to_chars(number, number + sizeof number, values[i]).ptr;
+    line.append(number, end);
+  }
+  out_ << line << "\n";
   out_.flush();
 }
 
@@ -68,7 +78,11 @@ CsvTable readCsv(const std::string& path) {
     if (line.empty()) continue;
     std::stringstream ss(line);
     std::vector<double> row;
-    for (std::string c; std::getline(ss, c, ',');) row.push_back(std::stod(c));
+    for (std::string c; std::getline(ss, c, ',');) {
+      char* end = nullptr;
+      row.push_back(std::strtod(c.c_str(), &end));  // (std::stod refuses subnormal numbers)
+      if (c.empty() || *end != '\0') SIGNORINI_USER_ERROR("'" << path << "': '" << c << "' is not a number");
+    }
     t.rows.push_back(row);
   }
   return t;

@@ -17,7 +17,8 @@ class CsvWriter {
   CsvWriter(const CsvWriter&) = delete;
   CsvWriter& operator=(const CsvWriter&) = delete;
 
-  /// One row; values.size() must equal the number of columns. Doubles at full precision.
+  /// One row; values.size() must equal the number of columns. Each double as the shortest text
+  /// that reads back to it (every bit kept).
   void row(const std::vector<double>& values);
   /// Publishes "<path>.part" as path (io::publish: at once, or at the commit of the run's
   /// io::OutputStaging).

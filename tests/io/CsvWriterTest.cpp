@@ -1,0 +1,42 @@
+// The CSV tables keep every bit of every value in the shortest text that reads back to it.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "CsvWriter.hpp"
+
+using namespace signorini;
+
+TEST(CsvWriter, WritesTheShortestTextThatReadsBackToEveryBit) {
+  const std::string path = "/tmp/signorini-csv-" + std::to_string(::getpid()) + ".csv";
+  const std::vector<double> values = {0.0975, 0.1, 1.0 / 3.0, 400, -0.0, 1e-300,
+                                      std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::max(),
+                                      0.1 + 0.2};
+  std::vector<std::string> columns;
+  for (size_t i = 0; i < values.size(); ++i) columns.push_back("c" + std::to_string(i));
+  {
+    io::CsvWriter csv(path, columns);
+    csv.row(values);
+    csv.commit();
+  }
+  std::ifstream in(path);
+  std::string header, line;
+  std::getline(in, header);
+  std::getline(in, line);
+  EXPECT_EQ(line,
+            "0.0975,0.1,0.3333333333333333,400,-0,1e-300,5e-324,1.7976931348623157e+308,0.30000000000000004");
+  const auto table = io::readCsv(path);
+  ASSERT_EQ(table.rows.size(), 1u);
+  for (size_t i = 0; i < values.size(); ++i) {
+    EXPECT_EQ(std::memcmp(&table.rows[0][i], &values[i], sizeof(double)), 0) << columns[i] << " " << values[i];
+  }
+  std::remove(path.c_str());
+}
