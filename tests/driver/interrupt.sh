@@ -65,17 +65,23 @@ status=${PIPESTATUS[0]}
 [ "$status" = 141 ] || { cat "$work/pipe.log"; fail "SIGPIPE: exit status $status, expected 141"; }
 [ -z "$(ls -A "$work/pipe")" ] || fail "SIGPIPE: files left: $(ls -A "$work/pipe")"
 
+# SIGINT to the background job PID once the command after it succeeds; returns the job's exit status.
+interrupt_when() {  # pid command...
+  local pid=$1
+  shift
+  for _ in $(seq 600); do
+    "$@" && break
+    sleep 0.05
+  done
+  kill -INT "$pid"
+  wait "$pid"
+}
+
 # A --check of a batch stops at the next deck (it used to check them all and exit 0).
 deck="$src/tests/driver/decks/good.xml"
 "$signorini" --check --output-dir "$work/check" --set 'Mesh/Refinement Level=8' "$deck" "$deck" "$deck" "$deck" \
   > "$work/check.log" 2>&1 &
-pid=$!
-for _ in $(seq 600); do
-  grep -q '^signorini: checking' "$work/check.log" && break
-  sleep 0.05
-done
-kill -INT "$pid"
-wait "$pid"
+interrupt_when $! grep -q '^signorini: checking' "$work/check.log"
 status=$?
 [ "$status" = 130 ] || { cat "$work/check.log"; fail "--check: exit status $status after SIGINT, expected 130"; }
 grep -q "interrupted by signal 2 (Interrupt) before .*good[.]xml, which did not run" "$work/check.log" ||
@@ -86,13 +92,8 @@ grep -q "batch interrupted: 1 of 4 deck(s) checked, 0 failed, 3 stopped or not c
 # A batch interrupted in its second deck keeps the first deck's results and says what ran.
 mkdir -p "$work/batch"
 "$signorini" --output-dir "$work/batch" "$deck" "$src/inputs/membrane.xml" > "$work/batch.log" 2>&1 &
-pid=$!
-for _ in $(seq 600); do
-  grep -A2 '^signorini: running .*membrane[.]xml' "$work/batch.log" | grep -q '^  step ' && break
-  sleep 0.05
-done
-kill -INT "$pid"
-wait "$pid"
+membrane_steps_begun() { grep -A2 '^signorini: running .*membrane[.]xml' "$work/batch.log" | grep -q '^  step '; }
+interrupt_when $! membrane_steps_begun
 status=$?
 [ "$status" = 130 ] || { cat "$work/batch.log"; fail "batch: exit status $status after SIGINT, expected 130"; }
 grep -q "batch interrupted: 1 of 2 deck(s) done, 0 failed, 1 stopped or not run" "$work/batch.log" ||
