@@ -97,10 +97,10 @@ int main(int argc, char** argv) {
       const std::string value = argv[++i];
       // Given twice, the last one wins (as scripts that add to a command expect), with a warning.
       std::string earlier;
-      if (arg == "--output-dir" && outputDirGiven) earlier = "--output-dir '" + outputDir + "'";
+      if (arg == "--output-dir" && outputDirGiven && value != outputDir) earlier = "--output-dir '" + outputDir + "'";
       const auto keyOf = [](const std::string& spec) { return spec.substr(0, spec.find('=')); };
       for (const auto& o : overrides)
-        if (arg == "--set" && value.find('=') != std::string::npos && keyOf(o) == keyOf(value))
+        if (arg == "--set" && value.find('=') != std::string::npos && keyOf(o) == keyOf(value) && o != value)
           earlier = "--set '" + o + "'";
       if (!earlier.empty() && rank == 0)
         std::cerr << "signorini: warning: " << arg << " '" << value << "' replaces the earlier " << earlier << "\n";

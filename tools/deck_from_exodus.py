@@ -4,7 +4,9 @@ defaults and command-line overrides), ready to run again.
 
   tools/deck_from_exodus.py out/membrane.e > membrane-as-run.xml
 
-Records ending in a backslash continue on the next one (Exodus keeps 80 characters per record).
+Records ending in a backslash continue on the next one (Exodus keeps 80 bytes per record; a UTF-8
+character may be cut between two). The deck names the output folder and basename of the run: run
+it again with --output-dir or another Output/Basename, or it replaces the results it came from.
 Uses Debian's python3 with netCDF4.
 """
 import sys
@@ -16,14 +18,14 @@ def info_lines(path):
     with netCDF4.Dataset(path) as d:
         if "info_records" not in d.variables:
             return []
-        records = ["".join(c.decode() for c in row if c) for row in d.variables["info_records"][:]]
-    lines, pending = [], ""
-    for r in records:
-        if r.endswith("\\"):
+        records = [b"".join(c for c in row if c) for row in d.variables["info_records"][:]]
+    lines, pending = [], b""
+    for r in records:  # joined as bytes, decoded whole
+        if r.endswith(b"\\"):
             pending += r[:-1]
         else:
-            lines.append(pending + r)
-            pending = ""
+            lines.append((pending + r).decode("utf-8", errors="replace"))
+            pending = b""
     return lines
 
 

@@ -251,6 +251,9 @@ def main():
                 read_csv(base + ".cycles.csv", ["total_dofs", "eta"])
         if not a.eta_only:
             steps = read_csv(a.adaptive + ".steps.csv", ["t", "energy", "eta_star", "s0", "s1"])
+            if a.uniform:  # every cycle's step table (the energy plot)
+                for f in [a.uniform + ".steps.csv"] + glob.glob(a.uniform + ".cycle*.steps.csv"):
+                    read_csv(f, ["t", "energy"])
             for base in [a.adaptive, a.two_h, a.h_equals_h]:
                 if base:
                     require_exodus(base)

@@ -373,6 +373,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         meshes = next;
       }
       const double regularise = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr0).count();
+      phaseSeconds["regularise"] += regularise;
       if (cyclesCsv)
         cyclesCsv->row({double(l), double(last.totalDofs), etaMax, wall + regularise, double(cells),
                         double(unique.size()), double(storedCells), bytesPerCell, double(last.meshChanges),

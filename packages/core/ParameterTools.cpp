@@ -251,7 +251,7 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
   auto fail = [&](const std::string& type) {
     SIGNORINI_USER_ERROR("--set '" << spec << "': '" << value << "' is not a valid " << type);
   };
-  // Numbers may have blanks around them, as in a deck.
+  // Numbers and bools may have blanks around them, as in a deck.
   const auto first = value.find_first_not_of(" \t"), last = value.find_last_not_of(" \t");
   const std::string number = first == std::string::npos ? "" : value.substr(first, last - first + 1);
   auto parseDouble = [&](double& out) {
@@ -270,8 +270,8 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
     return !intOutOfRange;
   };
   auto parseBool = [&](bool& out) {
-    if (value == "true" || value == "1") return out = true, true;
-    if (value == "false" || value == "0") return out = false, true;
+    if (number == "true" || number == "1") return out = true, true;
+    if (number == "false" || number == "0") return out = false, true;
     return false;
   };
   if (!v) {  // pass-through or named strings: infer the type
@@ -325,6 +325,8 @@ std::string xmlEscaped(const std::string& text) {
     else if (c == '<') out += "&lt;";
     else if (c == '>') out += "&gt;";
     else if (c == '"') out += "&quot;";
+    else if (c == '\n') out += "&#10;";  // every line of the deck ends in '>'
+    else if (c == '\r') out += "&#13;";
     else out += c;
   }
   return out;
@@ -347,7 +349,7 @@ void writeXml(std::ostream& os, const ParameterList& list, const std::string& na
     else if (any.type() == typeid(bool))
       value << (Teuchos::any_cast<bool>(any) ? "true" : "false");
     else
-      value << any;
+      value << std::setprecision(17) << any;  // arrays of doubles and the like
     os << indent << "  <Parameter name=\"" << xmlEscaped(key) << "\" type=\"" << typeName(any) << "\" value=\""
        << xmlEscaped(value.str()) << "\"/>\n";
   }

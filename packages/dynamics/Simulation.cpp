@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -92,6 +93,9 @@ core::ParameterList outputParameters() {
                           "probe:<name>:x and probe:<name>:y); a name holds no comma, quote or line break");
   return p;
 }
+
+/// The longest probe name: "probe:<name>:x" must fit the 256 bytes of a netCDF name.
+constexpr size_t kMaxProbeNameLength = 248;
 
 std::string directoryOf(const std::string& path) {
   const auto slash = path.find_last_of('/');
@@ -472,7 +476,12 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   I.deckPath = deckPath;
   auto meshParams = deck.sublist("Mesh");
   const std::string file = meshParams.get<std::string>("File");
-  if (!file.empty() && file[0] != '/') meshParams.set("File", directoryOf(deckPath) + "/" + file);
+  if (!file.empty() && file[0] != '/') {
+    meshParams.set("File", directoryOf(deckPath) + "/" + file);
+    // The deck recorded in the output files names the file wherever it is read again.
+    I.deck.sublist("Mesh").set("File",
+                               std::filesystem::absolute(meshParams.get<std::string>("File")).lexically_normal().string());
+  }
   const int level = meshParams.get<int>("Refinement Level");
   I.components = deck.sublist("Problem").get<std::string>("Type") == "scalar wave" ? 1 : 2;
   const bool reproducible = deck.sublist("Parallel").get<bool>("Reproducible Arithmetic");
@@ -508,10 +517,15 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   for (auto it = out.sublist("Probes").begin(); it != out.sublist("Probes").end(); ++it) {
     const std::string name = out.sublist("Probes").name(it);
     const std::string spec = Teuchos::any_cast<std::string>(out.sublist("Probes").entry(it).getAny());
-    // The name becomes a CSV header field, which a comma, a quote or a line break would split.
+    // The name becomes a CSV header field, which a comma, a quote or a line break would split, and
+    // an Exodus global variable "probe:<name>[:x]" (netCDF names: at most 256 bytes).
     if (name.find_first_of(",\"\n\r") != std::string::npos || name.find_first_not_of(" \t") == std::string::npos)
       SIGNORINI_USER_ERROR("Output/Probes/" << name << ": a probe's name is a CSV column header; it must not be "
                                                "blank or hold a comma, a quote or a line break");
+    if (name.size() > kMaxProbeNameLength)
+      SIGNORINI_USER_ERROR("Output/Probes/" << name.substr(0, 40) << "...: a probe's name has at most "
+                                            << kMaxProbeNameLength << " bytes (it has " << name.size()
+                                            << "; the Exodus files name a variable after it)");
     double x, y;
     char extra;
     if (std::sscanf(spec.c_str(), " %lf , %lf %c", &x, &y, &extra) != 2)

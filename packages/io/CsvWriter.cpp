@@ -1,6 +1,7 @@
 #include "CsvWriter.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <iomanip>
@@ -33,7 +34,11 @@ void CsvWriter::row(const std::vector<double>& values) {
   char number[32];
   for (size_t i = 0; i < values.size(); ++i) {
     if (i) line += ',';
-    const auto end = std::to_chars(number, number + sizeof number, values[i]).ptr;
+    // Whole numbers below 2^53 (steps, unknowns, cells) without an exponent: 100000, not 1e+05.
+    const double v = values[i];
+    const bool whole = std::fabs(v) < 9007199254740992.0 && v == std::trunc(v);
+    const auto end = whole ? std::to_chars(number, number + sizeof number, v, std::chars_format::fixed).ptr
+                           : std::to_chars(number, number + sizeof number, v).ptr;
     line.append(number, end);
   }
   out_ << line << "\n";

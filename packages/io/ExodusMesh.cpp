@@ -350,15 +350,15 @@ struct ExodusSeriesWriter::Impl {
     }
   }
 
-  /// The QA record (program, version, date, time of day) and the info records (split into lines
+  /// The QA record (program, version, date and time in UTC) and the info records (split into lines
   /// of at most MAX_LINE_LENGTH characters).
   void putRecords() {
     const std::time_t now = std::time(nullptr);
-    std::tm local{};
-    localtime_r(&now, &local);
+    std::tm utc{};
+    gmtime_r(&now, &utc);
     char date[MAX_STR_LENGTH + 1], clock[MAX_STR_LENGTH + 1];
-    std::strftime(date, sizeof date, "%Y-%m-%d", &local);
-    std::strftime(clock, sizeof clock, "%H:%M:%S", &local);
+    std::strftime(date, sizeof date, "%Y-%m-%d", &utc);
+    std::strftime(clock, sizeof clock, "%H:%M:%S UTC", &utc);
     std::string program = "signorini", version = SIGNORINI_VERSION;
     char* qa[1][4] = {{program.data(), version.data(), date, clock}};
     check(ex_put_qa(exoid, 1, qa), "ex_put_qa");

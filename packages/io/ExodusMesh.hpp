@@ -33,6 +33,19 @@ QuadMesh readExodusQuadMesh(const std::string& path);
 /// files are no error.
 void removeExodusSeriesTail(const std::string& basePath);
 
+/// What each file of a series says about itself besides the fields: its title, info records (for
+/// example the deck that made it, one line each) and global variables, one value per output time
+/// (energies, estimates: ParaView's "Plot Global Variables Over Time"). Every file also gets a QA
+/// record naming signorini, its version and the time the file was made.
+struct ExodusDescription {
+  std::string title = "signorini results";  ///< at most 80 characters are kept
+  /// Lines of more than 80 characters continue on the next record: each piece but the last has
+  /// 79 characters and a backslash (so a line that itself ends in a backslash reads as continued;
+  /// core::deckAsXml's lines end in '>').
+  std::vector<std::string> info;
+  std::vector<std::string> globalNames;
+};
+
 /// Writes a time series of results in Exodus II that ParaView opens as one series even
 /// though the mesh changes: one file per distinct mesh, named so that ParaView groups them.
 /// Each file is written under a temporary name and renamed when complete, so an interrupted
@@ -50,18 +63,6 @@ void removeExodusSeriesTail(const std::string& basePath);
 /// are named "<final name>.part", which that pattern ignores. When the first file of a run is
 /// started, leftover "<basePath>.e-s.<digits>" files of an earlier run are deleted, so that
 /// ParaView does not mix them into this run's series.
-/// What each file of a series says about itself besides the fields: its title, info records (for
-/// example the deck that made it, one line each) and global variables, one value per output time
-/// (energies, estimates: ParaView's "Plot Global Variables Over Time"). Every file also gets a QA
-/// record naming signorini, its version and the time the file was made.
-struct ExodusDescription {
-  std::string title = "signorini results";  ///< at most 80 characters are kept
-  /// Lines of more than 80 characters continue on the next record: each piece but the last has
-  /// 79 characters and a backslash.
-  std::vector<std::string> info;
-  std::vector<std::string> globalNames;
-};
-
 class ExodusSeriesWriter {
  public:
   /// \param basePath       output path without extension, e.g. "out/membrane"

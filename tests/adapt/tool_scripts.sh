@@ -42,6 +42,10 @@ expect_error not_adaptive "not-adaptive.steps.csv: no column eta_star, s0, s1" "
 cp "$work/membrane.cycles.csv" "$work/cut.cycles.csv"
 head -c -40 "$work/membrane.steps.csv" > "$work/cut.steps.csv"
 expect_error cut "cut.steps.csv: not a complete table: .*columns instead of" "${plot[@]}" --adaptive "$work/cut"
+for f in "$work"/membrane-uniform.*csv; do cp "$f" "$work/cut-uniform${f#"$work"/membrane-uniform}"; done
+head -c -40 "$work/membrane-uniform.steps.csv" > "$work/cut-uniform.steps.csv"
+expect_error cut_uniform "cut-uniform.steps.csv: not a complete table" \
+  "${plot[@]}" --adaptive "$work/membrane" --uniform "$work/cut-uniform"
 expect_error bar_missing "plot_bar.py: error: $work/nothing.cycles.csv: no such file" \
   /usr/bin/python3 "$src/tools/plot_bar.py" --adaptive "$work/nothing"
 
@@ -50,5 +54,13 @@ expect_error bar_missing "plot_bar.py: error: $work/nothing.cycles.csv: no such 
   { cat "$work/again.log"; fail "the deck from the Exodus file does not run"; }
 /usr/bin/python3 "$src/tools/compare_step_tables.py" "$work/membrane" "$work/again" ||
   fail "the deck from the Exodus file ran to other step tables"
+# A deck whose Mesh/File is relative to the deck's folder: the recorded deck runs from elsewhere.
+"$signorini" --output-dir "$work" --set 'Output/Basename=exo' "$src/tests/driver/decks/good-exodus.xml" \
+  > "$work/exo.log" 2>&1 || { cat "$work/exo.log"; fail "the Exodus-mesh deck failed"; }
+/usr/bin/python3 "$src/tools/deck_from_exodus.py" "$work/exo.e" > "$work/exo-as-run.xml" || fail "no deck from exo.e"
+"$signorini" --output-dir "$work" --set 'Output/Basename=exo-again' "$work/exo-as-run.xml" > "$work/exo-again.log" 2>&1 ||
+  { cat "$work/exo-again.log"; fail "the recorded Exodus-mesh deck does not run from another folder"; }
+/usr/bin/python3 "$src/tools/compare_step_tables.py" "$work/exo" "$work/exo-again" ||
+  fail "the recorded Exodus-mesh deck ran to other step tables"
 echo "plots drawn; missing, non-adaptive and cut-short runs refused in one line, nothing written;" \
   "the deck from an Exodus file reruns the run bit for bit"

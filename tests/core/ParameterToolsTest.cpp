@@ -591,6 +591,7 @@ TEST(DeckAsXml, ReadsBackToTheSameValues) {
   deck.sublist("Problem").set("Tiny", 1e-300);
   deck.sublist("Problem").set("Obstacle", std::string("x < 0.5 && y > 0 ? \"a\" & 'b' : 1"));
   deck.sublist("Problem").set("Empty", std::string());
+  deck.sublist("Problem").set("Lines", std::string("first line \\\nsecond\r\n"));
   deck.sublist("Mesh").set("Cells X", -7);
   deck.sublist("Mesh").set("Verbose", true);
   deck.sublist("Mesh").sublist("Boundary Segments").set("clamped", std::string("left"));
@@ -600,5 +601,7 @@ TEST(DeckAsXml, ReadsBackToTheSameValues) {
   EXPECT_TRUE(Teuchos::haveSameValues(deck, *back)) << xml;
   EXPECT_EQ(back->sublist("Time Integration").get<double>("Final Time"), 1.0 / 3.0);  // every bit
   EXPECT_EQ(xml.find("docString"), std::string::npos);
+  std::istringstream lines(xml);  // every line ends in '>' (an Exodus info line ending in '\' continues)
+  for (std::string line; std::getline(lines, line);) EXPECT_EQ(line.back(), '>') << line;
   EXPECT_EQ(xml.find(" id="), std::string::npos);
 }

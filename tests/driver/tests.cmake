@@ -311,6 +311,10 @@ signorini_add_driver_test(bad_obstacle_not_a_number EXIT 1
 signorini_add_driver_test(bad_probe_name_with_comma EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/a,b=0.5, 0.5" ${decks}/good.xml
   REGEX "Output/Probes/a,b: a probe's name is a CSV column header; it must not be blank or hold a comma")
+string(REPEAT "p" 249 long_probe_name)
+signorini_add_driver_test(bad_probe_name_too_long EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probes/${long_probe_name}=0.5, 0.5" ${decks}/good.xml
+  REGEX "Output/Probes/p+[.][.][.]: a probe's name has at most 248 bytes [(]it has 249")
 signorini_add_driver_test(bad_probe_point EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/centre=0.5 0.5" ${decks}/good.xml
   REGEX "Output/Probes/centre: expected \"x, y\", got \"0[.]5 0[.]5\"")

@@ -19,7 +19,7 @@ TEST(CsvWriter, WritesTheShortestTextThatReadsBackToEveryBit) {
   const std::string path = "/tmp/signorini-csv-" + std::to_string(::getpid()) + ".csv";
   const std::vector<double> values = {0.0975, 0.1, 1.0 / 3.0, 400, -0.0, 1e-300,
                                       std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::max(),
-                                      0.1 + 0.2};
+                                      0.1 + 0.2, 100000, 3e8, 9007199254740991.0, 1e16, 2.5e-5};
   std::vector<std::string> columns;
   for (size_t i = 0; i < values.size(); ++i) columns.push_back("c" + std::to_string(i));
   {
@@ -31,8 +31,10 @@ TEST(CsvWriter, WritesTheShortestTextThatReadsBackToEveryBit) {
   std::string header, line;
   std::getline(in, header);
   std::getline(in, line);
+  // Whole numbers below 2^53 (steps, unknowns) without an exponent, others in the shorter form.
   EXPECT_EQ(line,
-            "0.0975,0.1,0.3333333333333333,400,-0,1e-300,5e-324,1.7976931348623157e+308,0.30000000000000004");
+            "0.0975,0.1,0.3333333333333333,400,-0,1e-300,5e-324,1.7976931348623157e+308,0.30000000000000004,"
+            "100000,300000000,9007199254740991,1e+16,2.5e-05");
   const auto table = io::readCsv(path);
   ASSERT_EQ(table.rows.size(), 1u);
   for (size_t i = 0; i < values.size(); ++i) {
