@@ -707,6 +707,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   std::pair<double, double> written;      // (kinetic, strain) of the state last written
   std::pair<double, double> transferred;  // (kinetic, strain) of the previous step's state on the current mesh
   std::vector<RCP<Vector>> carried;   // StepExtras::carry of the previous step
+  std::shared_ptr<mesh::Forest> writtenForest;  // the mesh of the Exodus file being written, and its id
+  long writtenId = 0;
   auto writeOutputs = [&](int step, double t, const solvers::ContactQPResult& qr, double tAssembly, double tContact,
                           double tFree, const StepExtras& extras) {
     auto scope = I.timers.scope("output");
@@ -766,7 +768,13 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       for (const auto& p : parts) nodal.push_back(p.get());
       std::vector<double> globals;
       for (const size_t c : globalColumns) globals.push_back(row[c]);
-      exodus->write(d->builtAtStep, *d->mesh, t, nodal, cell, contactEdges, contact, globals);
+      // A mesh that changed and came back between two outputs stays in the current file.
+      long meshId = d->builtAtStep;
+      if (writtenForest && meshId != writtenId && (writtenForest == d->forest || writtenForest->sameCells(*d->forest)))
+        meshId = writtenId;
+      writtenForest = d->forest;
+      writtenId = meshId;
+      exodus->write(meshId, *d->mesh, t, nodal, cell, contactEdges, contact, globals);
     }
     row[timeOutputColumn] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (csv) csv->row(row);

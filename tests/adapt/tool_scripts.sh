@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The scripts in tools/ on short runs of the paper's decks: tools/plot_results.py draws every
-# figure (a requested step beyond the run is drawn as the last step, and said so), and both
+# figure (a requested step beyond the run is drawn as the last step, and said so), an Exodus series
+# starts a file only for a new mesh, and both
 # tools/plot_results.py and tools/plot_bar.py stop with one line naming the file or column for a
 # missing run, a run without the adaptive columns or a table cut short, before writing anything;
 # tools/deck_from_exodus.py gives back the deck of a run from its Exodus file, and that deck
@@ -19,6 +20,18 @@ plot=(/usr/bin/python3 "$src/tools/plot_results.py")
 
 "${plot[@]}" --adaptive "$work/membrane" --uniform "$work/membrane-uniform" --steps 20,40,60 --out "$work/plots" \
   > "$work/plots.log" 2>&1 || { cat "$work/plots.log"; fail "plot_results.py failed on complete runs"; }
+# A new file of the Exodus series only for a new mesh (in this run the mesh of step 4 comes back at step 8).
+/usr/bin/python3 - "$work/membrane" <<'PY' || fail "two consecutive files of the Exodus series have the same mesh"
+import glob, sys
+import netCDF4
+base = sys.argv[1]
+files = [base + ".e"] + sorted(glob.glob(base + ".e-s.*"))
+meshes = []
+for f in files:
+    with netCDF4.Dataset(f) as d:
+        meshes.append(tuple(d.variables[v][:].tobytes() for v in ("coordx", "coordy", "connect1")))
+sys.exit(any(a == b for a, b in zip(meshes, meshes[1:])))
+PY
 for f in eta_vs_unknowns estimator_contributions meshes multiplier energy_and_probe; do
   [ -s "$work/plots/$f.png" ] || fail "no $f.png"
 done

@@ -363,7 +363,7 @@ TEST_F(ExodusMeshTest, EveryFileOfASeriesCarriesTitleRecordsAndGlobals) {
     EXPECT_EQ(r.qa[0], "signorini");
     EXPECT_TRUE(std::regex_match(r.qa[1], std::regex("[0-9]+[.][0-9]+[.][0-9]+"))) << r.qa[1];
     EXPECT_TRUE(std::regex_match(r.qa[2], std::regex("[0-9]{4}-[0-9]{2}-[0-9]{2}"))) << r.qa[2];
-    EXPECT_TRUE(std::regex_match(r.qa[3], std::regex("[0-9]{2}:[0-9]{2}:[0-9]{2}"))) << r.qa[3];
+    EXPECT_TRUE(std::regex_match(r.qa[3], std::regex("[0-9]{2}:[0-9]{2}:[0-9]{2} UTC"))) << r.qa[3];
     // The long line continues on the next records; a line of exactly 80 characters fits in one.
     EXPECT_EQ(r.info, (std::vector<std::string>{"deck: membrane.xml", std::string(79, 'a') + "\\",
                                                 std::string(79, 'b') + "\\", "cd", std::string(80, 'e'), ""}))
