@@ -67,7 +67,8 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
   std::sort(starts.begin(), starts.end());
   std::vector<char> used(ne, 0);
   std::vector<std::vector<int>> chains;
-  auto walk = [&](Key p) {
+  std::vector<char> closed;  // per chain: a closed loop
+  auto walk = [&](Key p, bool loop) {
     std::vector<int> chain;
     for (;;) {
       int next = -1;
@@ -82,24 +83,26 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
       const Key a = key(edges_[next][0], edges_[next][1]), b = key(edges_[next][2], edges_[next][3]);
       p = (a == p) ? b : a;
     }
-    if (!chain.empty()) chains.push_back(chain);
+    if (!chain.empty()) chains.push_back(chain), closed.push_back(loop);
   };
-  for (const auto& s : starts) walk(s.second);
+  for (const auto& s : starts) walk(s.second, false);
   for (;;) {  // closed loops: start at the smallest remaining point
     int first = -1;
     for (int e = 0; e < ne; ++e)
       if (!used[e] && (first < 0 || std::make_pair(edges_[e][0], edges_[e][1]) < std::make_pair(edges_[first][0], edges_[first][1])))
         first = e;
     if (first < 0) break;
-    walk(key(edges_[first][0], edges_[first][1]));
+    walk(key(edges_[first][0], edges_[first][1]), true);
   }
 
   // Segments follow the local mesh size and the tree's dyadic hierarchy, so that a mesh and its
   // mirror image get mirrored segments: two sibling edges (the halves of one parent edge) form a
   // segment; a lone edge, whose sibling half is refined further, joins the segment of the edge next
   // to it inside that half (which lies inside the lone edge's parent, too). Edges without a parent
-  // edge in the contact set (unrefined trees, a contact boundary ending inside a parent edge) join
-  // the neighbouring segment of their chain.
+  // edge in the contact set (unrefined trees, a contact boundary ending inside a parent edge) are
+  // paired along their chain, from both ends of each run of them toward its middle (a middle of
+  // three edges is one segment; one left over joins the pair before it); a single one joins the
+  // neighbouring segment.
   edgeSegment_.assign(ne, -1);
   auto edgeLength = [&](int e) { return std::hypot(edges_[e][2] - edges_[e][0], edges_[e][3] - edges_[e][1]); };
   using Place = std::array<long long, 4>;  // tree, face, p4est level, index along the face
@@ -133,15 +136,40 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
     while (partner[e] != kNoPartner && partner[e] != e) e = partner[e];
     return partner[e] == kNoPartner ? -1 : e;
   };
-  for (auto chain : chains) {
+  int runSegments = ne;  // representatives of the pairs of edges without a parent: ne, ne + 1, ...
+  for (size_t c = 0; c < chains.size(); ++c) {
+    auto chain = chains[c];
     const int n = static_cast<int>(chain.size());
     std::vector<int> root(n);
     for (int k = 0; k < n; ++k) root[k] = rootOf(chain[k]);
-    // A closed loop starts where a segment starts.
-    for (int shift = 0; shift < n && root[0] >= 0 && root[0] == root[n - 1]; ++shift) {
+    // A closed loop starts where a segment starts, and not inside a run of edges without a parent.
+    for (int shift = 0; shift < n && ((root[0] >= 0 && root[0] == root[n - 1]) || (closed[c] && root[0] < 0 && root[n - 1] < 0));
+         ++shift) {
       std::rotate(chain.begin(), chain.begin() + 1, chain.end());
       std::rotate(root.begin(), root.begin() + 1, root.end());
     }
+    if (size == SegmentSize::TwoEdges && std::any_of(root.begin(), root.end(), [](int r) { return r >= 0; }))
+      for (int k = 0; k < n;) {  // runs [k, end) of edges without a parent
+        if (root[k] >= 0) {
+          ++k;
+          continue;
+        }
+        int end = k;
+        while (end < n && root[end] < 0) ++end;
+        int lo = k, hi = end;
+        while (hi - lo >= 4) {  // pairs from both ends
+          root[lo] = root[lo + 1] = runSegments++;
+          root[hi - 1] = root[hi - 2] = runSegments++;
+          lo += 2, hi -= 2;
+        }
+        if (hi - lo >= 2) {
+          for (int i = lo; i < hi; ++i) root[i] = runSegments;  // the middle two or three
+          ++runSegments;
+        } else if (hi - lo == 1 && lo > k) {
+          root[lo] = root[lo - 1];  // one left over in a longer run: with the pair before it
+        }
+        k = end;
+      }
     // Edges left without a segment join the previous segment of their chain (the next one at the
     // chain's start); a chain without any sibling pair is paired from its start (an odd count ends
     // in a segment of three edges).

@@ -98,6 +98,37 @@ TEST(ContactCoupling, SegmentsAreParentEdgesAndMirrorInvariant) {
   for (const auto& [a, b] : intervals) EXPECT_EQ(intervals.count({64 - b, 64 - a}), 1u) << a << " " << b;
 }
 
+TEST(ContactCoupling, UnrefinedTreesArePairedAlongTheBoundary) {
+  // 8 x 1 coarse cells, one p4est tree each (as an Exodus mesh has), the first and the last tree
+  // refined twice at the middle of their bottom side and balanced: the bottom's unrefined trees
+  // have no parent edge in the forest. They pair up as the rest do (they used to join one
+  // neighbouring segment of six edges), mirror-symmetrically about x = 4.
+  test::TestMesh tm(0.0, 8.0, 0.0, 1.0, 8, 1, 0);
+  ASSERT_EQ(tm.coarse->numTrees(), 8);
+  for (int pass = 0; pass < 2; ++pass)
+    tm.forest->refineIf([](int tree, const p4est_quadrant_t& q) {
+      const double len = static_cast<double>(P4EST_QUADRANT_LEN(q.level)) / P4EST_ROOT_LEN;
+      const double x = q.x / static_cast<double>(P4EST_ROOT_LEN), y = q.y / static_cast<double>(P4EST_ROOT_LEN);
+      return (tree == 0 || tree == 7) && x <= 0.5 && 0.5 <= x + len && y == 0.0;
+    });
+  tm.forest->balance();
+  tm.forest->partition();
+  const auto& m = tm.build();
+  fem::ContactCoupling B(m, kBottom, fem::ContactCoupling::SegmentSize::TwoEdges,
+                         std::vector<char>(m.overlapMap()->getNodeNumElements(), 0));
+  std::set<std::pair<long long, long long>> intervals;  // in units of the finest edge, 1/4
+  int coarse = 0;
+  for (int j = 0; j < B.numSegments(); ++j) {
+    EXPECT_GE(B.segmentEdges()[j], 2) << j;
+    EXPECT_LE(B.segmentEdges()[j], 3) << j;
+    const double a = B.segmentMidpoint()[j][0] - 0.5 * B.segmentLength()[j];
+    intervals.insert({std::llround(4 * a), std::llround(4 * (a + B.segmentLength()[j]))});
+    coarse += B.segmentLength()[j] == 2.0;
+  }
+  EXPECT_GE(coarse, 2);  // pairs of unrefined trees
+  for (const auto& [a, b] : intervals) EXPECT_EQ(intervals.count({32 - b, 32 - a}), 1u) << a << " " << b;
+}
+
 /// Q = B^T A^{-1} B formed column by column (one A-solve per segment), row-major.
 std::vector<double> denseSchurComplement(solvers::LinearSolver& solver, const fem::ContactCoupling& B,
                                          const Map& map) {
