@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "Error.hpp"
@@ -79,6 +80,47 @@ std::shared_ptr<CoarseMesh> CoarseMesh::rectangle(double x0, double x1, double y
   return mesh;
 }
 
+namespace {
+
+/// Refuses a coarse mesh with a hanging node: a side used by one cell only (a boundary side, as
+/// far as the vertex numbers tell) that has a vertex of another such side strictly inside it. The
+/// forest needs a conforming coarse mesh (p4est's connectivity would treat the side as a crack,
+/// and its node numbering fails on several ranks).
+void checkConforming(const std::vector<double>& x, const std::vector<double>& y,
+                     const std::vector<std::array<int, 4>>& quads, const std::string& source) {
+  std::map<std::pair<int, int>, std::pair<int, int>> sides;  // sorted vertex pair -> (uses, cell)
+  for (size_t t = 0; t < quads.size(); ++t)
+    for (int k = 0; k < 4; ++k) {
+      const int a = quads[t][k], b = quads[t][(k + 1) % 4];
+      auto& s = sides[{std::min(a, b), std::max(a, b)}];
+      s = {s.first + 1, static_cast<int>(t)};
+    }
+  std::vector<int> vertices;  // of the sides used once, by x
+  for (const auto& [ab, use] : sides)
+    if (use.first == 1) vertices.push_back(ab.first), vertices.push_back(ab.second);
+  std::sort(vertices.begin(), vertices.end(), [&](int a, int b) { return x[a] < x[b] || (x[a] == x[b] && a < b); });
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  for (const auto& [ab, use] : sides) {
+    if (use.first != 1) continue;
+    const auto [a, b] = ab;
+    const double dx = x[b] - x[a], dy = y[b] - y[a], length2 = dx * dx + dy * dy, tol = 1e-10 * std::sqrt(length2);
+    const double xlo = std::min(x[a], x[b]) - tol, xhi = std::max(x[a], x[b]) + tol;
+    auto it = std::lower_bound(vertices.begin(), vertices.end(), xlo, [&](int v, double value) { return x[v] < value; });
+    for (; it != vertices.end() && x[*it] <= xhi; ++it) {
+      const int p = *it;
+      const double along = ((x[p] - x[a]) * dx + (y[p] - y[a]) * dy) / std::sqrt(length2);
+      const double off = ((x[p] - x[a]) * dy - (y[p] - y[a]) * dx) / std::sqrt(length2);
+      if (p == a || p == b || std::abs(off) > tol || along <= tol || along >= std::sqrt(length2) - tol) continue;
+      SIGNORINI_USER_ERROR(source << ": the coarse mesh is not conforming: the side of cell " << use.second + 1
+                                  << " from (" << x[a] << ", " << y[a] << ") to (" << x[b] << ", " << y[b]
+                                  << ") has the vertex (" << x[p] << ", " << y[p]
+                                  << ") of other cells inside it (a hanging node); split the cell in the mesh");
+    }
+  }
+}
+
+}  // namespace
+
 std::shared_ptr<CoarseMesh> CoarseMesh::fromQuads(
     const std::vector<double>& x, const std::vector<double>& y, const std::vector<std::array<int, 4>>& quadsCcw,
     const std::map<std::string, std::vector<std::array<int, 2>>>& sideSets, const std::string& source) {
@@ -87,6 +129,9 @@ std::shared_ptr<CoarseMesh> CoarseMesh::fromQuads(
   const auto nv = static_cast<p4est_topidx_t>(x.size());
   const auto nt = static_cast<p4est_topidx_t>(quadsCcw.size());
   if (nt == 0) SIGNORINI_USER_ERROR(source << ": the mesh has no cells");
+  for (p4est_topidx_t v = 0; v < nv; ++v)
+    if (!std::isfinite(x[v]) || !std::isfinite(y[v]))
+      SIGNORINI_USER_ERROR(source << ": vertex " << v + 1 << " has a coordinate that is not a finite number");
   m->conn_ = p4est_connectivity_new(nv, nt, 0, 0);
   for (p4est_topidx_t v = 0; v < nv; ++v) {
     m->conn_->vertices[3 * v] = x[v];
@@ -110,7 +155,18 @@ std::shared_ptr<CoarseMesh> CoarseMesh::fromQuads(
       area += x[a] * y[b] - x[b] * y[a];
     }
     if (!(area > 0)) SIGNORINI_USER_ERROR(source << ": cell " << t + 1 << " is inverted or degenerate (its vertices are not counter-clockwise)");
+    // The bilinear map of the cell is invertible exactly when every corner turns left: a convex
+    // cell without a straight or reflex corner.
+    for (int k = 0; k < 4; ++k) {
+      const int a = q[(k + 3) % 4], b = q[k], c = q[(k + 1) % 4];
+      const double turn = (x[b] - x[a]) * (y[c] - y[b]) - (y[b] - y[a]) * (x[c] - x[b]);
+      if (!(turn > 1e-12 * area))
+        SIGNORINI_USER_ERROR(source << ": cell " << t + 1 << " is not convex: its corner at (" << x[b] << ", " << y[b]
+                                    << ") has an angle of 180 degrees or more (or a side of length zero), so "
+                                       "its bilinear map is not invertible");
+    }
   }
+  checkConforming(x, y, quadsCcw, source);
   for (p4est_topidx_t t = 0; t < nt; ++t)
     for (int f = 0; f < 4; ++f) {
       m->conn_->tree_to_tree[4 * t + f] = t;

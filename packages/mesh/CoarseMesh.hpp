@@ -32,6 +32,15 @@ class CoarseMesh {
   /// Largest level offset of a rectangle: the user's levels (Refinement Level <= 18, Maximum Level
   /// <= 25) plus the offset stay within p4est's P4EST_QMAXLEVEL = 29.
   static constexpr int kMaxLevelOffset = 4;
+  /// A coarse mesh of counter-clockwise quadrilaterals (vertex ids into \p x, \p y) with side sets
+  /// of (cell, side) pairs, side s joining corners s and s+1. Throws core::UserError naming
+  /// \p source and the cell or vertex for a coordinate that is not a number, an inverted cell, a
+  /// cell that is not convex (a corner of 180 degrees or more, a side of length zero: its bilinear
+  /// map is not invertible) and a hanging node (a mesh that is not conforming).
+  static std::shared_ptr<CoarseMesh> fromQuads(const std::vector<double>& x, const std::vector<double>& y,
+                                               const std::vector<std::array<int, 4>>& quadsCcw,
+                                               const std::map<std::string, std::vector<std::array<int, 2>>>& sideSets,
+                                               const std::string& source);
 
   ~CoarseMesh();
   CoarseMesh(const CoarseMesh&) = delete;
@@ -60,10 +69,6 @@ class CoarseMesh {
 
  private:
   CoarseMesh() = default;
-  static std::shared_ptr<CoarseMesh> fromQuads(const std::vector<double>& x, const std::vector<double>& y,
-                                               const std::vector<std::array<int, 4>>& quadsCcw,
-                                               const std::map<std::string, std::vector<std::array<int, 2>>>& sideSets,
-                                               const std::string& source);
   p4est_connectivity_t* conn_ = nullptr;
   std::vector<std::array<std::array<double, 2>, 4>> treeCorners_;
   std::vector<std::array<std::vector<std::string>, 4>> faceSets_;

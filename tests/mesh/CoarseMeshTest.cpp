@@ -1,0 +1,92 @@
+// A coarse mesh given as quadrilaterals (an Exodus file) is refused, naming the cell or vertex,
+// when the forest cannot refine it: a hanging node, a cell that is not convex, a side of length
+// zero, a coordinate that is not a number. Conforming meshes of convex cells are taken, cracks
+// (duplicate vertices) included.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "CoarseMesh.hpp"
+#include "Error.hpp"
+
+using namespace signorini;
+
+namespace {
+
+struct Quads {
+  std::vector<double> x, y;
+  std::vector<std::array<int, 4>> cells;
+};
+
+/// The message of the error fromQuads gives, or "" if it takes the mesh.
+std::string errorOf(const Quads& q) {
+  try {
+    mesh::CoarseMesh::fromQuads(q.x, q.y, q.cells, {}, "mesh.exo");
+  } catch (const core::UserError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+/// The unit square as 2 x 2 cells (vertices row by row).
+Quads square2x2() {
+  Quads q;
+  for (int j = 0; j <= 2; ++j)
+    for (int i = 0; i <= 2; ++i) q.x.push_back(0.5 * i), q.y.push_back(0.5 * j);
+  q.cells = {{0, 1, 4, 3}, {1, 2, 5, 4}, {3, 4, 7, 6}, {4, 5, 8, 7}};
+  return q;
+}
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+}  // namespace
+
+TEST(CoarseMesh, TakesConformingConvexCellsAndCracks) {
+  EXPECT_EQ(errorOf(square2x2()), "");
+  Quads distorted = square2x2();
+  distorted.x[4] = 0.6, distorted.y[4] = 0.45;  // still convex
+  EXPECT_EQ(errorOf(distorted), "");
+  Quads crack = square2x2();  // the left cells' shared side split by duplicate vertices
+  crack.x.push_back(0.0), crack.y.push_back(0.5);
+  crack.x.push_back(0.5), crack.y.push_back(0.5);
+  crack.cells[2] = {9, 10, 7, 6};
+  crack.cells[3] = {10, 5, 8, 7};
+  EXPECT_EQ(errorOf(crack), "");
+}
+
+TEST(CoarseMesh, RefusesAHangingNodeNamingTheSide) {
+  // One cell on the left half beside two on the right: (0.5, 0.5) hangs on the left cell's side.
+  Quads q;
+  q.x = {0, 0.5, 1, 0, 0.5, 1, 0.5, 1};
+  q.y = {0, 0, 0, 1, 1, 1, 0.5, 0.5};
+  q.cells = {{0, 1, 4, 3}, {1, 2, 7, 6}, {6, 7, 5, 4}};
+  const auto message = errorOf(q);
+  EXPECT_TRUE(contains(message, "mesh.exo: the coarse mesh is not conforming: the side of cell 1 from (0.5, 0) to "
+                                "(0.5, 1) has the vertex (0.5, 0.5) of other cells inside it"))
+      << message;
+}
+
+TEST(CoarseMesh, RefusesACellThatIsNotConvexOrHasASideOfLengthZero) {
+  Quads reflex = square2x2();
+  reflex.x[4] = 0.2, reflex.y[4] = 0.2;  // cell 1's corner at (0.2, 0.2) points into it
+  EXPECT_TRUE(contains(errorOf(reflex), "cell 1 is not convex: its corner at (0.2, 0.2)")) << errorOf(reflex);
+  Quads straight;  // (0.5, 0) lies on the line from (0, 0) to (1, 0): a corner of 180 degrees
+  straight.x = {0, 0.5, 1, 0};
+  straight.y = {0, 0, 0, 1};
+  straight.cells = {{0, 1, 2, 3}};
+  EXPECT_TRUE(contains(errorOf(straight), "cell 1 is not convex: its corner at (0.5, 0)")) << errorOf(straight);
+  Quads collapsed;  // a side of length zero: the quad is a triangle
+  collapsed.x = {0, 1, 1, 0};
+  collapsed.y = {0, 0, 1, 1};
+  collapsed.cells = {{0, 1, 2, 2}};
+  EXPECT_TRUE(contains(errorOf(collapsed), "cell 1 is not convex")) << errorOf(collapsed);
+}
+
+TEST(CoarseMesh, RefusesACoordinateThatIsNotANumber) {
+  Quads q = square2x2();
+  q.y[7] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_TRUE(contains(errorOf(q), "mesh.exo: vertex 8 has a coordinate that is not a finite number")) << errorOf(q);
+}
