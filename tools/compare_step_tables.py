@@ -11,14 +11,40 @@ import glob
 import os
 import sys
 
+if len(sys.argv) < 3 or any(arg.startswith("-") and arg != "--common-columns" for arg in sys.argv[1:]):
+    sys.exit(__doc__)
 a, b = sys.argv[1], sys.argv[2]
 common = "--common-columns" in sys.argv[3:]
-names = sorted(os.path.basename(f)[len(os.path.basename(a)):] for f in glob.glob(a + ".cycle*.steps.csv")) + [".steps.csv"]
+
+
+def suffixes(base):
+    """The step tables' suffixes of a run: '.cycle<l>.steps.csv' in cycle order, then '.steps.csv'."""
+    cycles = glob.glob(base + ".cycle*.steps.csv")
+    return sorted((f[len(base):] for f in cycles), key=lambda s: int(s.split(".")[1][5:])) + [".steps.csv"]
+
+
+def read(path):
+    try:
+        with open(path, newline="") as f:
+            rows = list(csv.reader(f))
+    except OSError as e:
+        sys.exit(f"compare_step_tables.py: error: {path}: {e.strerror}")
+    if not rows:
+        sys.exit(f"compare_step_tables.py: error: {path}: empty")
+    return rows
+
+
+names = suffixes(a)
+if names != suffixes(b):
+    sys.exit(f"compare_step_tables.py: error: the runs have different step tables: {a}: {', '.join(names)}; "
+             f"{b}: {', '.join(suffixes(b))}")
 differs = False
 compared = 0
 for suffix in names:
-    ta = list(csv.reader(open(a + suffix)))
-    tb = list(csv.reader(open(b + suffix)))
+    ta = read(a + suffix)
+    tb = read(b + suffix)
+    if any(len(row) != len(ta[0]) for row in ta) or any(len(row) != len(tb[0]) for row in tb):
+        sys.exit(f"compare_step_tables.py: error: {a + suffix} or {b + suffix}: a row of another length than the header")
     if (ta[0] != tb[0] and not common) or len(ta) != len(tb):
         print(f"{suffix}: the tables differ in shape ({len(ta)} and {len(tb)} rows)")
         differs = True
