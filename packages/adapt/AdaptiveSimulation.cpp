@@ -287,7 +287,12 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         // without their set-up per call. (MueLu here, set up once per mesh, broke down on the
         // membrane deck's second cycle: non-positive p^T A p in Belos CG.)
         auto solveSPD = [&](const RCP<const CrsMatrix>& A, const Vector& b, Vector& x) {
-          solvers::solveJacobiCG(*A, b, x, s1Tolerance, deck_.sublist("Linear Solver").get<int>("Maximum Iterations"));
+          try {
+            solvers::solveJacobiCG(*A, b, x, s1Tolerance, deck_.sublist("Linear Solver").get<int>("Maximum Iterations"));
+          } catch (core::SolverError& e) {
+            throw core::SolverError(std::string("the estimator's s1 (Estimator/S1 Relative Tolerance, Linear Solver/"
+                                                "Maximum Iterations): ") + e.what());
+          }
         };
         // The previous step's continuation (interpolated by the time stepper) starts s1 on a new mesh.
         const Vector* guess = s.carried.empty() ? nullptr : s.carried[0].get();

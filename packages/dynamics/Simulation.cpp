@@ -451,8 +451,13 @@ struct Simulation::Impl {
       std::vector<const Vector*> b;
       std::vector<Vector*> x;
       for (int f = 0; f < nf; ++f) b.push_back(rhs[f].get()), x.push_back(fields[f].get());
-      solvers::solveJacobiCG(*to.M, b, x, solverParams.get<double>("Relative Tolerance"),
-                             solverParams.get<int>("Maximum Iterations"));
+      try {
+        solvers::solveJacobiCG(*to.M, b, x, solverParams.get<double>("Relative Tolerance"),
+                               solverParams.get<int>("Maximum Iterations"));
+      } catch (core::SolverError& e) {
+        throw core::SolverError(std::string("the L2 projection to the new mesh (Linear Solver/Relative Tolerance, "
+                                            "Maximum Iterations): ") + e.what());
+      }
     }
     if (from.coupling && to.coupling) {
       const auto nearest = nearestPoints(from.coupling->segmentMidpoint(), to.coupling->segmentMidpoint());
@@ -530,6 +535,8 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     char extra;
     if (std::sscanf(spec.c_str(), " %lf , %lf %c", &x, &y, &extra) != 2)
       SIGNORINI_USER_ERROR("Output/Probes/" << name << ": expected \"x, y\", got \"" << spec << "\"");
+    if (!std::isfinite(x) || !std::isfinite(y))
+      SIGNORINI_USER_ERROR("Output/Probes/" << name << ": \"" << spec << "\" is not a point (a coordinate is not a finite number)");
     I.probes.push_back({name, {x, y}});
   }
 
@@ -547,7 +554,9 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     int found = d->mesh->locate(p[0], p[1], s, r) >= 0 ? 1 : 0;
     int any = 0;
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, found, Teuchos::outArg(any));
-    if (!any) SIGNORINI_USER_ERROR("Output/Probes/" << name << ": point (" << p[0] << ", " << p[1] << ") is outside the mesh");
+    if (!any)
+      SIGNORINI_USER_ERROR("Output/Probes/" << name << ": point (" << std::setprecision(15) << p[0] << ", " << p[1]
+                                            << ") is outside the mesh");
   }
   {
     Vector u(d->assembler->ownedMap()), v(d->assembler->ownedMap()), a(d->assembler->ownedMap());
@@ -881,10 +890,10 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                    std::chrono::duration<double>(tA2 - tA1).count(), tFree, extras);
       if (n % progress == 0 || n == nSteps) {
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        core::rootOut(rank) << std::fixed << std::setprecision(4) << "  step " << n << "/" << nSteps << "  t = " << t
-                            << "  dofs = " << d->assembler->ownedMap()->getGlobalNumElements() << "  active = " << qr.active
+        core::rootOut(rank) << std::defaultfloat << std::setprecision(6) << "  step " << n << "/" << nSteps
+                            << "  t = " << t << "  dofs = " << d->assembler->ownedMap()->getGlobalNumElements() << "  active = " << qr.active
                             << "  qp it = " << qr.activeSetIterations << "  lin it = " << qr.linearIterations
-                            << std::setprecision(1) << "  elapsed " << elapsed << " s  remaining ~"
+                            << std::fixed << std::setprecision(1) << "  elapsed " << elapsed << " s  remaining ~"
                             << elapsed / n * (nSteps - n) << " s" << std::endl;
       }
     }

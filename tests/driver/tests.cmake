@@ -318,6 +318,9 @@ signorini_add_driver_test(bad_probe_name_too_long EXIT 1
 signorini_add_driver_test(bad_probe_point EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/centre=0.5 0.5" ${decks}/good.xml
   REGEX "Output/Probes/centre: expected \"x, y\", got \"0[.]5 0[.]5\"")
+signorini_add_driver_test(bad_probe_not_a_number EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probes/p=nan, 0.5" ${decks}/good.xml
+  REGEX "Output/Probes/p: \"nan, 0[.]5\" is not a point [(]a coordinate is not a finite number[)]")
 signorini_add_driver_test(bad_probe_outside_the_mesh EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/far=5, 0.5" ${decks}/good.xml
   REGEX "Output/Probes/far: point [(]5, 0[.]5[)] is outside the mesh")
