@@ -125,7 +125,7 @@ QuadMesh readExodusQuadMesh(const std::string& path) {
 
   ex_init_params init{};
   checkExodus(ex_get_init_ext(exoid, &init), "ex_get_init_ext", path);
-  if (init.num_dim != 2) {
+  if (init.num_dim != 2 && init.num_dim != 3) {
     SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "' is " << init.num_dim
                                                  << "-dimensional; a 2D mesh is required");
   }
@@ -137,7 +137,15 @@ QuadMesh readExodusQuadMesh(const std::string& path) {
   const auto numNodes = static_cast<std::size_t>(init.num_nodes);
   mesh.x.resize(numNodes);
   mesh.y.resize(numNodes);
-  checkExodus(ex_get_coord(exoid, mesh.x.data(), mesh.y.data(), nullptr), "ex_get_coord", path);
+  std::vector<double> z(init.num_dim == 3 ? numNodes : 0);
+  checkExodus(ex_get_coord(exoid, mesh.x.data(), mesh.y.data(), z.empty() ? nullptr : z.data()), "ex_get_coord", path);
+  // Mesh generators often write a 2D mesh with three coordinates: taken when z is one value.
+  for (std::size_t v = 1; v < z.size(); ++v)
+    if (z[v] != z[0]) {
+      SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "' is 3-dimensional and not a plane z = const (node "
+                                                   << v + 1 << " has z = " << z[v] << ", node 1 z = " << z[0]
+                                                   << "); a 2D mesh is required");
+    }
 
   // Element blocks, concatenated in file order: the position in `quads` is then the Exodus
   // internal element number minus one, which is what side sets refer to.

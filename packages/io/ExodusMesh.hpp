@@ -24,7 +24,8 @@ struct QuadMesh {
 /// side sets keep their names (unnamed ones become "sideset_<id>").
 /// Clockwise quads are reversed to counter-clockwise order (their sides renumbered to match).
 /// Throws core::UserError naming the file for a missing/unreadable file, a non-quad block,
-/// a 3D mesh, a mesh without elements, a zero-area quad or an invalid side-set entry.
+/// a 3D mesh (three coordinates are taken when z is one value: a plane z = const), a mesh without
+/// elements, a zero-area quad or an invalid side-set entry.
 QuadMesh readExodusQuadMesh(const std::string& path);
 
 /// Removes the files "<basePath>.e-s.<digits>" (the tail of a series written earlier with this

@@ -413,7 +413,16 @@ TEST_F(ExodusMeshTest, TriangleBlockIsUserError) {
 TEST_F(ExodusMeshTest, ThreeDimensionalMeshIsUserError) {
   writeRawMesh(path("hex.exo"), 3, {0, 1, 1, 0, 0, 1, 1, 0}, {0, 0, 1, 1, 0, 0, 1, 1},
                {0, 0, 0, 0, 1, 1, 1, 1}, "HEX8", 8, {1, 2, 3, 4, 5, 6, 7, 8});
-  expectReadError(path("hex.exo"), {path("hex.exo"), "3-dimensional"});
+  expectReadError(path("hex.exo"), {path("hex.exo"), "3-dimensional and not a plane z = const (node 5 has z = 1"});
+}
+
+TEST_F(ExodusMeshTest, PlanarMeshWithThreeCoordinatesIsRead) {
+  // A quad in the plane z = 2, as generators write 2D meshes with three coordinates.
+  writeRawMesh(path("plane.exo"), 3, {0, 1, 1, 0}, {0, 0, 1, 1}, {2, 2, 2, 2}, "QUAD4", 4, {1, 2, 3, 4});
+  const QuadMesh mesh = readExodusQuadMesh(path("plane.exo"));
+  EXPECT_EQ(mesh.x, (std::vector<double>{0, 1, 1, 0}));
+  EXPECT_EQ(mesh.y, (std::vector<double>{0, 0, 1, 1}));
+  ASSERT_EQ(mesh.quads.size(), 1u);
 }
 
 TEST_F(ExodusMeshTest, UnnamedSideSetAndClockwiseQuad) {
