@@ -32,6 +32,10 @@ parser.add_argument("base")
 parser.add_argument("--every", type=int, default=1, help="keep only every N-th written mesh")
 parser.add_argument("--max-level", type=int, help="no cell's level variable above this")
 parser.add_argument("--coarser-than", metavar="BASE2", help="expect cells coarser than BASE2's at the same time")
+parser.add_argument("--graded", action="store_true",
+                    help="expect the bounds to be reached: edges with a hanging node, and consecutive meshes "
+                         "with cells one level coarser than the other's (forward and backward), so that a run "
+                         "whose meshes are uniform or equal fails")
 args = parser.parse_args()
 
 
@@ -184,6 +188,12 @@ print(f"{len(meshes)} meshes ({len(times)} steps, t = {times.min():.6g} to {time
 print(f"max hanging nodes per edge {most_hanging} (edges with one: {edges_with_one}); max level excess over "
       f"{len(meshes) - 1} consecutive pairs: forward {forward if len(meshes) > 1 else '-'}, "
       f"backward {backward if len(meshes) > 1 else '-'}")
+if args.graded:
+    if edges_with_one == 0:
+        violations.append("--graded: no edge has a hanging node (the meshes are not graded)")
+    if len(meshes) < 2 or forward != 1 or backward != 1:
+        violations.append(f"--graded: the largest level excess between consecutive meshes is not 1 both ways "
+                          f"(forward {forward}, backward {backward}): the meshes do not change from step to step")
 if args.max_level is not None:
     top = max(int(np.rint(m["level"]).max()) for m in meshes if m["level"] is not None)
     print(f"largest level {top} (allowed: {args.max_level})")

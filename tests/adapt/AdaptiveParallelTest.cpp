@@ -247,7 +247,6 @@ TEST(AdaptiveAgreement, ThePaperSchemeOnTwoRanksDiffersOnlyAsMuchAsRoundingIsAmp
 // kinetic_energy_transferred), on 2 ranks. The L2 projection is the orthogonal projection in the
 // mass norm, so it cannot raise the kinetic energy 1/2 ||v||_M^2 of the moved state; nodal
 // interpolation can, and on the paper's graded meshes does (the control that this check can fail).
-// Where the mesh is kept (cycle 0: one mesh) nothing moves and the energies carry over exactly.
 TEST(AdaptiveTransfer, TheL2ProjectionNeverRaisesTheKineticEnergyWhileInterpolationDoes) {
   auto world = Tpetra::getDefaultComm();
   ASSERT_EQ(world->getSize(), 2) << "run this test with mpirun -np 2";
@@ -261,14 +260,8 @@ TEST(AdaptiveTransfer, TheL2ProjectionNeverRaisesTheKineticEnergyWhileInterpolat
     const size_t steps = rows.size() / 2;  // cycle 0, then cycle 1
     ASSERT_EQ(steps * 2, rows.size());
     const size_t dofs = r.steps.column("dofs"), energy = r.steps.column("energy"),
-                 kinetic = r.steps.column("kinetic_energy"), energyMoved = r.steps.column("energy_transferred"),
-                 kineticMoved = r.steps.column("kinetic_energy_transferred");
+                 kinetic = r.steps.column("kinetic_energy"), kineticMoved = r.steps.column("kinetic_energy_transferred");
     const double e0 = rows[0][energy];
-    EXPECT_EQ(rows[0][energyMoved], e0);
-    for (size_t n = 1; n < steps; ++n) {  // cycle 0: the uniform mesh of every step
-      EXPECT_EQ(rows[n][energyMoved], rows[n - 1][energy]) << "step " << n;
-      EXPECT_EQ(rows[n][kineticMoved], rows[n - 1][kinetic]) << "step " << n;
-    }
     long raised = 0, lowered = 0, graded = 0;
     for (size_t n = steps + 1; n < 2 * steps; ++n) {
       graded += rows[n][dofs] != rows[n - steps][dofs];

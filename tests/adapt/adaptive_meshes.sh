@@ -4,7 +4,8 @@
 # on every step's mesh, and no cell more than one level coarser than an overlapping cell of the
 # previous or the next step's mesh (Algorithm 5.3). The membrane deck to t = 0.15 (graded meshes;
 # contact from t = 0.0525), every step written so that written meshes are consecutive steps:
-#   1. the paper's settings, 5 cycles (4 levels of refinement);
+#   1. the paper's settings, 5 cycles (4 levels of refinement): the bounds are also reached (hanging
+#      nodes exist, consecutive meshes differ by one level both ways; the uniform mesh must fail that);
 #   2. with coarsening (Coarsening Fraction 0.3), 3 cycles: cycle 2's meshes must have cells
 #      coarser than cycle 1's at the same step (the control without coarsening must have none);
 #   3. Maximum Level = 2, 4 cycles: no cell above level 2, and level 2 is reached.
@@ -22,7 +23,15 @@ run() {  # basename, then --set arguments
 }
 
 run paper --set 'Adaptivity/Cycles=5'
-$check "$work/paper"
+$check "$work/paper" --graded
+# Control: the initial (uniform) mesh of every step is not graded.
+run uniform --set 'Adaptivity/Strategy=none'
+if $check "$work/uniform" --graded > "$work/uniform-control.log"; then
+  echo "control failed: the uniform mesh passed --graded"
+  exit 1
+fi
+grep -q "VIOLATION: --graded: no edge has a hanging node" "$work/uniform-control.log" ||
+  { cat "$work/uniform-control.log"; echo "control failed for another reason"; exit 1; }
 
 run coarsening --set 'Adaptivity/Cycles=3' --set 'Adaptivity/Coarsening Fraction=0.3' --set 'Adaptivity/Write All Cycles=true'
 $check "$work/coarsening" --coarser-than "$work/coarsening.cycle1"
@@ -32,6 +41,7 @@ if $check "$work/refining" --coarser-than "$work/refining.cycle1" > "$work/contr
   cat "$work/control.log"
   exit 1
 fi
+grep -q "VIOLATION: no cell is coarser than in" "$work/control.log" || { cat "$work/control.log"; echo "control failed for another reason"; exit 1; }
 
 run capped --set 'Adaptivity/Cycles=4' --set 'Adaptivity/Maximum Level=2'
 $check "$work/capped" --max-level 2 | tee "$work/capped.check"

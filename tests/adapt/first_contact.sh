@@ -27,3 +27,5 @@ if /usr/bin/python3 "$src/tools/check_first_contact.py" "$work/two-cycles" > "$w
   cat "$work/control.log"
   exit 1
 fi
+grep -q "FAILED: the last cycle finds the first contact in step 23, not 21" "$work/control.log" ||
+  { cat "$work/control.log"; echo "control failed for another reason"; exit 1; }
