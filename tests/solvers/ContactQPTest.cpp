@@ -6,12 +6,14 @@
 #include <cmath>
 #include <set>
 
+#include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_SerialDenseMatrix.hpp>
 #include <Teuchos_SerialDenseSolver.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "../TestMesh.hpp"
+#include "CoarseSchurCorrection.hpp"
 #include "ContactCoupling.hpp"
 #include "ContactQP.hpp"
 #include "Expression.hpp"
@@ -292,7 +294,16 @@ TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
   cp.set("Newton Step Solver", newton == "CG" ? "CG" : "cached columns");
   if (newton == "cached columns, room for one") cp.set("Cached Columns", 1);
   solvers::ContactQP qp(validated(solvers::ContactQP::getValidParameters(), cp), 1.0);
-  qp.setSystem(*A, B, 1.0);
+  std::vector<double> coarseQ;  // "strip + coarse": the far field from a coarser mesh (4 x 4 cells)
+  if (std::get<1>(GetParam()) == "strip + coarse") {
+    test::TestMesh coarse(0.0, 1.0, 0.0, 1.0, 1, 1, 2, Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF)));
+    const auto& mc = coarse.build();
+    const fem::Q1Assembler coarseAssembler(mc, mc.nodesOnSegments(kLeft));
+    const solvers::CoarseSchurCorrection correction(coarseAssembler.assembleOperator(1.0, 0.5 * k * k, 1.0, 1.0));
+    coarseQ = correction.schur(B.coarseLoads(coarseAssembler), ns);
+    ASSERT_EQ(coarseQ.size(), static_cast<size_t>(ns * ns));
+  }
+  qp.setSystem(*A, B, 1.0, coarseQ);
   for (int pass = 0; pass < 3; ++pass) {  // cold start, warm start from the solution, cold again
     const bool warm = pass == 1;
     std::vector<double> lambda = warm ? reference : std::vector<double>(ns, 0.0), G;
@@ -328,7 +339,7 @@ TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
 // Obstacles: far away (no contact), partly touching, pushing everywhere.
 INSTANTIATE_TEST_SUITE_P(Obstacles, ContactQPTest,
                          ::testing::Combine(::testing::Values(-100.0, -1.6, -1.3, -0.5),
-                                            ::testing::Values("strip", "lumped", "none"),
+                                            ::testing::Values("strip", "strip + coarse", "lumped", "none"),
                                             ::testing::Values("CG", "cached columns", "cached columns, room for one")));
 
 }  // namespace
