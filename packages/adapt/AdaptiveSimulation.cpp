@@ -135,7 +135,8 @@ void checkAdaptivitySettings(const core::ParameterList& deck, const std::string&
   }
   if (strategy == "uniform")
     warn("refines every cell", keysSetWithoutEffect(a, [](const std::string& k) {
-           return k == "Refinement Fraction" || k == "Coarsening Fraction" || k == "Tie Tolerance";
+           // (every step of a cycle has the same mesh: nothing is transferred)
+           return k == "Refinement Fraction" || k == "Coarsening Fraction" || k == "Tie Tolerance" || k == "Transfer";
          }));
   const int cycles = a.get<int>("Cycles");
   const double fraction = a.get<double>("Refinement Fraction"), coarsen = a.get<double>("Coarsening Fraction");

@@ -674,7 +674,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     if (columns[c] != "step" && columns[c] != "t" && columns[c].rfind("time_", 0) != 0) globalColumns.push_back(c);
   if (outParams.get<bool>("Write Exodus") && options.writeExodus) {
     io::ExodusDescription description;
-    description.title = "signorini: " + base.substr(base.find_last_of('/') + 1);
+    description.title = "signorini: " + I.basename;  // also for a cycle's files that become the run's
     for (const size_t c : globalColumns) description.globalNames.push_back(columns[c]);
     description.info = {"deck: " + I.deckPath, "ranks: " + std::to_string(I.comm->getSize()),
                         "the deck as run (defaults and command-line overrides included):"};

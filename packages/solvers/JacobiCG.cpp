@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -18,6 +19,13 @@
 namespace signorini::solvers {
 
 namespace {
+
+/// A tolerance as written in a deck (1e-14, not std::to_string's 0.000000).
+std::string toleranceText(double tolerance) {
+  std::ostringstream text;
+  text << tolerance;
+  return text.str();
+}
 
 /// Fields solved together by one kernel sweep; more are solved in groups of this size.
 constexpr int kMaxFields = 3;
@@ -251,7 +259,7 @@ std::vector<int> solveGroup(const CrsMatrix& A, const std::vector<const Vector*>
         });
   }
   if (active > 0)
-    throw core::SolverError("Jacobi CG: no convergence to " + std::to_string(relativeTolerance) + " in " +
+    throw core::SolverError("Jacobi CG: no convergence to " + toleranceText(relativeTolerance) + " in " +
                             std::to_string(maxIterations) + " iterations");
   return iterations;
 }
@@ -357,7 +365,7 @@ std::vector<int> solveReproducibleGroup(const CrsMatrix& A, const Vector& diagon
     running = still;
   }
   if (!running.empty())
-    throw core::SolverError("Jacobi CG: no convergence to " + std::to_string(relativeTolerance) + " in " +
+    throw core::SolverError("Jacobi CG: no convergence to " + toleranceText(relativeTolerance) + " in " +
                             std::to_string(maxIterations) + " iterations");
   return iterations;
 }

@@ -353,11 +353,12 @@ signorini_add_driver_test(adaptive_keys_without_strategy EXIT 0
   REGEX "warning: .*Strategy = none .*without effect: Adaptivity/(Cycles, Refinement Fraction|Refinement Fraction, Cycles)\n"
         "good[.]xml done: 4 steps"
   FILES good.steps.csv good.e)
-# Strategy = uniform marks every cell: a warning names the marking keys the deck sets.
+# Strategy = uniform marks every cell and keeps one mesh per cycle: a warning names the marking
+# and transfer keys the deck sets.
 signorini_add_driver_test(adaptive_uniform_ignores_fractions EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=2"
-       --set "Adaptivity/Refinement Fraction=0.2" ${decks}/good.xml
-  REGEX "warning: .*Strategy = uniform refines every cell; without effect: Adaptivity/Refinement Fraction\n"
+       --set "Adaptivity/Refinement Fraction=0.2" --set "Adaptivity/Transfer=interpolation" ${decks}/good.xml
+  REGEX "warning: .*Strategy = uniform refines every cell; without effect: Adaptivity/Refinement Fraction, Transfer\n"
         "good[.]xml done: 4 steps"
   FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
 # Once every cell is at the Maximum Level, a further cycle would repeat the last: the run stops
