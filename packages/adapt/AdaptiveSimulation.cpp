@@ -252,6 +252,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   std::vector<std::shared_ptr<mesh::Forest>> meshes(nSteps, sim_->initialForest());
   dynamics::RunSummary last;
   std::vector<std::string> earlierFiles;  // kept files of the cycles before the last
+  std::vector<std::string> previousFiles;  // the previous cycle's files, until this cycle is known to fit
   std::map<std::string, double> phaseSeconds;  // over all cycles
   const auto runStart = std::chrono::steady_clock::now();
   try {
@@ -264,11 +265,28 @@ dynamics::RunSummary AdaptiveSimulation::run() {
           largest = std::max(largest, m->numGlobalCells());
           if (distinct.insert(m.get()).second) stored += static_cast<double>(m->numGlobalCells());
         }
-        sim_->checkMeshFits(static_cast<double>(largest),
-                            "Adaptivity: cycle " + std::to_string(l) +
-                                " (Cycles, Maximum Total Unknowns or Tolerance stop earlier)",
-                            stored);
+        try {
+          sim_->checkMeshFits(static_cast<double>(largest),
+                              "Adaptivity: cycle " + std::to_string(l) +
+                                  " (Cycles, Maximum Total Unknowns or Tolerance stop earlier)",
+                              stored);
+        } catch (core::UserError& e) {
+          if (l == 0 || !mayStopEarly) throw;
+          // The previous cycle was written in full (it might have been the last): it becomes the
+          // run's result, as when a stopping criterion ends the run.
+          core::rootOut(rank) << "signorini: warning: the run ends with cycle " << l - 1 << ": " << e.what() << std::endl;
+          last.files = promoteToFinalName(previousFiles, base + ".cycle" + std::to_string(l - 1), base, *comm);
+          previousFiles.clear();
+          break;
+        }
       }
+      const bool dropExodus = mayStopEarly && !writeAll;  // the previous cycle's, written in case it was the last
+      for (const auto& f : previousFiles)
+        if (dropExodus && isExodusFile(f))
+          io::unpublish(f);
+        else
+          earlierFiles.push_back(f);
+      previousFiles.clear();
       const auto start = std::chrono::steady_clock::now();
       std::vector<std::shared_ptr<mesh::Forest>> next(nSteps);
       // No next cycle: nothing to mark or refine. Also when every cell of every step is at the
@@ -392,12 +410,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         if (!lastPlanned) last.files = promoteToFinalName(last.files, base + ".cycle" + std::to_string(l), base, *comm);
           break;
       }
-      const bool dropExodus = mayStopEarly && !writeAll && !lastPlanned;  // written in case it was the last: it was not
-      for (const auto& f : last.files)
-        if (dropExodus && isExodusFile(f))
-          io::unpublish(f);
-        else
-          earlierFiles.push_back(f);
+      previousFiles = last.files;
     }
     core::throwIfInterrupted(*comm);  // a signal during the last step: the files go
     core::onRootCollectively(*comm, [&] {

@@ -207,6 +207,10 @@ core::ParameterList Simulation::getValidParameters() {
   core::addBool(parallel, "Reproducible Arithmetic", false,
                 "Order every sum so that the results have the same bits on any number of ranks (docs/reproducibility.md; "
                 "scalar problems with the Jacobi preconditioner; the paper deck takes about 1.1 times as long)");
+  core::addDouble(parallel, "Memory Per Rank", 0.0,
+                  "Memory each rank may use [GB] for the check that a mesh fits before it is built; 0: the "
+                  "machine's memory divided by the ranks on it (set it where a job gets a share of a node)",
+                  0.0);
   p.set("Parallel", parallel, "How the work is shared between MPI ranks");
   return p;
 }
@@ -605,18 +609,21 @@ void Simulation::checkMeshFits(double globalCells, const std::string& cause, dou
   const double perRank = globalCells / impl_->comm->getSize();
   const int nc = impl_->components;
   const double need = perRank * 750.0 * nc * nc + storedCells / impl_->comm->getSize(),
-               have = core::memoryPerRank(*impl_->comm);
+               budget = impl_->deck.sublist("Parallel").get<double>("Memory Per Rank"),
+               have = budget > 0 ? budget * 1e9 : core::memoryPerRank(*impl_->comm);
   const double indexLimit = std::numeric_limits<int>::max() / 9.0;  // 32-bit local indices, 9 entries per row
   std::ostringstream why;
   why << std::setprecision(3);
   if (perRank > indexLimit)
     why << perRank << " cells per rank, more than the " << indexLimit << " that 32-bit local indices allow";
   else if (need > have)
-    why << "at least " << need / 1e9 << " GB per rank, more than this machine's " << have / 1e9 << " GB per rank";
+    why << "at least " << need / 1e9 << " GB per rank, more than " << (budget > 0 ? "Parallel/Memory Per Rank = " : "this machine's ")
+        << have / 1e9 << " GB per rank";
   if (!why.str().empty())
     SIGNORINI_USER_ERROR(cause << ": a mesh of " << std::setprecision(4) << globalCells << " cells on "
                                << impl_->comm->getSize() << " rank(s): " << why.str()
-                               << "; choose a coarser mesh or more ranks");
+                               << "; choose a coarser mesh, or more memory (ranks on more machines, "
+                                  "Parallel/Memory Per Rank)");
 }
 
 RunSummary Simulation::run() {

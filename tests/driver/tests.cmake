@@ -353,6 +353,18 @@ signorini_add_driver_test(adaptive_keys_without_strategy EXIT 0
   REGEX "warning: .*Strategy = none .*without effect: Adaptivity/(Cycles, Refinement Fraction|Refinement Fraction, Cycles)\n"
         "good[.]xml done: 4 steps"
   FILES good.steps.csv good.e)
+# A run that may stop early (here on a tolerance) and whose next cycle would not fit into the memory
+# (Parallel/Memory Per Rank: 20 kB) ends with the cycle before it, whose files become the run's
+# (they were lost with the error).
+signorini_add_driver_test(adaptive_stop_before_a_cycle_too_large EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=3" --set "Adaptivity/Tolerance=1e-30"
+       --set "Parallel/Memory Per Rank=0.00002" ${decks}/good.xml
+  REGEX "cycle 0: total unknowns 100," "warning: the run ends with cycle 0: Adaptivity: cycle 1 .* more than Parallel/Memory Per Rank"
+        "good[.]xml done: 4 steps, 25 unknowns per step"
+  FILES good.steps.csv good.e good.cycles.csv)
+signorini_add_driver_test(mesh_larger_than_the_memory_per_rank EXIT 1
+  ARGS --output-dir {OUT} --set "Parallel/Memory Per Rank=0.000001" ${decks}/good.xml
+  REGEX "a mesh of 16 cells on 2 rank[(]s[)]: at least .* GB per rank, more than Parallel/Memory Per Rank = 1e-06 GB per rank")
 # Strategy = uniform marks every cell and keeps one mesh per cycle: a warning names the marking
 # and transfer keys the deck sets.
 signorini_add_driver_test(adaptive_uniform_ignores_fractions EXIT 0
