@@ -71,7 +71,8 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
                   "(every cell: the comparison runs), or \"none\" (one pass on the deck's mesh, no estimator)",
                   {"none", "fixed fraction", "bulk", "uniform"});
   core::addDouble(a, "Refinement Fraction", 0.5,
-                  "Fixed fraction: share of cells refined; bulk: share of the squared estimate captured", 0.0, 1.0);
+                  "Fixed fraction: share of cells refined; bulk: share of the squared estimate captured (both of the "
+                  "cells below Adaptivity/Maximum Level, the ones that can be refined)", 0.0, 1.0);
   core::addDouble(a, "Coarsening Fraction", 0.0,
                   "Share of cells with the smallest indicators coarsened (families of four; never below the deck's "
                   "level); the paper used none",
@@ -84,7 +85,7 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
   core::addInt(a, "Cycles", 5, "Number of passes over [0, T] (each pass is one cycle of Algorithm 5.1)", 1, 100);
   core::addDouble(a, "Maximum Total Unknowns", 0.0,
                   "Stop after the cycle whose total unknowns (sum over steps) reach this number; 0: no limit", 0.0);
-  core::addDouble(a, "Tolerance", 0.0, "Stop after the cycle whose estimate max_n eta^n is below this; 0: off", 0.0);
+  core::addDouble(a, "Tolerance", 0.0, "Stop after the cycle whose estimate max_n eta^n is at or below this; 0: off", 0.0);
   core::addInt(a, "Maximum Level", 14, "Cells are not refined beyond this level; once every cell of every step is at it (and nothing "
                "coarsens), that cycle is the last", 0, 25);
   core::addChoice(a, "Transfer", "L2 projection", "I_h between step meshes (paper Sec. 3.2)",
@@ -334,15 +335,21 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         if (!continuation.is_null()) extras.carry.push_back(continuation);
         if (lastPlanned) return extras;
         // T^n_{l+1}: T^n_l refined by the strategy, 2:1 balanced (Algorithm 5.2).
-        std::vector<char> flags;
+        // Marking among the cells below the Maximum Level: the fraction goes to cells that can be
+        // refined (spent on cells at the level, it refined nothing, and the cycles repeated).
+        std::vector<size_t> refinable;
+        std::vector<double> refinableIndicator;
+        for (size_t e = 0; e < r.cellIndicator.size(); ++e)
+          if (s.mesh.cellLevel()[e] < maxLevel) refinable.push_back(e), refinableIndicator.push_back(r.cellIndicator[e]);
+        std::vector<char> marked;
         if (strategy == "uniform")
-          flags.assign(r.cellIndicator.size(), 1);
+          marked.assign(refinable.size(), 1);
         else if (strategy == "bulk")
-          flags = markBulk(r.cellIndicator, fraction, ties, raw);
+          marked = markBulk(refinableIndicator, fraction, ties, raw);
         else
-          flags = markFixedFraction(r.cellIndicator, fraction, ties, raw);
-        for (size_t e = 0; e < flags.size(); ++e)
-          if (s.mesh.cellLevel()[e] >= maxLevel) flags[e] = 0;
+          marked = markFixedFraction(refinableIndicator, fraction, ties, raw);
+        std::vector<char> flags(r.cellIndicator.size(), 0);
+        for (size_t i = 0; i < refinable.size(); ++i) flags[refinable[i]] = marked[i];
         auto refined = std::make_shared<mesh::Forest>(s.forest);
         if (coarsen > 0 && strategy != "uniform") {
           std::vector<char> small = markSmallest(r.cellIndicator, coarsen, ties, raw);

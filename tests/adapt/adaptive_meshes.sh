@@ -8,7 +8,8 @@
 #      nodes exist, consecutive meshes differ by one level both ways; the uniform mesh must fail that);
 #   2. with coarsening (Coarsening Fraction 0.3), 3 cycles: cycle 2's meshes must have cells
 #      coarser than cycle 1's at the same step (the control without coarsening must have none);
-#   3. Maximum Level = 2, 4 cycles: no cell above level 2, and level 2 is reached.
+#   3. Maximum Level = 2, 4 cycles: no cell above level 2, and level 2 is reached; Maximum Level = 1,
+#      5 cycles: every cycle refines more (marking among the cells below the level).
 # Usage: adaptive_meshes.sh SIGNORINI SOURCE_DIR WORK_DIR
 set -euo pipefail
 signorini=$1 src=$2 work=$3
@@ -46,3 +47,12 @@ grep -q "VIOLATION: no cell is coarser than in" "$work/control.log" || { cat "$w
 run capped --set 'Adaptivity/Cycles=4' --set 'Adaptivity/Maximum Level=2'
 $check "$work/capped" --max-level 2 | tee "$work/capped.check"
 grep -q "largest level 2 " "$work/capped.check" || { echo "Maximum Level = 2 was not reached"; exit 1; }
+# Marking spends the fraction on the cells that can still be refined: with Maximum Level = 1 every
+# cycle refines (it used to mark cells at the level, refine nothing and repeat the cycle).
+run level1 --set 'Adaptivity/Cycles=5' --set 'Adaptivity/Maximum Level=1' --set 'Output/Write Exodus=false'
+/usr/bin/python3 - "$work/level1.cycles.csv" <<'PY'
+import csv, sys
+dofs = [int(r["total_dofs"]) for r in csv.DictReader(open(sys.argv[1]))]
+print("Maximum Level = 1: total unknowns per cycle", dofs)
+sys.exit(0 if all(a < b for a, b in zip(dofs, dofs[1:])) else "a cycle repeated the one before it")
+PY
