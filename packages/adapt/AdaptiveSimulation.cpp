@@ -414,7 +414,13 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                           << ": total unknowns " << last.totalDofs << ", eta " << etaMax << std::fixed
                           << ", " << wall << " s" << std::endl;
       if (stop) {
-        if (!lastPlanned) last.files = promoteToFinalName(last.files, base + ".cycle" + std::to_string(l), base, *comm);
+        if (!lastPlanned) {
+          core::rootOut(rank) << "signorini: cycle " << l << " ends the run: "
+                              << (tol > 0 && etaMax <= tol ? "its estimate is at or below Adaptivity/Tolerance"
+                                                           : "its total unknowns reach Adaptivity/Maximum Total Unknowns")
+                              << std::endl;
+          last.files = promoteToFinalName(last.files, base + ".cycle" + std::to_string(l), base, *comm);
+        }
           break;
       }
       previousFiles = last.files;

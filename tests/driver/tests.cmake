@@ -70,6 +70,7 @@ signorini_add_driver_test(adaptive_stop_on_total_unknowns EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Maximum Total Unknowns=300"
        ${decks}/good.xml
   REGEX "cycle 1: total unknowns 324," "good[.]xml done: 4 steps, 81 unknowns per step"
+        "cycle 1 ends the run: its total unknowns reach Adaptivity/Maximum Total Unknowns"
         "wrote [^ ]*/good[.]cycle0[.]steps[.]csv"
   FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
 signorini_add_driver_test(adaptive_stop_on_total_unknowns_all_cycles EXIT 0
@@ -81,6 +82,7 @@ signorini_add_driver_test(adaptive_stop_on_tolerance EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Tolerance=1e30"
        --set "Adaptivity/Write All Cycles=true" ${decks}/good.xml
   REGEX "cycle 0: total unknowns 100," "good[.]xml done: 4 steps, 25 unknowns per step"
+        "cycle 0 ends the run: its estimate is at or below Adaptivity/Tolerance"
   FILES good.steps.csv good.e good.cycles.csv)
 
 # Reading the deck.
