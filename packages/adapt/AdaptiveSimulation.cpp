@@ -109,13 +109,14 @@ namespace {
 /// The keys of the Adaptivity sublist \p a that the deck sets to other than their defaults,
 /// among those \p withoutEffect accepts, comma separated.
 template <class Filter>
-std::string keysSetWithoutEffect(const core::ParameterList& a, Filter withoutEffect) {
+std::string keysSetWithoutEffect(const core::ParameterList& deck, const std::string& sublist, Filter withoutEffect) {
   // Compared with the defaults (Teuchos' isDefault flag is not set when validation adds the whole sublist).
-  const auto defaults = AdaptiveSimulation::getValidParameters().sublist("Adaptivity");
+  const auto defaults = AdaptiveSimulation::getValidParameters().sublist(sublist);
+  const auto& a = deck.sublist(sublist);
   std::string keys;
   for (auto it = a.begin(); it != a.end(); ++it)
     if (withoutEffect(a.name(it)) && !(a.entry(it).getAny() == defaults.getEntry(a.name(it)).getAny()))
-      keys += (keys.empty() ? "" : ", ") + a.name(it);
+      keys += (keys.empty() ? "" : ", ") + sublist + "/" + a.name(it);
   return keys;
 }
 
@@ -125,17 +126,22 @@ std::string keysSetWithoutEffect(const core::ParameterList& a, Filter withoutEff
 void checkAdaptivitySettings(const core::ParameterList& deck, const std::string& deckPath, const Comm& comm) {
   const auto& a = deck.sublist("Adaptivity");
   const std::string strategy = a.get<std::string>("Strategy");
-  auto warn = [&](const std::string& what, const std::string& keys) {
+  auto warn = [&](const std::string& situation, const std::string& keys) {
     if (!keys.empty() && comm.getRank() == 0)
-      std::cerr << "signorini: warning: " << deckPath << ": Adaptivity/Strategy = " << strategy << " " << what
-                << "; without effect: Adaptivity/" << keys << std::endl;
+      std::cerr << "signorini: warning: " << deckPath << ": " << situation << "; without effect: " << keys << std::endl;
   };
-  if (strategy == "none") {
-    warn("runs one pass on the deck's mesh", keysSetWithoutEffect(a, [](const std::string& k) { return k != "Strategy"; }));
+  if (strategy == "none") {  // neither the Adaptivity keys nor the estimator's
+    const auto adaptivity = keysSetWithoutEffect(deck, "Adaptivity", [](const std::string& k) { return k != "Strategy"; });
+    const auto estimator = keysSetWithoutEffect(deck, "Estimator", [](const std::string&) { return true; });
+    warn("Adaptivity/Strategy = none runs one pass on the deck's mesh without the estimator",
+         adaptivity + (adaptivity.empty() || estimator.empty() ? "" : ", ") + estimator);
     return;
   }
+  if (!deck.sublist("Estimator").get<bool>("Compute S1"))
+    warn("Estimator/Compute S1 = false",
+         keysSetWithoutEffect(deck, "Estimator", [](const std::string& k) { return k == "S1 Relative Tolerance"; }));
   if (strategy == "uniform")
-    warn("refines every cell", keysSetWithoutEffect(a, [](const std::string& k) {
+    warn("Adaptivity/Strategy = uniform refines every cell", keysSetWithoutEffect(deck, "Adaptivity", [](const std::string& k) {
            // (every step of a cycle has the same mesh: nothing is transferred)
            return k == "Refinement Fraction" || k == "Coarsening Fraction" || k == "Tie Tolerance" || k == "Transfer";
          }));

@@ -349,10 +349,19 @@ signorini_add_driver_test(adaptive_all_cycles_without_exodus EXIT 1
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Write All Cycles=true"
        --set "Output/Write Exodus=false" ${decks}/good.xml
   REGEX "Adaptivity/Write All Cycles = true needs Output/Write Exodus = true")
-# Strategy = none ignores the Adaptivity keys the deck sets: a warning names them, the run goes on.
+# Strategy = none ignores the Adaptivity and Estimator keys the deck sets: a warning names them,
+# the run goes on; so does Compute S1 = false its tolerance.
+signorini_add_driver_test(estimator_keys_without_strategy EXIT 0
+  ARGS --output-dir {OUT} --set "Estimator/Scaling=step" ${decks}/good.xml
+  REGEX "warning: .*Strategy = none runs one pass on the deck's mesh without the estimator; without effect: Estimator/Scaling\n"
+  FILES good.steps.csv good.e)
+signorini_add_driver_test(s1_tolerance_without_s1 EXIT 0
+  ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=fixed fraction" --set "Estimator/Compute S1=false"
+       --set "Estimator/S1 Relative Tolerance=1e-4" ${decks}/good.xml
+  REGEX "warning: .*Estimator/Compute S1 = false; without effect: Estimator/S1 Relative Tolerance\n")
 signorini_add_driver_test(adaptive_keys_without_strategy EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Cycles=3" --set "Adaptivity/Refinement Fraction=0.2" ${decks}/good.xml
-  REGEX "warning: .*Strategy = none .*without effect: Adaptivity/(Cycles, Refinement Fraction|Refinement Fraction, Cycles)\n"
+  REGEX "warning: .*Strategy = none .*without effect: Adaptivity/(Cycles, Adaptivity/Refinement Fraction|Refinement Fraction, Adaptivity/Cycles)\n"
         "good[.]xml done: 4 steps"
   FILES good.steps.csv good.e)
 # A run that may stop early (here on a tolerance) and whose next cycle would not fit into the memory
@@ -372,7 +381,7 @@ signorini_add_driver_test(mesh_larger_than_the_memory_per_rank EXIT 1
 signorini_add_driver_test(adaptive_uniform_ignores_fractions EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=2"
        --set "Adaptivity/Refinement Fraction=0.2" --set "Adaptivity/Transfer=interpolation" ${decks}/good.xml
-  REGEX "warning: .*Strategy = uniform refines every cell; without effect: Adaptivity/Refinement Fraction, Transfer\n"
+  REGEX "warning: .*Strategy = uniform refines every cell; without effect: Adaptivity/Refinement Fraction, Adaptivity/Transfer\n"
         "good[.]xml done: 4 steps"
   FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
 # Once every cell is at the Maximum Level, a further cycle would repeat the last: the run stops
