@@ -276,8 +276,18 @@ struct Simulation::Impl {
       c->mesh = std::make_unique<mesh::Q1Mesh>(*c->forest, *segments, self);
       c->assembler = makeAssembler(*c->mesh);
       const double k = newmark->timeStep;
-      c->schur = std::make_unique<solvers::CoarseSchurCorrection>(
-          c->assembler->assembleSystem(1.0, newmark->beta * k * k, *problem, lumpedUnknowns(*c->assembler)));
+      try {
+        c->schur = std::make_unique<solvers::CoarseSchurCorrection>(
+            c->assembler->assembleSystem(1.0, newmark->beta * k * k, *problem, lumpedUnknowns(*c->assembler)));
+      } catch (core::UserError&) {
+        throw;
+      } catch (std::exception& e) {  // KLU2 out of memory on a fine initial mesh, typically
+        throw core::SolverError("the coarse Schur correction (Contact/Schur Preconditioner = auto or strip + coarse) "
+                                "could not factor the deck's initial mesh of " +
+                                std::to_string(c->assembler->ownedMap()->getGlobalNumElements()) +
+                                " unknowns on each rank (" + core::withoutSourceLocation(e.what()) +
+                                "); choose Contact/Schur Preconditioner = strip or a coarser Mesh/Refinement Level");
+      }
       coarseProblem = std::move(c);
     }
     return *coarseProblem;
