@@ -106,8 +106,8 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
 
 namespace {
 
-/// The keys of the Adaptivity sublist \p a that the deck sets to other than their defaults,
-/// among those \p withoutEffect accepts, comma separated.
+/// The keys of the deck's \p sublist that it sets to other than their defaults, among those
+/// \p withoutEffect accepts, as "Sublist/key, Sublist/key2".
 template <class Filter>
 std::string keysSetWithoutEffect(const core::ParameterList& deck, const std::string& sublist, Filter withoutEffect) {
   // Compared with the defaults (Teuchos' isDefault flag is not set when validation adds the whole sublist).
@@ -121,8 +121,8 @@ std::string keysSetWithoutEffect(const core::ParameterList& deck, const std::str
 }
 
 /// Settings that are valid one by one but cannot work together: user errors naming the keys. With
-/// Strategy = none the Adaptivity keys the deck sets have no effect, with Strategy = uniform the
-/// marking's: a warning lists them.
+/// Strategy = none the Adaptivity and Estimator keys the deck sets have no effect, with Strategy =
+/// uniform the marking's and Transfer, with Compute S1 = false its tolerance: a warning lists them.
 void checkAdaptivitySettings(const core::ParameterList& deck, const std::string& deckPath, const Comm& comm) {
   const auto& a = deck.sublist("Adaptivity");
   const std::string strategy = a.get<std::string>("Strategy");
