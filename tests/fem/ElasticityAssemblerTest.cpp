@@ -146,6 +146,27 @@ TEST_P(ElasticityAssembly, DirichletUnknownsPerComponent) {
   auto h = Ax.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (size_t i = 0; i < h.extent(0); ++i)
     if (flags[i]) EXPECT_EQ(h(i, 0), 0.0);
+  // Row by row: each flagged unknown's row is the identity row; every other row (the rollers' free
+  // u_y among them) keeps its coupling to the neighbours.
+  const auto local = A->getLocalMatrixHost();
+  int rollers = 0;
+  for (LO i = 0; i < static_cast<LO>(local.numRows()); ++i) {
+    double diagonal = 0, offDiagonal = 0;
+    for (auto k = local.graph.row_map(i); k < local.graph.row_map(i + 1); ++k)
+      (A->getColMap()->getGlobalElement(local.graph.entries(k)) == A->getRowMap()->getGlobalElement(i)
+           ? diagonal
+           : offDiagonal) += std::abs(local.values(k));
+    if (flags[i]) {
+      EXPECT_EQ(diagonal, 1.0) << "row " << i;
+      EXPECT_EQ(offDiagonal, 0.0) << "row " << i;
+    } else {
+      EXPECT_GT(offDiagonal, 0.0) << "row " << i;
+    }
+    rollers += i % 2 == 1 && flags[i - 1] && !flags[i];
+  }
+  int allRollers = 0;
+  Teuchos::reduceAll(*m.comm(), Teuchos::REDUCE_SUM, rollers, Teuchos::outArg(allRollers));
+  EXPECT_GT(allRollers, 0);  // u_x fixed, u_y free
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, ElasticityAssembly, ::testing::Values(false, true));
