@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> decks, overrides;
   std::string outputDir;
-  bool checkOnly = false, outputDirGiven = false;
+  bool checkOnly = false;
   if (kokkosHelp) return 0;  // Kokkos has printed its options
   if (help) {
     out << kUsage;
@@ -97,7 +97,8 @@ int main(int argc, char** argv) {
       const std::string value = argv[++i];
       // Given twice, the last one wins (as scripts that add to a command expect), with a warning.
       std::string earlier;
-      if (arg == "--output-dir" && outputDirGiven && value != outputDir) earlier = "--output-dir '" + outputDir + "'";
+      // (an empty --output-dir is refused below, so a non-empty one was given)
+      if (arg == "--output-dir" && !outputDir.empty() && value != outputDir) earlier = "--output-dir '" + outputDir + "'";
       const auto keyOf = [](const std::string& spec) { return spec.substr(0, spec.find('=')); };
       for (const auto& o : overrides)
         if (arg == "--set" && value.find('=') != std::string::npos && keyOf(o) == keyOf(value) && o != value)
@@ -105,7 +106,6 @@ int main(int argc, char** argv) {
       if (!earlier.empty() && rank == 0)
         std::cerr << "signorini: warning: " << arg << " '" << value << "' replaces the earlier " << earlier << "\n";
       (arg == "--set" ? overrides.emplace_back(value) : outputDir = value);
-      outputDirGiven = outputDirGiven || arg == "--output-dir";
       if (arg == "--output-dir" && outputDir.empty()) {
         if (rank == 0) std::cerr << "signorini: --output-dir needs a directory (\".\" for the working directory)\n";
         return 2;

@@ -427,7 +427,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                               << std::endl;
           last.files = promoteToFinalName(last.files, base + ".cycle" + std::to_string(l), base, *comm);
         }
-          break;
+        break;
       }
       previousFiles = last.files;
     }

@@ -252,26 +252,18 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
     SIGNORINI_USER_ERROR("--set '" << spec << "': '" << value << "' is not a valid " << type);
   };
   // Numbers and bools may have blanks around them, as in a deck.
-  const auto first = value.find_first_not_of(" \t"), last = value.find_last_not_of(" \t");
-  const std::string number = first == std::string::npos ? "" : value.substr(first, last - first + 1);
-  auto parseDouble = [&](double& out) {
-    char* end = nullptr;
-    out = std::strtod(number.c_str(), &end);
-    return !number.empty() && end && *end == '\0';
-  };
+  auto parseDouble = [&](double& out) { return readDouble(value, out) == NumberText::valid; };
   bool intOutOfRange = false;  // set by parseInt for an integer that an int cannot hold
   auto parseInt = [&](int& out) {
-    char* end = nullptr;
-    errno = 0;
-    const long l = std::strtol(number.c_str(), &end, 10);
-    if (number.empty() || !end || *end != '\0') return false;
-    intOutOfRange = errno == ERANGE || l < std::numeric_limits<int>::min() || l > std::numeric_limits<int>::max();
-    out = static_cast<int>(l);
-    return !intOutOfRange;
+    const auto read = readInt(value, out);
+    intOutOfRange = read == NumberText::outOfRange;
+    return read == NumberText::valid;
   };
   auto parseBool = [&](bool& out) {
-    if (number == "true" || number == "1") return out = true, true;
-    if (number == "false" || number == "0") return out = false, true;
+    const auto first = value.find_first_not_of(" \t"), last = value.find_last_not_of(" \t");
+    const std::string word = first == std::string::npos ? "" : value.substr(first, last - first + 1);
+    if (word == "true" || word == "1") return out = true, true;
+    if (word == "false" || word == "0") return out = false, true;
     return false;
   };
   if (!v) {  // pass-through or named strings: infer the type
@@ -315,6 +307,31 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
 }
 
 void printParameters(std::ostream& os, const ParameterList& valid) { printRecursive(os, valid, ""); }
+
+namespace {
+
+bool onlyBlanks(const char* text) { return std::string(text).find_first_not_of(" \t\r\n") == std::string::npos; }
+
+}  // namespace
+
+NumberText readDouble(const std::string& text, double& value) {
+  char* end = nullptr;
+  const double read = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || !onlyBlanks(end)) return NumberText::notANumber;
+  value = read;
+  return NumberText::valid;
+}
+
+NumberText readInt(const std::string& text, int& value) {
+  char* end = nullptr;
+  errno = 0;
+  const long read = std::strtol(text.c_str(), &end, 10);
+  if (end == text.c_str() || !onlyBlanks(end)) return NumberText::notANumber;
+  if (errno == ERANGE || read < std::numeric_limits<int>::min() || read > std::numeric_limits<int>::max())
+    return NumberText::outOfRange;
+  value = static_cast<int>(read);
+  return NumberText::valid;
+}
 
 namespace {
 

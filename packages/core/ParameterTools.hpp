@@ -47,6 +47,12 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
 /// Prints every valid parameter with its path, type, default and doc string.
 void printParameters(std::ostream& os, const ParameterList& valid);
 
+/// How a text reads as a number: in full, blanks around it allowed (as Teuchos reads a deck).
+enum class NumberText { valid, notANumber, outOfRange };
+/// \p value is set when the text is valid. A double never counts as out of range (1e999 reads as inf).
+NumberText readDouble(const std::string& text, double& value);
+NumberText readInt(const std::string& text, int& value);
+
 /// \p deck as an XML deck that reads back to the same values (doubles with 17 significant digits),
 /// without Teuchos' ids, doc strings and validators: for the records of the output files.
 std::string deckAsXml(const ParameterList& deck);

@@ -1,8 +1,6 @@
 #include "DeckReader.hpp"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
+#include <cstdint>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -16,26 +14,10 @@
 
 #include "Error.hpp"
 #include "MpiComm.hpp"
+#include "ParameterTools.hpp"
 
 namespace signorini::io {
 namespace {
-
-/// Whether \p v holds one number and nothing else but surrounding blanks (as Teuchos reads it).
-bool isWholeDouble(const std::string& v) {
-  char* end = nullptr;
-  std::strtod(v.c_str(), &end);
-  return end != v.c_str() && std::string(end).find_first_not_of(" \t\r\n") == std::string::npos;
-}
-
-enum class IntText { valid, notInteger, outOfRange };
-IntText classifyInt(const std::string& v) {
-  char* end = nullptr;
-  errno = 0;
-  const long l = std::strtol(v.c_str(), &end, 10);
-  if (end == v.c_str() || std::string(end).find_first_not_of(" \t\r\n") != std::string::npos)
-    return IntText::notInteger;
-  return errno == ERANGE || l < INT32_MIN || l > INT32_MAX ? IntText::outOfRange : IntText::valid;
-}
 
 /// Numbers that convert in full, and no name twice in one list (Teuchos keeps the last silently).
 void checkEntries(const Teuchos::XMLObject& node, const std::string& path, const std::string& file) {
@@ -51,11 +33,14 @@ void checkEntries(const Teuchos::XMLObject& node, const std::string& path, const
       checkEntries(child, full, file);
     } else if (child.getTag() == "Parameter" && child.hasAttribute("type") && child.hasAttribute("value")) {
       const std::string type = child.getAttribute("type"), value = child.getAttribute("value");
-      if (type == "double" && !isWholeDouble(value))
+      double x;
+      int i;
+      if (type == "double" && core::readDouble(value, x) != core::NumberText::valid)
         SIGNORINI_USER_ERROR(file << ": '" << full << "' = \"" << value << "\" is not a number");
-      if (type == "int" && classifyInt(value) == IntText::notInteger)
+      const auto integer = type == "int" ? core::readInt(value, i) : core::NumberText::valid;
+      if (integer == core::NumberText::notANumber)
         SIGNORINI_USER_ERROR(file << ": '" << full << "' = \"" << value << "\" is not an integer");
-      if (type == "int" && classifyInt(value) == IntText::outOfRange)
+      if (integer == core::NumberText::outOfRange)
         SIGNORINI_USER_ERROR(file << ": '" << full << "' = \"" << value << "\" is out of the range of an int ("
                                   << INT32_MIN << " to " << INT32_MAX << ")");
     }

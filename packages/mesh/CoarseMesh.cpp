@@ -103,14 +103,14 @@ void checkConforming(const std::vector<double>& x, const std::vector<double>& y,
   for (const auto& [ab, use] : sides) {
     if (use.first != 1) continue;
     const auto [a, b] = ab;
-    const double dx = x[b] - x[a], dy = y[b] - y[a], length2 = dx * dx + dy * dy, tol = 1e-10 * std::sqrt(length2);
+    const double dx = x[b] - x[a], dy = y[b] - y[a], length = std::hypot(dx, dy), tol = 1e-10 * length;
     const double xlo = std::min(x[a], x[b]) - tol, xhi = std::max(x[a], x[b]) + tol;
     auto it = std::lower_bound(vertices.begin(), vertices.end(), xlo, [&](int v, double value) { return x[v] < value; });
     for (; it != vertices.end() && x[*it] <= xhi; ++it) {
       const int p = *it;
-      const double along = ((x[p] - x[a]) * dx + (y[p] - y[a]) * dy) / std::sqrt(length2);
-      const double off = ((x[p] - x[a]) * dy - (y[p] - y[a]) * dx) / std::sqrt(length2);
-      if (p == a || p == b || std::abs(off) > tol || along <= tol || along >= std::sqrt(length2) - tol) continue;
+      const double along = ((x[p] - x[a]) * dx + (y[p] - y[a]) * dy) / length;
+      const double off = ((x[p] - x[a]) * dy - (y[p] - y[a]) * dx) / length;
+      if (p == a || p == b || std::abs(off) > tol || along <= tol || along >= length - tol) continue;
       SIGNORINI_USER_ERROR(source << ": the coarse mesh is not conforming: the side of cell " << use.second + 1
                                   << " from (" << x[a] << ", " << y[a] << ") to (" << x[b] << ", " << y[b]
                                   << ") has the vertex (" << x[p] << ", " << y[p]
