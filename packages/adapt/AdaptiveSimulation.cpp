@@ -191,6 +191,8 @@ std::string AdaptiveSimulation::plan() const {
   os << sim_->numSteps() << " steps of k = " << t.get<double>("Time Step") << " to T = " << t.get<double>("Final Time")
      << "; the initial mesh: " << sim_->initialForest()->numGlobalCells() << " cells, " << sim_->initialUnknowns()
      << " unknowns\n";
+  if (const auto coarse = sim_->coarseCorrectionMesh(); !coarse.empty())
+    os << "the contact Schur preconditioner's coarse correction: " << coarse << "\n";
   const std::string strategy = a.get<std::string>("Strategy");
   if (strategy == "none") {
     os << "one pass on the initial mesh";

@@ -231,9 +231,10 @@ struct Discretisation {
   long id = 0;           ///< unique among all discretisations of the run (StepView::meshId)
 };
 
-/// The deck's initial mesh held whole on every rank, for the far-field part of the Schur
-/// preconditioner (solvers::CoarseSchurCorrection); built once per run when needed.
+/// A coarse mesh held whole on every rank, for the far-field part of the Schur preconditioner
+/// (solvers::CoarseSchurCorrection); built once per run when needed.
 struct CoarseProblem {
+  int level = 0;  ///< its refinement level (negative: blocks of a rectangle's cells, the p4est trees)
   std::shared_ptr<mesh::Forest> forest;
   std::unique_ptr<mesh::Q1Mesh> mesh;
   std::unique_ptr<fem::Assembler> assembler;
@@ -267,12 +268,23 @@ struct Simulation::Impl {
       return a.unknownsOnSegments(problem->contactMask);
     return {};
   }
+  /// Level of the coarse correction's mesh: the finest uniform one at most at Mesh/Refinement
+  /// Level with at most Contact/Coarse Correction Cells cells, else the p4est trees themselves.
+  int coarseCorrectionLevel() const {
+    const double maxCells = deck.sublist("Contact").get<int>("Coarse Correction Cells");
+    int level = -coarse->levelOffset();
+    while (level < deck.sublist("Mesh").get<int>("Refinement Level") &&
+           coarse->numTrees() * std::pow(4.0, level + 1 + coarse->levelOffset()) <= maxCells)
+      ++level;
+    return level;
+  }
   /// The coarse step matrix, factored (once per run).
   const CoarseProblem& coarseCorrection() {
     if (!coarseProblem) {
       auto c = std::make_unique<CoarseProblem>();
       RCP<const Comm> self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
-      c->forest = std::make_shared<mesh::Forest>(coarse, MPI_COMM_SELF, deck.sublist("Mesh").get<int>("Refinement Level"));
+      c->level = coarseCorrectionLevel();
+      c->forest = std::make_shared<mesh::Forest>(coarse, MPI_COMM_SELF, c->level);
       c->mesh = std::make_unique<mesh::Q1Mesh>(*c->forest, *segments, self);
       c->assembler = makeAssembler(*c->mesh);
       const double k = newmark->timeStep;
@@ -283,10 +295,11 @@ struct Simulation::Impl {
         throw;
       } catch (std::exception& e) {  // KLU2 out of memory on a fine initial mesh, typically
         throw core::SolverError("the coarse Schur correction (Contact/Schur Preconditioner = auto or strip + coarse) "
-                                "could not factor the deck's initial mesh of " +
-                                std::to_string(c->assembler->ownedMap()->getGlobalNumElements()) +
+                                "could not factor its mesh of " + std::to_string(c->forest->numGlobalCells()) +
+                                " cells, " + std::to_string(c->assembler->ownedMap()->getGlobalNumElements()) +
                                 " unknowns on each rank (" + core::withoutSourceLocation(e.what()) +
-                                "); choose Contact/Schur Preconditioner = strip or a coarser Mesh/Refinement Level");
+                                "); choose a smaller Contact/Coarse Correction Cells, Contact/Schur Preconditioner = "
+                                "strip, or a coarse mesh of fewer cells");
       }
       coarseProblem = std::move(c);
     }
@@ -510,6 +523,9 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   const std::string solverWarning = solvers::LinearSolver::checkParameters(deck.sublist("Linear Solver"), reproducible);
   if (!solverWarning.empty() && comm->getRank() == 0)
     std::cerr << "signorini: warning: " << deckPath << ": " << solverWarning << std::endl;
+  const std::string contactWarning = solvers::ContactQP::checkParameters(deck.sublist("Contact"));
+  if (!contactWarning.empty() && comm->getRank() == 0)
+    std::cerr << "signorini: warning: " << deckPath << ": " << contactWarning << std::endl;
   core::setReproducibleArithmetic(reproducible);
   if (file.empty())
     checkMeshFits(meshParams.get<int>("Cells X") * std::pow(4.0, level) * meshParams.get<int>("Cells Y"),
@@ -611,6 +627,12 @@ long long Simulation::initialUnknowns() const {
   if (impl_->initialDiscretisation)
     return static_cast<long long>(impl_->initialDiscretisation->assembler->ownedMap()->getGlobalNumElements());
   return 0;
+}
+std::string Simulation::coarseCorrectionMesh() const {
+  const auto& c = impl_->coarseProblem;
+  if (!c) return "";
+  return std::to_string(c->forest->numGlobalCells()) + " cells (Refinement Level " + std::to_string(c->level) + "), " +
+         std::to_string(c->assembler->ownedMap()->getGlobalNumElements()) + " unknowns";
 }
 RCP<const Comm> Simulation::comm() const { return impl_->comm; }
 const std::string& Simulation::outputBase() const { return impl_->outputBase; }

@@ -105,6 +105,9 @@ class Simulation {
   int numSteps() const;
   /// Unknowns of the deck's (initial) mesh.
   long long initialUnknowns() const;
+  /// "<cells> cells (Refinement Level <l>), <unknowns> unknowns": the mesh of the Schur
+  /// preconditioner's coarse correction, if the initial mesh uses it (else empty).
+  std::string coarseCorrectionMesh() const;
   RCP<const Comm> comm() const;
   const std::string& outputBase() const;  ///< output folder + "/" + basename
   /// Creates the output folder (and its parents) if it is missing; run() does this first, in its

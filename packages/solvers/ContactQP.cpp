@@ -71,15 +71,33 @@ core::ParameterList ContactQP::getValidParameters() {
                   {"consistent", "lumped"});
   core::addChoice(p, "Schur Preconditioner", "auto",
                   "Preconditioner of CG on Q_AA: B^T A_s^{-1} B with A on a strip along Gamma_C (factored once per "
-                  "mesh, sparse Cholesky); \"strip + coarse\" adds B^T P A_c^{-1} P^T B from the deck's initial mesh (the far "
-                  "field); \"auto\": strip + coarse when the strip would need more than 40 node layers, else strip; "
-                  "the lumped B^T diag(A)^{-1} B; or none",
+                  "mesh, sparse Cholesky); \"strip + coarse\" adds B^T P A_c^{-1} P^T B from a coarse mesh (the far "
+                  "field; see 'Coarse Correction Cells'); \"auto\": strip + coarse when the strip would need more than 40 "
+                  "node layers, else strip; the lumped B^T diag(A)^{-1} B; or none",
                   {"auto", "strip", "strip + coarse", "lumped", "none"});
+  core::addInt(p, "Coarse Correction Cells", 4096,
+               "Mesh of the coarse correction A_c (factored once per run, on every rank): the finest uniform refinement "
+               "of the deck's coarse mesh, at most at Mesh/Refinement Level, with at most this many cells (the coarse "
+               "mesh's own cells, or its blocks of 2^o x 2^o rectangle cells that form one tree, when even those are "
+               "more). Memory and set-up time grow with it; the far field needs few cells",
+               1);
   core::addDouble(p, "Strip Width", 6.0,
                   "Width of the strip in units of c k (wave speed times time step; Q decays like exp(-1.4 d/k)): "
                   "segment j gets ceil(width c k / h_j) node layers (h_j its edge length; at least 2, at most 40)",
                   0.1, 1000.0);
   return p;
+}
+
+std::string ContactQP::checkParameters(const core::ParameterList& params) {
+  const auto defaults = getValidParameters();
+  auto changed = [&](const std::string& key) { return !(params.getEntry(key).getAny() == defaults.getEntry(key).getAny()); };
+  const std::string preconditioner = params.get<std::string>("Schur Preconditioner");
+  std::string unused;
+  if (preconditioner != "auto" && preconditioner != "strip + coarse" && changed("Coarse Correction Cells"))
+    unused = "Contact/Coarse Correction Cells";
+  if ((preconditioner == "lumped" || preconditioner == "none") && changed("Strip Width"))
+    unused += (unused.empty() ? "" : ", ") + std::string("Contact/Strip Width");
+  return unused.empty() ? "" : "Contact/Schur Preconditioner = " + preconditioner + "; without effect: " + unused;
 }
 
 ContactQP::ContactQP(const core::ParameterList& params, double lengthScale)

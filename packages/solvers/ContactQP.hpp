@@ -36,6 +36,10 @@ struct ContactQPResult {
 class ContactQP {
  public:
   static core::ParameterList getValidParameters();
+  /// A warning (empty if none) for keys of the validated "Contact" sublist \p params that the
+  /// chosen Schur preconditioner does not use ("Coarse Correction Cells" without the coarse
+  /// correction, "Strip Width" without the strip).
+  static std::string checkParameters(const core::ParameterList& params);
   /// \param params validated "Contact" sublist; \p lengthScale (the domain diameter) makes the
   /// KKT tolerance an absolute gap tolerance [length].
   ContactQP(const core::ParameterList& params, double lengthScale);

@@ -436,6 +436,27 @@ signorini_add_driver_test(check_uniform_plan EXIT 0
   ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=20"
        --set "Adaptivity/Maximum Level=3" --set "Adaptivity/Coarsening Fraction=0.4" ${decks}/good.xml
   REGEX "Algorithm 5[.]1: 20 cycle[(]s[)] [(]4: then every cell is at Maximum Level 3[)], strategy uniform\n")
+# The coarse Schur correction's mesh: the finest uniform level <= Mesh/Refinement Level with at
+# most Contact/Coarse Correction Cells cells (good.xml: 4 x 4 cells, one p4est tree, so levels
+# down to -2). 16 * 4^l cells: level 1 (64 cells, 9 x 9 nodes) is the last within 100; 4 cells
+# (level -1, 3 x 3 nodes) the last within 10; the tree itself (1 cell) below 4.
+signorini_add_driver_test(check_coarse_correction_level EXIT 0
+  ARGS --check --output-dir {OUT} --set "Contact/Schur Preconditioner=strip + coarse" --set "Mesh/Refinement Level=3"
+       --set "Contact/Coarse Correction Cells=100" ${decks}/good.xml
+  REGEX "coarse correction: 64 cells [(]Refinement Level 1[)], 81 unknowns\n")
+signorini_add_driver_test(check_coarse_correction_below_level_0 EXIT 0
+  ARGS --check --output-dir {OUT} --set "Contact/Schur Preconditioner=strip + coarse" --set "Mesh/Refinement Level=1"
+       --set "Contact/Coarse Correction Cells=10" ${decks}/good.xml
+  REGEX "coarse correction: 4 cells [(]Refinement Level -1[)], 9 unknowns\n")
+signorini_add_driver_test(coarse_correction_on_the_tree EXIT 0
+  ARGS --output-dir {OUT} --set "Contact/Schur Preconditioner=strip + coarse" --set "Mesh/Refinement Level=1"
+       --set "Contact/Coarse Correction Cells=3" ${decks}/good.xml
+  REGEX "good[.]xml done: 4 steps"
+  FILES good.steps.csv good.e)
+signorini_add_driver_test(coarse_correction_cells_without_effect EXIT 0
+  ARGS --check --output-dir {OUT} --set "Contact/Schur Preconditioner=lumped" --set "Contact/Coarse Correction Cells=100"
+       --set "Contact/Strip Width=3" ${decks}/good.xml
+  REGEX "warning: .*Contact/Schur Preconditioner = lumped; without effect: Contact/Coarse Correction Cells, Contact/Strip Width\n")
 signorini_add_driver_test(check_bad_deck EXIT 1
   ARGS --check --output-dir {OUT} ${decks}/good.xml ${decks}/penetrating.xml
   REGEX "good[.]xml is valid" "Problem/Initial Displacement penetrates the obstacle" "1 of 2 deck[(]s[)] failed")
