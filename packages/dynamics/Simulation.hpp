@@ -117,9 +117,9 @@ class Simulation {
   /// Throws core::UserError naming \p cause if a step mesh of \p globalCells cells certainly
   /// cannot fit into this machine's memory or exceeds the 32-bit local indices of p4est and Tpetra
   /// on a rank. Collective. The memory is a lower bound: 750 bytes per cell times (unknowns per
-  /// node)^2 (measured: 675 bytes per cell on the uniform membrane at 262k cells; 9-15 kB per cell
-  /// on the bar at 9k-147k cells, whose strip factorisation and MueLu grow with the Courant
-  /// number), plus one byte per cell of the \p storedCells that the meshes of all steps hold
+  /// node)^2 (measured: 675 bytes per cell on the uniform membrane at 262k cells; peak resident
+  /// memory over cells 10.5 kB on the bar at 16k cells and 5.2 kB at 65k, the process's fixed
+  /// share and the coarse Schur correction (at most Contact/Coarse Correction Cells) included), plus one byte per cell of the \p storedCells that the meshes of all steps hold
   /// (compact; 35-51 bytes as p4est forests).
   void checkMeshFits(double globalCells, const std::string& cause, double storedCells = 0) const;
 
