@@ -98,9 +98,9 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
   // Segments follow the local mesh size and the tree's dyadic hierarchy, so that a mesh and its
   // mirror image get mirrored segments: two sibling edges (the halves of one parent edge) form a
   // segment; a lone edge, whose sibling half is refined further, joins the segment of the edge next
-  // to it inside that half (which lies inside the lone edge's parent, too). Edges without a parent
-  // edge in the contact set (unrefined trees, a contact boundary ending inside a parent edge) are
-  // paired along their chain, from both ends of each run of them toward its middle (a middle of
+  // to it inside that half (which lies inside the lone edge's parent, too). Unrefined trees pair
+  // their faces (below). Edges left without a parent edge in the contact set (a contact boundary
+  // ending inside a parent edge, the middle tree faces of an odd chain) are paired along their chain, from both ends of each run of them toward its middle (a middle of
   // three edges is one segment; one left over joins the pair before it); a single one joins the
   // neighbouring segment.
   edgeSegment_.assign(ne, -1);
@@ -129,6 +129,55 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
       const long long j = (i % 2 == 1) ? ((s + 1) << d) - 1 : (s << d);
       const auto next = edgeAt.find({tree, face, level + d, j});
       if (next != edgeAt.end()) partner[e] = next->second;
+    }
+  }
+  // Unrefined trees (an Exodus mesh's cells, a rectangle's when its cell counts share no power of
+  // two) have no parent edge. Their faces along each chain pair up once and for all, independent
+  // of the refinement, as the two halves of a virtual parent edge: from both ends of an open chain
+  // toward its middle (a middle one or three are left to the runs below), from the start of a
+  // closed loop. An edge that is a whole tree face then pairs with its partner face's edge like a
+  // sibling, or joins the edge next to it when that face is refined: the same segments as the
+  // rectangle whose trees hold these cells two by two.
+  for (size_t c = 0; c < chains.size() && size == SegmentSize::TwoEdges; ++c) {
+    const auto& chain = chains[c];
+    const int n = static_cast<int>(chain.size());
+    std::vector<std::array<long long, 2>> faces;  // (tree, face) in chain order
+    std::vector<int> faceOf(static_cast<size_t>(n));
+    for (int k = 0; k < n; ++k) {
+      const std::array<long long, 2> f{places[4 * chain[k]], places[4 * chain[k] + 1]};
+      if (faces.empty() || faces.back() != f) faces.push_back(f);
+      faceOf[k] = static_cast<int>(faces.size()) - 1;
+    }
+    if (closed[c] && faces.size() > 1 && faces.front() == faces.back()) {  // a loop walked from inside a face
+      for (int k = 0; k < n; ++k)
+        if (faceOf[k] == static_cast<int>(faces.size()) - 1) faceOf[k] = 0;
+      faces.pop_back();
+    }
+    const int nf = static_cast<int>(faces.size());
+    std::vector<int> partnerFace(static_cast<size_t>(nf), -1);
+    auto pairFaces = [&](int a, int b) { partnerFace[a] = b, partnerFace[b] = a; };
+    if (closed[c]) {  // from the smallest face, toward its smaller neighbour: the same for any walk
+      const int s0 = static_cast<int>(std::min_element(faces.begin(), faces.end()) - faces.begin());
+      const int dir = faces[(s0 + 1) % nf] < faces[(s0 + nf - 1) % nf] ? 1 : nf - 1;
+      for (int i = 0; i + 1 < nf; i += 2) pairFaces((s0 + i * dir) % nf, (s0 + (i + 1) * dir) % nf);
+    } else {
+      int lo = 0, hi = nf;
+      for (; hi - lo >= 4; lo += 2, hi -= 2) pairFaces(lo, lo + 1), pairFaces(hi - 2, hi - 1);
+      if (hi - lo == 2) pairFaces(lo, lo + 1);
+    }
+    for (int k = 0; k < n; ++k) {
+      const int e = chain[k], pf = partnerFace[faceOf[k]];
+      if (places[4 * e + 2] != 0 || pf < 0) continue;
+      int next = -1;  // e's chain neighbour on the partner face
+      for (int j : {k + 1, k - 1}) {
+        if (closed[c]) j = (j + n) % n;
+        if (next < 0 && j >= 0 && j < n && faceOf[j] == pf) next = chain[j];
+      }
+      SIGNORINI_ASSERT(next >= 0, "the partner of a tree face is not next to it on its chain");
+      if (places[4 * next + 2] == 0)
+        partner[e] = std::min(e, next);  // an unrefined pair: one representative
+      else
+        partner[e] = next;  // a lone edge joins the finer edge next to it
     }
   }
   // The segment's representative edge of e (-1: none, e joins its chain neighbour's segment).

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <set>
 
 #include <Teuchos_DefaultMpiComm.hpp>
@@ -129,6 +130,60 @@ TEST(ContactCoupling, UnrefinedTreesArePairedAlongTheBoundary) {
   }
   EXPECT_GE(coarse, 2);  // pairs of unrefined trees
   for (const auto& [a, b] : intervals) EXPECT_EQ(intervals.count({32 - b, 32 - a}), 1u) << a << " " << b;
+}
+
+TEST(ContactCoupling, TreesOfOneCellPairLikeTheRectanglesTrees) {
+  // The same 8 x 2 cells of [0, 8] x [0, 2], as a rectangle (trees of 2 x 2 cells) and with one tree
+  // per cell (as from an Exodus file), refined alike toward two points of the bottom: the bottom's
+  // segments are the same intervals. The cells' faces pair up as the rectangle's siblings do, also
+  // where the partner face is refined and where unrefined faces sit between refined ones.
+  std::vector<double> x, y;
+  for (int j = 0; j <= 2; ++j)
+    for (int i = 0; i <= 8; ++i) x.push_back(i), y.push_back(j);
+  std::vector<std::array<int, 4>> quads;
+  std::map<std::string, std::vector<std::array<int, 2>>> sides;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 8; ++i) {
+      const int v = 9 * j + i;
+      quads.push_back({v, v + 1, v + 10, v + 9});
+      if (j == 0) sides["bottom"].push_back({static_cast<int>(quads.size()) - 1, 0});
+      if (i == 0) sides["left"].push_back({static_cast<int>(quads.size()) - 1, 3});
+      if (i == 7) sides["right"].push_back({static_cast<int>(quads.size()) - 1, 1});
+    }
+  const std::vector<std::pair<std::string, std::string>> specs{{"left", "left"}, {"right", "right"}, {"bottom", "bottom"}};
+  test::TestMesh rectangle(mesh::CoarseMesh::rectangle(0.0, 8.0, 0.0, 2.0, 8, 2), specs, 0);
+  test::TestMesh cells(mesh::CoarseMesh::fromQuads(x, y, quads, sides, "8 x 2 cells"), specs, 0);
+  ASSERT_EQ(rectangle.coarse->numTrees(), 4);
+  ASSERT_EQ(cells.coarse->numTrees(), 16);
+  auto segmentsOf = [](test::TestMesh& tm) {
+    for (const auto& [px, passes] : {std::pair<double, int>{2.3, 3}, {4.6, 1}})
+      for (int pass = 0; pass < passes; ++pass) {
+        const auto& coarse = *tm.coarse;
+        tm.forest->refineIf([&, px = px](int tree, const p4est_quadrant_t& q) {
+          const double len = static_cast<double>(P4EST_QUADRANT_LEN(q.level)) / P4EST_ROOT_LEN;
+          const auto c = coarse.mapPoint(tree, q.x / static_cast<double>(P4EST_ROOT_LEN) + 0.5 * len,
+                                         q.y / static_cast<double>(P4EST_ROOT_LEN) + 0.5 * len);
+          return std::hypot(c[0] - px, c[1]) < 0.8;
+        });
+        tm.forest->balance();
+      }
+    tm.forest->partition();
+    const auto& m = tm.build();
+    fem::ContactCoupling B(m, kBottom, fem::ContactCoupling::SegmentSize::TwoEdges,
+                           std::vector<char>(m.overlapMap()->getNodeNumElements(), 0));
+    std::set<std::pair<long long, long long>> intervals;  // in units of the finest edge, 1/8
+    for (int j = 0; j < B.numSegments(); ++j) {
+      const double a = B.segmentMidpoint()[j][0] - 0.5 * B.segmentLength()[j];
+      intervals.insert({std::llround(8 * a), std::llround(8 * (a + B.segmentLength()[j]))});
+    }
+    return std::make_pair(intervals, m.numGlobalCells());
+  };
+  const auto [fromRectangle, rectangleCells] = segmentsOf(rectangle);
+  const auto [fromCells, cellsCells] = segmentsOf(cells);
+  EXPECT_EQ(rectangleCells, cellsCells);  // the same mesh
+  EXPECT_EQ(fromRectangle, fromCells);
+  EXPECT_EQ(fromCells.count({48, 64}), 1u);  // x in [6, 8]: two unrefined cells, one segment
+  EXPECT_GE(fromCells.size(), 8u);
 }
 
 /// Q = B^T A^{-1} B formed column by column (one A-solve per segment), row-major.
