@@ -158,6 +158,8 @@ void ensureWritableDirectory(const std::string& dir, const std::string& key, con
       } else if (::mkdir(partial.c_str(), 0755) == 0) {
         created.push_back(partial);
         deepest = partial;
+      } else if (errno == EEXIST && ::stat(partial.c_str(), &info) == 0 && S_ISDIR(info.st_mode)) {
+        deepest = partial;  // another process made it since the stat above (runs started together)
       } else {
         ok = false;
       }

@@ -390,13 +390,17 @@ EstimatorResult combineCellTerms(const Volume& volume, const std::vector<double>
   return res;
 }
 
-/// The "physical" scaling of the estimate of the step equation: eta_* / (beta k^2), s0 / sqrt(beta k^2),
-/// the cell indicators term by term.
-inline void scaleToPhysical(EstimatorResult& res, const std::vector<double>& s0Share, double bk2) {
-  res.etaStar /= bk2;
-  res.s0 /= std::sqrt(bk2);
+/// The "physical" scaling of the estimate of the step equation: eta_* / s, s0 / sqrt(s), the cell
+/// indicators term by term, s = beta k^2 kappa (kappa the stiffness [force / length^(d-2)]: kappa, or
+/// lambda + 2 mu in elasticity). The residual of the step equation divided by beta k^2 is that of
+/// rho u_tt - div(kappa grad u) = f; divided by kappa as well, eta_* estimates the error's gradient
+/// and s0^2 = |<lambda, (g - u_h)_+>| / kappa the product of two displacements: eta_*, s0 and s1 all
+/// come out in units of the displacement, independent of the units of force (DESIGN 1.3-1.4).
+inline void scaleToPhysical(EstimatorResult& res, const std::vector<double>& s0Share, double s) {
+  res.etaStar /= s;
+  res.s0 /= std::sqrt(s);
   for (size_t e = 0; e < res.cellIndicator.size(); ++e)
-    res.cellIndicator[e] = (res.cellIndicator[e] - s0Share[e]) / (bk2 * bk2) + s0Share[e] / bk2;
+    res.cellIndicator[e] = (res.cellIndicator[e] - s0Share[e]) / (s * s) + s0Share[e] / s;
 }
 
 }  // namespace signorini::estimate

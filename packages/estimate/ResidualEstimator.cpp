@@ -154,9 +154,10 @@ core::ParameterList ResidualEstimator::getValidParameters() {
   core::addChoice(p, "Scaling", "physical",
                   "\"step\": eta_* and s0 exactly as written for the step equation c(u, phi) + <lambda_H, phi> = "
                   "(F_h, phi), whose residuals carry the factor beta k^2 (so eta_* and s0 are 1e-6 and s1 dominates "
-                  "eta); \"physical\": the same terms divided by beta k^2 (eta_*) and sqrt(beta k^2) (s0), i.e. "
-                  "for the equation divided by beta k^2 with the physical multiplier, commensurable with s1 and "
-                  "ordered as in the paper's Fig. 4.1 (s1 smallest)",
+                  "eta); \"physical\": the same terms divided by beta k^2 kappa (eta_*) and sqrt(beta k^2 kappa) (s0), "
+                  "kappa the stiffness (Problem/Stiffness; elasticity: lambda + 2 mu), i.e. for the equation divided "
+                  "by beta k^2 kappa with the physical multiplier: all three terms in units of the displacement, "
+                  "whatever the units of force, and ordered as in the paper's Fig. 4.1 (s1 smallest)",
                   {"physical", "step"});
   core::addDouble(p, "S1 Relative Tolerance", 1e-2,
                   "Residual tolerance (relative to the right-hand side) of the Jacobi CG that computes the harmonic "
@@ -335,7 +336,7 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
                                                                in.assembler.dirichletFlags());
                                   });
   }
-  if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2);
+  if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2 * kappa);
   res.eta = res.etaStar + res.s0 + res.s1;
   return res;
 }

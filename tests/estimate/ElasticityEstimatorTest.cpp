@@ -8,6 +8,7 @@
 //  - 1, 2 and 3 ranks give the same values as one rank.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -50,6 +51,7 @@ struct Case {
   RCP<Vector> u, pred;
   std::vector<double> lambda;
   double beta = 0.25, k = 0.1, time = 0.3;
+  double forceUnit = 1.0;  ///< Young's modulus and density are kE and 2 in this unit
 
   Case(int level, bool hanging, RCP<const Comm> cm = Tpetra::getDefaultComm()) : comm(cm) {
     coarse = mesh::CoarseMesh::rectangle(0, 1, 0, 1, 2, 2);
@@ -73,9 +75,9 @@ struct Case {
     mesh = std::make_unique<mesh::Q1Mesh>(*forest, *segments, comm);
     auto p = fem::ProblemData::getValidParameters();
     p.set("Type", "plane strain elasticity");
-    p.set("Young's Modulus", kE);
+    p.set("Young's Modulus", kE * forceUnit);
     p.set("Poisson's Ratio", kNu);
-    p.set("Density", 2.0);
+    p.set("Density", 2.0 * forceUnit);
     for (const auto& [key, value] : entries) p.set(key, value);
     problem = std::make_unique<fem::ProblemData>(p, *segments);
     assembler = std::make_unique<fem::ElasticityAssembler>(
@@ -99,9 +101,9 @@ struct Case {
       h(2 * i + 1, 0) = fy(X[0], X[1]);
     }
   }
-  estimate::EstimatorResult run() const {
+  estimate::EstimatorResult run(const std::string& scaling = "step") const {
     auto params = estimate::ResidualEstimator::getValidParameters();
-    params.set("Scaling", "step");
+    params.set("Scaling", scaling);
     estimate::ElasticityEstimator est(params);
     return est.estimate(estimate::ElasticityEstimatorInput{*forest, *mesh, *assembler, *problem, coupling.get(), time, k,
                                                            beta, *u, *pred, lambda, solveCG});
@@ -279,6 +281,41 @@ TEST(ElasticityEstimator, ContactTermsMatchTheScalarEstimator) {
     EXPECT_NEAR(r.s0, rs.s0, 1e-12 * rs.s0) << direction;
     EXPECT_NEAR(r.s1, rs.s1, 1e-9 * rs.s1) << direction;
   }
+}
+
+TEST(ElasticityEstimator, PhysicalScalingDoesNotDependOnTheUnitOfForce) {
+  // As for the scalar estimator: E, rho, the body force, the traction and the multipliers in a unit
+  // 1e6 times smaller give the same physical estimate (divided by beta k^2 (lambda + 2 mu)).
+  auto estimateIn = [](double unit) {
+    auto s = std::make_unique<Case>(2, true);
+    s->forceUnit = unit;
+    s->finish({{"Contact Segments", "bottom"},
+               {"Contact Direction", "+y"},
+               {"Dirichlet Segments", "top"},
+               {"Neumann Segments", "right"},
+               {"Obstacle", "0.05*sin(pi*x) - 0.01"},
+               {"Body Force", num(unit) + " * 1, " + num(unit) + " * x"},
+               {"Neumann Data", num(unit) + " * 0.3, " + num(unit) + " * (-0.2 * y)"}});
+    s->interpolate([](double x, double y) { return 0.01 * x * y; }, [](double x, double y) { return 0.02 * x * (1 - y) - 0.005; },
+                   *s->u);
+    s->interpolate([](double, double y) { return 0.001 * y; }, [](double x, double) { return 0.002 * x; }, *s->pred);
+    for (size_t j = 0; j < s->lambda.size(); ++j) s->lambda[j] = -0.1 * unit * (1.0 + j);
+    return std::make_pair(s->run("physical"), s->run("step"));
+  };
+  const auto [pa, paStep] = estimateIn(1.0);
+  const auto [mpa, mpaStep] = estimateIn(1e-6);
+  EXPECT_GT(pa.s0, 0.0);
+  EXPECT_GT(pa.s1, 0.0);
+  EXPECT_NEAR(mpa.etaStar, pa.etaStar, 1e-12 * pa.etaStar);
+  EXPECT_NEAR(mpa.s0, pa.s0, 1e-12 * pa.s0);
+  EXPECT_NEAR(mpa.s1, pa.s1, 1e-12 * pa.s1);
+  ASSERT_EQ(mpa.cellIndicator.size(), pa.cellIndicator.size());
+  // Cells: rounding of the step residual (rho (p - u), beta k^2 f and beta k^2 div(kappa grad u) cancel
+  // in part) shows at 1e-9 of the largest; a dependence on the unit would be a factor near 1e6.
+  const double largest = *std::max_element(pa.cellIndicator.begin(), pa.cellIndicator.end());
+  for (size_t e = 0; e < pa.cellIndicator.size(); ++e)
+    EXPECT_NEAR(mpa.cellIndicator[e], pa.cellIndicator[e], 1e-8 * largest) << "cell " << e;
+  EXPECT_NEAR(mpaStep.etaStar, 1e-6 * paStep.etaStar, 1e-12 * paStep.etaStar);  // control
 }
 
 TEST(ElasticityEstimator, AllRanksAgreeWithOneRank) {

@@ -621,6 +621,43 @@ TEST(ResidualEstimatorScaling, PhysicalScalingDividesByBetaKSquared) {
   EXPECT_NEAR(physical.eta, physical.etaStar + physical.s0 + physical.s1, 1e-12 * physical.eta);
 }
 
+TEST(ResidualEstimatorScaling, PhysicalScalingDoesNotDependOnTheUnitOfForce) {
+  // The same problem with every force-carrying datum (rho, kappa, f, q, lambda) in a unit 1e6 times
+  // smaller (Pa against MPa) has the same displacement; the physical estimate, divided by
+  // beta k^2 kappa, must be the same too, term by term and cell by cell. The step form is not.
+  auto estimateIn = [](double unit) {
+    auto s = std::make_unique<EstimatorCase>(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 3);
+    s->refineWhere([](double x, double y) { return x < 0.5 && y < 0.5; });
+    s->finish({{"Dirichlet Segments", "right"},
+               {"Contact Segments", "left"},
+               {"Neumann Segments", "top"},
+               {"Obstacle", "0.3"},
+               {"Body Force", num(unit) + " * (1 + x)"},
+               {"Neumann Data", num(unit) + " * (x - 0.2)"}},
+              2.0 * unit, 3.0 * unit);
+    s->interpolate([](double x, double y) { return std::sin(x) * y; }, *s->u);
+    s->interpolate([](double x, double y) { return x * y; }, *s->pred);
+    for (int j = 0; j < s->coupling->numSegments(); ++j) s->lambda[j] = -0.01 * unit * (1 + 0.1 * j);
+    return std::make_pair(s->run(true, "physical"), s->run(true, "step"));
+  };
+  const auto [pa, paStep] = estimateIn(1.0);
+  const auto [mpa, mpaStep] = estimateIn(1e-6);
+  EXPECT_GT(pa.s0, 0.0);
+  EXPECT_GT(pa.s1, 0.0);
+  EXPECT_NEAR(mpa.etaStar, pa.etaStar, 1e-12 * pa.etaStar);
+  EXPECT_NEAR(mpa.s0, pa.s0, 1e-12 * pa.s0);
+  EXPECT_NEAR(mpa.s1, pa.s1, 1e-12 * pa.s1);
+  ASSERT_EQ(mpa.cellIndicator.size(), pa.cellIndicator.size());
+  // Cells: rounding of the step residual (rho (p - u), beta k^2 f and beta k^2 div(kappa grad u) cancel
+  // in part) shows at 1e-9 of the largest; a dependence on the unit would be a factor near 1e6.
+  const double largest = *std::max_element(pa.cellIndicator.begin(), pa.cellIndicator.end());
+  for (size_t e = 0; e < pa.cellIndicator.size(); ++e)
+    EXPECT_NEAR(mpa.cellIndicator[e], pa.cellIndicator[e], 1e-8 * largest) << "cell " << e;
+  // Control: the step form scales with the unit (eta_* by it, s0 by its square root).
+  EXPECT_NEAR(mpaStep.etaStar, 1e-6 * paStep.etaStar, 1e-12 * paStep.etaStar);
+  EXPECT_NEAR(mpaStep.s0, 1e-3 * paStep.s0, 1e-12 * paStep.s0);
+}
+
 TEST(FaceWalk, DirectWalkOfOneTreeGivesP4estsFacePairs) {
   // Interior faces of a graded forest of one tree: conforming faces and 2:1 faces with the fine
   // side on either side in both directions; on several ranks also the faces between a local cell
