@@ -206,7 +206,12 @@ std::string AdaptiveSimulation::plan() const {
     if (strategy != "uniform") os << " " << 100 * a.get<double>("Refinement Fraction") << "%";
     if (strategy != "uniform" && a.get<double>("Coarsening Fraction") > 0)
       os << ", coarsening " << 100 * a.get<double>("Coarsening Fraction") << "%";
-    if (a.get<double>("Maximum Total Unknowns") > 0) os << ", stop at " << a.get<double>("Maximum Total Unknowns") << " total unknowns";
+    if (const double maxDofs = a.get<double>("Maximum Total Unknowns"); maxDofs > 0) {
+      os << ", stop at " << maxDofs << " total unknowns";
+      // Cycle 0 passes over the initial mesh: its total is known now.
+      const double first = static_cast<double>(sim_->numSteps()) * static_cast<double>(sim_->initialUnknowns());
+      if (cycles > 1 && first >= maxDofs) os << " (cycle 0 alone has " << first << ": the run stops after it)";
+    }
     if (a.get<double>("Tolerance") > 0) os << ", stop at eta <= " << a.get<double>("Tolerance");
   }
   if (deck_.sublist("Parallel").get<bool>("Reproducible Arithmetic"))

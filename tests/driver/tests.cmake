@@ -457,6 +457,16 @@ signorini_add_driver_test(coarse_correction_cells_without_effect EXIT 0
   ARGS --check --output-dir {OUT} --set "Contact/Schur Preconditioner=lumped" --set "Contact/Coarse Correction Cells=100"
        --set "Contact/Strip Width=3" ${decks}/good.xml
   REGEX "warning: .*Contact/Schur Preconditioner = lumped; without effect: Contact/Coarse Correction Cells, Contact/Strip Width\n")
+# good.xml: 4 steps on 5 x 5 nodes, so cycle 0 alone has 100 total unknowns; the plan says that a
+# limit of 100 ends the run after it (and 101 does not).
+signorini_add_driver_test(check_plan_stops_after_cycle_0 EXIT 0
+  ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=3"
+       --set "Adaptivity/Maximum Total Unknowns=100" ${decks}/good.xml
+  REGEX "stop at 100 total unknowns [(]cycle 0 alone has 100: the run stops after it[)]\n")
+signorini_add_driver_test(check_plan_goes_past_cycle_0 EXIT 0
+  ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=3"
+       --set "Adaptivity/Maximum Total Unknowns=101" ${decks}/good.xml
+  REGEX "stop at 101 total unknowns\n")
 signorini_add_driver_test(check_bad_deck EXIT 1
   ARGS --check --output-dir {OUT} ${decks}/good.xml ${decks}/penetrating.xml
   REGEX "good[.]xml is valid" "Problem/Initial Displacement penetrates the obstacle" "1 of 2 deck[(]s[)] failed")
