@@ -44,10 +44,11 @@ struct TestMesh {
   }
   /// A forest on any coarse mesh, with the given segments (name, specification).
   TestMesh(std::shared_ptr<mesh::CoarseMesh> coarseMesh,
-           const std::vector<std::pair<std::string, std::string>>& segmentSpecs, int level)
-      : coarse(std::move(coarseMesh)) {
+           const std::vector<std::pair<std::string, std::string>>& segmentSpecs, int level,
+           RCP<const Comm> onComm = Tpetra::getDefaultComm())
+      : comm(std::move(onComm)), coarse(std::move(coarseMesh)) {
     segments = std::make_unique<mesh::BoundarySegments>(segmentSpecs, *coarse);
-    forest = std::make_unique<mesh::Forest>(coarse, core::rawMpiComm(*Tpetra::getDefaultComm()), level);
+    forest = std::make_unique<mesh::Forest>(coarse, core::rawMpiComm(*comm), level);
   }
   /// Refines the cells whose reference lower-left corner lies in the lower-left quarter of tree 0
   /// twice (then balances and partitions): hanging nodes on several edges.

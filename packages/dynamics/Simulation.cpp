@@ -525,9 +525,6 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   const std::string solverWarning = solvers::LinearSolver::checkParameters(deck.sublist("Linear Solver"), reproducible);
   if (!solverWarning.empty() && comm->getRank() == 0)
     std::cerr << "signorini: warning: " << deckPath << ": " << solverWarning << std::endl;
-  const std::string contactWarning = solvers::ContactQP::checkParameters(deck.sublist("Contact"));
-  if (!contactWarning.empty() && comm->getRank() == 0)
-    std::cerr << "signorini: warning: " << deckPath << ": " << contactWarning << std::endl;
   core::setReproducibleArithmetic(reproducible);
   if (file.empty())
     checkMeshFits(meshParams.get<int>("Cells X") * std::pow(4.0, level) * meshParams.get<int>("Cells Y"),
@@ -548,6 +545,11 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
                       std::to_string(level));
   I.segments = std::make_unique<mesh::BoundarySegments>(meshParams.sublist("Boundary Segments"), *I.coarse);
   I.problem = std::make_unique<fem::ProblemData>(deck.sublist("Problem"), *I.segments);
+  if (I.problem->hasObstacle) {
+    const std::string contactWarning = solvers::ContactQP::checkParameters(deck.sublist("Contact"));
+    if (!contactWarning.empty() && comm->getRank() == 0)
+      std::cerr << "signorini: warning: " << deckPath << ": " << contactWarning << std::endl;
+  }
   I.newmark = std::make_unique<Newmark>(deck.sublist("Time Integration"));
 
   const auto& out = deck.sublist("Output");
@@ -633,8 +635,12 @@ long long Simulation::initialUnknowns() const {
 std::string Simulation::coarseCorrectionMesh() const {
   const auto& c = impl_->coarseProblem;
   if (!c) return "";
+  const int cap = impl_->deck.sublist("Contact").get<int>("Coarse Correction Cells");
   return std::to_string(c->forest->numGlobalCells()) + " cells (Refinement Level " + std::to_string(c->level) + "), " +
-         std::to_string(c->assembler->ownedMap()->getGlobalNumElements()) + " unknowns";
+         std::to_string(c->assembler->ownedMap()->getGlobalNumElements()) + " unknowns" +
+         (c->forest->numGlobalCells() > cap ? ", the coarse mesh's trees: more than Contact/Coarse Correction Cells = " +
+                                                  std::to_string(cap)
+                                            : "");
 }
 RCP<const Comm> Simulation::comm() const { return impl_->comm; }
 const std::string& Simulation::outputBase() const { return impl_->outputBase; }

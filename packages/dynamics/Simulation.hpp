@@ -119,7 +119,8 @@ class Simulation {
   /// on a rank. Collective. The memory is a lower bound: 750 bytes per cell times (unknowns per
   /// node)^2 (measured: 675 bytes per cell on the uniform membrane at 262k cells; peak resident
   /// memory over cells 10.5 kB on the bar at 16k cells and 5.2 kB at 65k, the process's fixed
-  /// share and the coarse Schur correction (at most Contact/Coarse Correction Cells) included), plus one byte per cell of the \p storedCells that the meshes of all steps hold
+  /// share and the coarse Schur correction (Contact/Coarse Correction Cells, or the coarse mesh's
+  /// trees when they are more; not counted here) included), plus one byte per cell of the \p storedCells that the meshes of all steps hold
   /// (compact; 35-51 bytes as p4est forests).
   void checkMeshFits(double globalCells, const std::string& cause, double storedCells = 0) const;
 

@@ -137,7 +137,8 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
   // toward its middle (a middle one or three are left to the runs below), from the start of a
   // closed loop. An edge that is a whole tree face then pairs with its partner face's edge like a
   // sibling, or joins the edge next to it when that face is refined: the same segments as the
-  // rectangle whose trees hold these cells two by two.
+  // rectangle whose trees hold these cells two by two, where the contact boundary is made of whole
+  // faces of that rectangle's trees.
   for (size_t c = 0; c < chains.size() && size == SegmentSize::TwoEdges; ++c) {
     const auto& chain = chains[c];
     const int n = static_cast<int>(chain.size());

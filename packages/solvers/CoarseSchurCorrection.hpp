@@ -1,7 +1,8 @@
 #pragma once
 /// \file CoarseSchurCorrection.hpp
 /// The far-field part of the Schur complement Q = B^T A^{-1} B (DESIGN 1.6): the step matrix A_c
-/// of the deck's initial (coarsest) mesh, held whole on every rank and factored once per run
+/// of a coarse mesh (a uniform refinement of the deck's coarse mesh no finer than its initial mesh,
+/// Contact/Coarse Correction Cells), held whole on every rank and factored once per run
 /// with Amesos2/KLU2, gives Q_c = (P^T B)^T A_c^{-1} (P^T B), P the embedding of the coarse space.
 /// Added to the strip approximation it forms B^T (R^T A_s^{-1} R + P A_c^{-1} P^T) B, the
 /// two-level additive Schwarz approximation of A^{-1} seen through B: needed when A^{-1} reaches

@@ -448,11 +448,19 @@ signorini_add_driver_test(check_coarse_correction_below_level_0 EXIT 0
   ARGS --check --output-dir {OUT} --set "Contact/Schur Preconditioner=strip + coarse" --set "Mesh/Refinement Level=1"
        --set "Contact/Coarse Correction Cells=10" ${decks}/good.xml
   REGEX "coarse correction: 4 cells [(]Refinement Level -1[)], 9 unknowns\n")
+# A run whose contact QP uses the correction on the tree itself, through contact (some step has
+# active segments: the membrane at x = 1 moves at speed 1 toward an obstacle 0.05-0.2 away).
 signorini_add_driver_test(coarse_correction_on_the_tree EXIT 0
   ARGS --output-dir {OUT} --set "Contact/Schur Preconditioner=strip + coarse" --set "Mesh/Refinement Level=1"
-       --set "Contact/Coarse Correction Cells=3" ${decks}/good.xml
-  REGEX "good[.]xml done: 4 steps"
+       --set "Contact/Coarse Correction Cells=3" --set "Time Integration/Final Time=0.25"
+       --set "Output/Progress Interval=1" ${decks}/good.xml
+  REGEX "step [0-9]+/100 .* active = [1-9]" "good[.]xml done: 100 steps"
   FILES good.steps.csv good.e)
+# An Exodus mesh has one tree per cell: its 16 trees are the coarsest mesh, more than the 10 asked for.
+signorini_add_driver_test(check_coarse_correction_more_than_asked EXIT 0
+  ARGS --check --output-dir {OUT} --set "Contact/Schur Preconditioner=strip + coarse" --set "Mesh/Refinement Level=2"
+       --set "Contact/Coarse Correction Cells=10" ${decks}/good-exodus.xml
+  REGEX "coarse correction: 16 cells [(]Refinement Level 0[)], 25 unknowns, the coarse mesh's trees: more than Contact/Coarse Correction Cells = 10\n")
 signorini_add_driver_test(coarse_correction_cells_without_effect EXIT 0
   ARGS --check --output-dir {OUT} --set "Contact/Schur Preconditioner=lumped" --set "Contact/Coarse Correction Cells=100"
        --set "Contact/Strip Width=3" ${decks}/good.xml

@@ -307,6 +307,18 @@ TEST(ElasticityEstimator, PhysicalScalingDoesNotDependOnTheUnitOfForce) {
   const auto [mpa, mpaStep] = estimateIn(1e-6);
   test::expectSameEstimate(pa, mpa);
   EXPECT_NEAR(mpaStep.etaStar, 1e-6 * paStep.etaStar, 1e-12 * paStep.etaStar);  // control
+  // The stiffness is lambda + 2 mu (the P-wave modulus), not E, mu or rho.
+  Case s(2, true);
+  s.finish({{"Contact Segments", "bottom"}, {"Dirichlet Segments", "top"}, {"Obstacle", "0.05*sin(pi*x) - 0.01"}});
+  s.interpolate([](double x, double y) { return 0.01 * x * y; }, [](double x, double y) { return 0.02 * x * (1 - y) - 0.005; },
+                *s.u);
+  for (size_t j = 0; j < s.lambda.size(); ++j) s.lambda[j] = -0.1 * (1.0 + j);
+  const auto step = s.run("step"), physical = s.run("physical");
+  const double stiffness = s.bk2() * (s.lameLambda() + 2 * s.lameMu());
+  EXPECT_GT(step.s0, 0.0);
+  EXPECT_NEAR(physical.etaStar, step.etaStar / stiffness, 1e-12 * physical.etaStar);
+  EXPECT_NEAR(physical.s0, step.s0 / std::sqrt(stiffness), 1e-12 * physical.s0);
+  EXPECT_NEAR(physical.s1, step.s1, 1e-12 * step.s1);
 }
 
 TEST(ElasticityEstimator, AllRanksAgreeWithOneRank) {

@@ -603,15 +603,16 @@ INSTANTIATE_TEST_SUITE_P(Meshes, ParallelTest, ::testing::Values(false, true),
 
 // ---------------------------------------------------------------------------------------------
 
-TEST(ResidualEstimatorScaling, PhysicalScalingDividesByBetaKSquared) {
-  // eta_* / (beta k^2), s0 / sqrt(beta k^2), s1 unchanged; indicators rescaled term by term.
+TEST(ResidualEstimatorScaling, PhysicalScalingDividesByBetaKSquaredKappa) {
+  // eta_* / (beta k^2 kappa), s0 / sqrt(beta k^2 kappa), s1 unchanged; indicators rescaled term by
+  // term (kappa = 3: neither 1 nor rho).
   EstimatorCase s(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 3);
-  s.finish({{"Dirichlet Segments", "right"}, {"Contact Segments", "left"}, {"Obstacle", "0.3"}});
+  s.finish({{"Dirichlet Segments", "right"}, {"Contact Segments", "left"}, {"Obstacle", "0.3"}}, 1.0, 3.0);
   s.interpolate([](double x, double y) { return std::sin(x) * y; }, *s.u);
   s.interpolate([](double x, double y) { return x * y; }, *s.pred);
   for (int j = 0; j < s.coupling->numSegments(); ++j) s.lambda[j] = -0.01 * (1 + 0.1 * j);
   const auto step = s.run(true, "step"), physical = s.run(true, "physical");
-  const double c = s.bk2();
+  const double c = s.bk2() * 3.0;
   EXPECT_GT(step.etaStar, 0.0);
   EXPECT_GT(step.s0, 0.0);
   EXPECT_NEAR(s.indicatorSum(physical), physical.etaStar * physical.etaStar + physical.s0 * physical.s0,

@@ -186,6 +186,67 @@ TEST(ContactCoupling, TreesOfOneCellPairLikeTheRectanglesTrees) {
   EXPECT_GE(fromCells.size(), 8u);
 }
 
+TEST(ContactCoupling, HoleBoundaryPairsTheSameOnAnyRanks) {
+  // 4 x 4 cells of [0, 4]^2 without the middle 2 x 2, one tree per cell: the contact boundary is
+  // the hole's, a closed loop of 8 tree faces. Unrefined, its faces pair from the smallest face
+  // (tree 1's top, [1, 2] x {1}) toward its smaller neighbour (tree 2's top): the four sides of the
+  // hole. Refined toward a corner of the hole, the segments hold at least two edges, cover the loop
+  // once, and are the same whether the mesh is spread over all ranks or held by each one.
+  std::vector<double> x, y;
+  std::map<std::pair<int, int>, int> vertex;
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i <= 4; ++i)
+      if (!(i == 2 && j == 2)) vertex[{i, j}] = static_cast<int>(x.size()), x.push_back(i), y.push_back(j);
+  std::vector<std::array<int, 4>> quads;
+  std::map<std::string, std::vector<std::array<int, 2>>> sides;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      if ((i == 1 || i == 2) && (j == 1 || j == 2)) continue;
+      quads.push_back({vertex[{i, j}], vertex[{i + 1, j}], vertex[{i + 1, j + 1}], vertex[{i, j + 1}]});
+      const int c = static_cast<int>(quads.size()) - 1;
+      if (j == 0 && (i == 1 || i == 2)) sides["hole"].push_back({c, 2});
+      if (j == 3 && (i == 1 || i == 2)) sides["hole"].push_back({c, 0});
+      if (i == 0 && (j == 1 || j == 2)) sides["hole"].push_back({c, 1});
+      if (i == 3 && (j == 1 || j == 2)) sides["hole"].push_back({c, 3});
+      if (i == 0) sides["outer"].push_back({c, 3});
+    }
+  const auto coarse = mesh::CoarseMesh::fromQuads(x, y, quads, sides, "square with a hole");
+  const std::vector<std::pair<std::string, std::string>> specs{{"outer", "outer"}, {"unused", "outer"}, {"hole", "hole"}};
+  constexpr unsigned kHole = 1u << 2;
+  using Segments = std::set<std::array<long long, 3>>;  // midpoint and length in units of 1/64
+  auto segmentsOf = [&](RCP<const Comm> comm, int passes) {
+    test::TestMesh tm(coarse, specs, 0, comm);
+    for (int pass = 0; pass < passes; ++pass) {
+      tm.forest->refineIf([&](int tree, const p4est_quadrant_t& q) {
+        const double len = static_cast<double>(P4EST_QUADRANT_LEN(q.level)) / P4EST_ROOT_LEN;
+        const auto c = coarse->mapPoint(tree, q.x / static_cast<double>(P4EST_ROOT_LEN) + 0.5 * len,
+                                        q.y / static_cast<double>(P4EST_ROOT_LEN) + 0.5 * len);
+        return std::hypot(c[0] - 1.3, c[1] - 0.8) < 0.6;
+      });
+      tm.forest->balance();
+    }
+    tm.forest->partition();
+    const auto& m = tm.build();
+    fem::ContactCoupling B(m, kHole, fem::ContactCoupling::SegmentSize::TwoEdges,
+                           std::vector<char>(m.overlapMap()->getNodeNumElements(), 0));
+    Segments out;
+    double total = 0;
+    for (int j = 0; j < B.numSegments(); ++j) {
+      EXPECT_GE(B.segmentEdges()[j], 2) << "segment " << j;
+      total += B.segmentLength()[j];
+      out.insert({std::llround(64 * B.segmentMidpoint()[j][0]), std::llround(64 * B.segmentMidpoint()[j][1]),
+                  std::llround(64 * B.segmentLength()[j])});
+    }
+    EXPECT_NEAR(total, 8.0, 1e-12);  // the loop once
+    return out;
+  };
+  const RCP<const Comm> self = Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
+  EXPECT_EQ(segmentsOf(Tpetra::getDefaultComm(), 0), (Segments{{128, 64, 128}, {192, 128, 128}, {128, 192, 128}, {64, 128, 128}}));
+  const auto refined = segmentsOf(Tpetra::getDefaultComm(), 2);
+  EXPECT_GT(refined.size(), 4u);
+  EXPECT_EQ(refined, segmentsOf(self, 2));
+}
+
 /// Q = B^T A^{-1} B formed column by column (one A-solve per segment), row-major.
 std::vector<double> denseSchurComplement(solvers::LinearSolver& solver, const fem::ContactCoupling& B,
                                          const Map& map) {
