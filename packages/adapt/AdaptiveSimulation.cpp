@@ -184,6 +184,15 @@ AdaptiveSimulation::~AdaptiveSimulation() = default;
 
 const std::string& AdaptiveSimulation::outputBase() const { return sim_->outputBase(); }
 
+std::string AdaptiveSimulation::whereInRun(int cycle) const {
+  const int n = sim_->currentStep();
+  std::ostringstream os;
+  os << std::setprecision(6);
+  if (deck_.sublist("Adaptivity").get<std::string>("Strategy") != "none") os << "cycle " << cycle << ", ";
+  os << (n == 0 ? "the initial state" : "step " + std::to_string(n)) << " (t = " << n * sim_->timeStep() << "): ";
+  return os.str();
+}
+
 std::string AdaptiveSimulation::plan() const {
   const auto& a = deck_.sublist("Adaptivity");
   const auto& t = deck_.sublist("Time Integration");
@@ -226,7 +235,15 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   if (deck_.sublist("Parallel").get<bool>("Reproducible Arithmetic"))
     core::rootOut(sim_->comm()->getRank())
         << "signorini: reproducible arithmetic: the same bits on any number of ranks (slower)" << std::endl;
-  if (strategy == "none") return sim_->run();
+  if (strategy == "none") {
+    try {
+      return sim_->run();
+    } catch (const core::SolverError& e) {
+      throw core::SolverError(whereInRun(0) + e.what());
+    } catch (const core::UserError& e) {
+      throw core::UserError(whereInRun(0) + e.what());
+    }
+  }
 
   const auto comm = sim_->comm();
   const int rank = comm->getRank();
@@ -387,7 +404,13 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       options.interpolateTransfer = ap.get<std::string>("Transfer") == "interpolation";
       options.reportTransferEnergy = ap.get<bool>("Report Transfer Energy");
       options.compactMeshes = compactMeshes;
-      last = sim_->runPass(meshes, hook, options);
+      try {  // a failure names the cycle and the step it happened in
+        last = sim_->runPass(meshes, hook, options);
+      } catch (const core::SolverError& e) {
+        throw core::SolverError(whereInRun(l) + e.what());
+      } catch (const core::UserError& e) {
+        throw core::UserError(whereInRun(l) + e.what());
+      }
       for (const auto& [phase, seconds] : last.phaseSeconds) phaseSeconds[phase] += seconds;
       // Memory of the stored meshes of this cycle (steps with equal meshes share one forest).
       std::set<const mesh::Forest*> unique;

@@ -42,6 +42,9 @@ class AdaptiveSimulation {
   const std::vector<CycleSummary>& cycles() const { return cycles_; }
 
  private:
+  /// "cycle l, step n (t = ...): " (no cycle without adaptivity), the start of a failure's message.
+  std::string whereInRun(int cycle) const;
+
   core::ParameterList deck_;
   std::unique_ptr<dynamics::Simulation> sim_;
   std::vector<CycleSummary> cycles_;

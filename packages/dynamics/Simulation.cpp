@@ -259,6 +259,7 @@ struct Simulation::Impl {
   core::PhaseTimers timers;
   std::unique_ptr<CoarseProblem> coarseProblem;
   long discretisations = 0;  ///< built so far (their ids)
+  int currentStep = 0;       ///< the step runPass is at (0: the initial state)
 
   std::unique_ptr<fem::Assembler> makeAssembler(const mesh::Q1Mesh& m) const {
     if (problem->components() == 1) return std::make_unique<fem::Q1Assembler>(m, m.nodesOnSegments(problem->dirichletMask));
@@ -335,6 +336,24 @@ struct Simulation::Impl {
       d->solver->setNearNullspace(elasticity->rigidBodyModes(), 2);
     d->solver->setOperator(d->A, d->courant);
     if (problem->hasObstacle) {
+      // Contact where the constrained unknown is fixed (also under another segment name, or by a
+      // Dirichlet X/Y segment on the contact component): a user error, on every mesh.
+      const unsigned fixed = problem->dirichletMask |
+                             (problem->components() == 2 ? problem->componentDirichletMask[problem->contactComponent] : 0u);
+      int overlapLocal = 0, overlapGlobal = 0;
+      for (const auto& be : d->mesh->boundaryEdges())
+        if (be.segments & problem->contactMask) {
+          if (be.segments & fixed) overlapLocal |= 1;
+          if (be.segments & problem->neumannMask) overlapLocal |= 2;
+        }
+      Teuchos::reduceAll(*comm, Teuchos::REDUCE_BOR, overlapLocal, Teuchos::outArg(overlapGlobal));
+      if (overlapGlobal & 1)
+        SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a contact segment and a Dirichlet segment "
+                             "that fixes the constrained component (Problem/Contact Segments against Dirichlet Segments"
+                             << (problem->components() == 2 ? ", Dirichlet X Segments, Dirichlet Y Segments" : "") << ")");
+      if (overlapGlobal & 2)
+        SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a contact segment and a Neumann segment "
+                             "(Problem/Contact Segments against Neumann Segments; on Gamma_C the traction is the multiplier)");
       const auto size = deck.sublist("Contact").get<std::string>("Multiplier Segments") == "H = h"
                             ? fem::ContactCoupling::SegmentSize::OneEdge
                             : fem::ContactCoupling::SegmentSize::TwoEdges;
@@ -406,6 +425,25 @@ struct Simulation::Impl {
         SIGNORINI_USER_ERROR("Problem/Initial Displacement penetrates the obstacle at t = 0: the mean gap on the contact "
                              "segment at (" << mp[0] << ", " << mp[1] << ") is " << (gap[j] - gbar[j]) / len[j]);
       }
+  }
+
+  /// The KKT tolerance is absolute (Contact/KKT Tolerance times the domain diameter): a warning when
+  /// even the largest initial gap is within 1000 tolerances, so that the contact would be resolved to
+  /// fewer than three digits (a problem whose motion is tiny against the domain).
+  void warnIfGapsNearTolerance(Discretisation& d, const Vector& u, const std::string& deckPath) const {
+    if (!d.coupling || d.coupling->numSegments() == 0) return;
+    const auto gap = d.coupling->applyTranspose(u);
+    const auto gbar = d.coupling->weightedObstacle(problem->obstacle, 0.0);
+    double largest = 0;
+    for (int j = 0; j < d.coupling->numSegments(); ++j)
+      largest = std::max(largest, (gap[j] - gbar[j]) / d.coupling->segmentLength()[j]);
+    const double tol = d.qp->gapTolerance();
+    if (largest > 0 && largest < 1000 * tol && comm->getRank() == 0)
+      std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": the largest initial gap, " << largest
+                << ", is within 1000 times the contact tolerance " << tol
+                << " (Contact/KKT Tolerance times the domain diameter): the contact is resolved to fewer than "
+                   "three digits; lower Contact/KKT Tolerance"
+                << std::endl;
   }
 
   /// Kinetic energy 1/2 v^T M v and strain energy 1/2 u^T K u.
@@ -545,6 +583,9 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
                       std::to_string(level));
   I.segments = std::make_unique<mesh::BoundarySegments>(meshParams.sublist("Boundary Segments"), *I.coarse);
   I.problem = std::make_unique<fem::ProblemData>(deck.sublist("Problem"), *I.segments);
+  if (!I.problem->hasObstacle && I.problem->contactMask != 0 && comm->getRank() == 0)
+    std::cerr << "signorini: warning: " << deckPath << ": Problem/Contact Segments without Problem/Obstacle: no contact"
+              << std::endl;
   if (I.problem->hasObstacle) {
     const std::string contactWarning = solvers::ContactQP::checkParameters(deck.sublist("Contact"));
     if (!contactWarning.empty() && comm->getRank() == 0)
@@ -577,12 +618,6 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   I.initialForest = std::make_shared<mesh::Forest>(I.coarse, core::rawMpiComm(*comm), meshParams.get<int>("Refinement Level"));
   // Set-up checks on the initial mesh, before any output exists.
   auto d = I.build(I.initialForest, 0);
-  int overlapLocal = 0, overlapGlobal = 0;
-  for (const auto& be : d->mesh->boundaryEdges())
-    if ((be.segments & I.problem->dirichletMask) && (be.segments & I.problem->contactMask)) overlapLocal = 1;
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, overlapLocal, Teuchos::outArg(overlapGlobal));
-  if (overlapGlobal)
-    SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a Dirichlet and a contact segment");
   for (const auto& [name, p] : I.probes) {
     double s, r;
     int found = d->mesh->locate(p[0], p[1], s, r) >= 0 ? 1 : 0;
@@ -596,6 +631,7 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     Vector u(d->assembler->ownedMap()), v(d->assembler->ownedMap()), a(d->assembler->ownedMap());
     I.initialState(*d, u, v, a);
     I.checkInitialGap(*d, u);
+    I.warnIfGapsNearTolerance(*d, u, deckPath);
   }
   I.initialDiscretisation = std::move(d);
   I.outDir = outputDir.empty() ? out.get<std::string>("Directory") : outputDir;
@@ -642,6 +678,8 @@ std::string Simulation::coarseCorrectionMesh() const {
                                                   std::to_string(cap)
                                             : "");
 }
+int Simulation::currentStep() const { return impl_->currentStep; }
+double Simulation::timeStep() const { return impl_->newmark->timeStep; }
 RCP<const Comm> Simulation::comm() const { return impl_->comm; }
 const std::string& Simulation::outputBase() const { return impl_->outputBase; }
 
@@ -687,6 +725,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   const std::string base = I.outDir + "/" + (options.basename.empty() ? I.basename : options.basename);
   const int nSteps = I.newmark->numSteps();
   SIGNORINI_ASSERT(static_cast<int>(meshes.size()) == nSteps, "one mesh per time step");
+  I.currentStep = 0;
   const double k = I.newmark->timeStep, beta = I.newmark->beta;
   const int exodusInterval = outParams.get<int>("Exodus Interval");
   int progress = outParams.get<int>("Progress Interval");
@@ -845,6 +884,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     writeOutputs(0, 0.0, initial, 0.0, 0.0, 0.0, StepExtras());
     for (int n = 1; n <= nSteps; ++n) {
       core::throwIfInterrupted(*I.comm);
+      I.currentStep = n;
       const double t = n * k;
       const auto tR0 = std::chrono::steady_clock::now();
       // The step's Newmark predictors, formed on the mesh of step n-1 and moved with it.

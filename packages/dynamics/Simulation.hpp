@@ -103,6 +103,9 @@ class Simulation {
   /// The deck's initial (uniform) mesh.
   std::shared_ptr<mesh::Forest> initialForest() const;
   int numSteps() const;
+  /// The step the current or last runPass() was computing (0: the initial state), for messages.
+  int currentStep() const;
+  double timeStep() const;  ///< k
   /// Unknowns of the deck's (initial) mesh.
   long long initialUnknowns() const;
   /// "<cells> cells (Refinement Level <l>), <unknowns> unknowns": the mesh of the Schur

@@ -13,9 +13,13 @@ core::ParameterList ProblemData::getValidParameters() {
                   "Problem class (DESIGN 1.1): \"scalar wave\" rho u_tt - div(kappa grad u) = f (one unknown per "
                   "node), or \"plane strain elasticity\" rho u_tt - div sigma(u) = f (two per node)",
                   {"scalar wave", "plane strain elasticity"});
-  core::addDouble(p, "Density", 1.0, "rho [mass/area] (scalar wave) or [mass/volume] (elasticity)", 1e-300, core::kInf);
-  core::addDouble(p, "Stiffness", 1.0, "Scalar wave: kappa [force]; wave speed sqrt(kappa/rho)", 1e-300, core::kInf);
-  core::addDouble(p, "Young's Modulus", 1.0, "Elasticity: E [force/area]", 1e-300, core::kInf);
+  // The solvers square norms of vectors that scale with these: outside 1e-100..1e100 the squares
+  // leave the range of doubles (1e-160 lost the initial velocity altogether).
+  core::addDouble(p, "Density", 1.0, "rho [mass/area] (scalar wave) or [mass/volume] (elasticity), in [1e-100, 1e100]",
+                  1e-100, 1e100);
+  core::addDouble(p, "Stiffness", 1.0, "Scalar wave: kappa [force]; wave speed sqrt(kappa/rho); in [1e-100, 1e100]",
+                  1e-100, 1e100);
+  core::addDouble(p, "Young's Modulus", 1.0, "Elasticity: E [force/area], in [1e-100, 1e100]", 1e-100, 1e100);
   core::addDouble(p, "Poisson's Ratio", 0.3, "Elasticity: nu (plane strain), in [0, 0.5)", 0.0, 0.4999999);
   core::addString(p, "Body Force", "0",
                   "f(x,y,t) [force/area]; elasticity: \"fx, fy\" [force/volume] (\"0\": all components zero)");
@@ -73,6 +77,8 @@ ProblemData::ProblemData(const core::ParameterList& p, const mesh::BoundarySegme
       obstacle(p.get<std::string>("Obstacle").empty() ? std::string("0") : p.get<std::string>("Obstacle"),
                "Problem/Obstacle") {
   hasObstacle = !p.get<std::string>("Obstacle").empty();
+  // One expression: "a, b" would evaluate to b (the comma operator), e.g. a vector given by mistake.
+  if (hasObstacle) core::ExpressionList(p.get<std::string>("Obstacle"), "Problem/Obstacle", 1);
   if (!p.get<std::string>("Exact Solution").empty())
     exactSolution.emplace(p.get<std::string>("Exact Solution"), "Problem/Exact Solution", components());
   dirichletMask = maskOf(p.get<std::string>("Dirichlet Segments"), segments, "Problem/Dirichlet Segments");
@@ -97,6 +103,8 @@ ProblemData::ProblemData(const core::ParameterList& p, const mesh::BoundarySegme
     SIGNORINI_USER_ERROR("Problem/Obstacle is given but Problem/Contact Segments names no segment");
   if (dirichletMask & contactMask)
     SIGNORINI_USER_ERROR("Problem/Contact Segments and Problem/Dirichlet Segments name the same segment");
+  if (neumannMask & contactMask)  // Gamma_N and Gamma_C are disjoint (DESIGN 1.1): q on Gamma_C is -lambda
+    SIGNORINI_USER_ERROR("Problem/Contact Segments and Problem/Neumann Segments name the same segment");
   if (componentDirichletMask[contactComponent] & contactMask)
     SIGNORINI_USER_ERROR("Problem/Contact Segments and Problem/Dirichlet " << (contactComponent ? "Y" : "X")
                                                                           << " Segments name the same segment");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include <Tpetra_CrsMatrix.hpp>
@@ -151,7 +152,10 @@ void ContactQP::setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupli
     approxQ_ = coupling.lumpedSchurComplement(d);
   }
   for (int j = 0; j < m; ++j)
-    SIGNORINI_ASSERT(approxQ_[static_cast<size_t>(j) * m + j] > 0, "segment " << j << " has no coupling");
+    if (!(approxQ_[static_cast<size_t>(j) * m + j] > 0))
+      SIGNORINI_USER_ERROR("Problem/Contact Segments: the contact segment around ("
+                           << coupling.segmentMidpoint()[j][0] << ", " << coupling.segmentMidpoint()[j][1]
+                           << ") has no free unknown (every node under it is a Dirichlet node)");
 }
 
 double ContactQP::lambdaTolerance(int j) const {
@@ -363,13 +367,33 @@ ContactQPResult ContactQP::solve(LinearSolver& solver, const fem::ContactCouplin
       maxViolation = std::max({maxViolation, gapViolation, lamViolation});
       if (gapViolation > gapTol_ || lamViolation > gapTol_) ok = false;
     }
+    double activeGap = 0;  // what converged() tests: |G_j| / |E_j| on the active set
+    for (int a = 0; a < nA; ++a) activeGap = std::max(activeGap, std::abs(G[idx[a]]) / segLen_[idx[a]]);
     if (!converged()) ok = false;
     int changes = 0;
     for (int j = 0; j < m; ++j) changes += active[j] != previous[j];
     history << "  iteration " << it << ": " << nA << " active (" << changes << " changed), " << cg
-            << " CG iterations, largest KKT violation " << maxViolation << " (tolerance " << gapTol_ << ")\n";
+            << " CG iterations, largest KKT violation " << maxViolation << " (tolerance " << gapTol_
+            << "), largest gap on the active set " << activeGap << " (tolerance " << 0.1 * gapTol_ << ")\n";
     previous = active;
-    if (ok) break;
+    if (ok) {
+      // G was updated alongside lambda and u. On a singular Q_AA (more active segments than free
+      // unknowns under them: H = h on a boundary between two Dirichlet ends) CG lets lambda diverge
+      // and the updated G drift from the gap of u; a result is only returned if they agree.
+      auto uGap = B.applyTranspose(u);
+      double drift = 0;
+      for (int j = 0; j < m; ++j) drift = std::max(drift, std::abs(uGap[j] - gbar[j] - G[j]) / segLen_[j]);
+      if (!(drift <= gapTol_)) {
+        std::ostringstream os;
+        os << std::setprecision(3) << "contact QP: the multipliers diverged (the gaps updated with them "
+           << "differ from those of the displacement by " << drift
+           << ", more than the KKT tolerance " << gapTol_ << "): Q_AA is singular. With Contact/Multiplier "
+           << "Segments = H = h a contact boundary between two Dirichlet ends has more segments than free nodes; "
+              "use H = 2h";
+        throw core::SolverError(os.str());
+      }
+      break;
+    }
     if (it == maxNewton)
       throw core::SolverError("contact QP: the active set method did not satisfy the KKT conditions within "
                               "Contact/Maximum Active Set Iterations = " + std::to_string(maxNewton) +

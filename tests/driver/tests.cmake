@@ -228,7 +228,7 @@ signorini_add_driver_test(batch_good_then_bad EXIT 1
 signorini_add_driver_test(solver_failure_mid_run EXIT 1
   ARGS --output-dir {OUT} ${decks}/solver-failure.xml
   REGEX "step 1/4"
-        "solver-failure[.]xml: solver failure: linear solver .* did not reach the relative tolerance")
+        "solver-failure[.]xml: solver failure: step [0-9]+ [(]t = [^)]*[)]: linear solver .* did not reach the relative tolerance")
 signorini_add_driver_test(solver_failure_in_new_directory EXIT 1
   ARGS --output-dir {OUT}/new/deeper ${decks}/solver-failure.xml
   REGEX "solver-failure[.]xml: solver failure")
@@ -506,9 +506,62 @@ signorini_add_driver_test(reproducible_arithmetic_ignores_belos_sublist EXIT 0
   REGEX "warning: .*good[.]xml: reproducible arithmetic solves with its own Jacobi CG; without effect: Linear Solver/Belos\n"
         "good[.]xml is valid")
 # Data beyond the range of doubles: Belos meets a NaN residual, a solver failure about the data.
-signorini_add_driver_test(density_beyond_doubles EXIT 1
-  ARGS --output-dir {OUT} --set "Problem/Density=1e300" ${decks}/good.xml
+signorini_add_driver_test(body_force_beyond_doubles EXIT 1
+  ARGS --output-dir {OUT} --set "Problem/Body Force=1e200" ${decks}/good.xml
   REGEX "solver failure: linear solver CG [+] Jacobi stopped: a residual is not a number")
+# Density, stiffness and Young's modulus are held within 1e-100..1e100 (the solvers' squared norms
+# leave the doubles beyond; a density and stiffness of 1e-160 lost the initial velocity silently).
+signorini_add_driver_test(density_out_of_range EXIT 1
+  ARGS --output-dir {OUT} --set "Problem/Density=1e-160" --set "Problem/Stiffness=1e-160" ${decks}/good.xml
+  REGEX "'Problem/Density' = 1e-160 is not allowed; it must be in [[]1e-100, 1e[+]100[]]")
+
+# The contact problem's own inconsistencies.
+# An obstacle given as two expressions (a vector by mistake) used to evaluate to the last one.
+signorini_add_driver_test(obstacle_two_expressions EXIT 1
+  ARGS --output-dir {OUT} --set "Problem/Obstacle=-0.05, 0" ${decks}/good.xml
+  REGEX "Problem/Obstacle: expected 1 comma-separated expression, got 2 in '-0[.]05, 0'")
+# A contact segment inside a Dirichlet segment of another name used to fail an internal assertion.
+signorini_add_driver_test(contact_inside_dirichlet_other_name EXIT 1
+  ARGS --output-dir {OUT} --set "Mesh/Boundary Segments/lefthalf=left, y > 0.5" --set "Problem/Contact Segments=lefthalf"
+       --set "Problem/Obstacle=-0.1" ${decks}/good.xml
+  REGEX "Problem: a boundary edge belongs to both a contact segment and a Dirichlet segment that fixes the constrained component")
+signorini_add_driver_test(contact_and_neumann_same_segment EXIT 1
+  ARGS --output-dir {OUT} --set "Problem/Neumann Segments=contact" ${decks}/good.xml
+  REGEX "Problem/Contact Segments and Problem/Neumann Segments name the same segment")
+signorini_add_driver_test(contact_and_neumann_other_name EXIT 1
+  ARGS --output-dir {OUT} --set "Mesh/Boundary Segments/r2=right" --set "Problem/Neumann Segments=r2" ${decks}/good.xml
+  REGEX "Problem: a boundary edge belongs to both a contact segment and a Neumann segment")
+signorini_add_driver_test(contact_segments_without_obstacle EXIT 0
+  ARGS --check --output-dir {OUT} --set "Problem/Obstacle=" ${decks}/good.xml
+  REGEX "warning: .*Problem/Contact Segments without Problem/Obstacle: no contact\n")
+# The KKT tolerance is absolute: the paper's membrane scaled down by 1e10 is warned about before it
+# runs. Its largest initial mean gap is on the segments [0, 0.5] and [0.5, 1] of x = 1 (4 x 4 cells,
+# H = 2h): (1.05 - 2/pi) 1e-10 = 4.13e-11, against a tolerance of 1e-9 sqrt(2) = 1.41e-9.
+signorini_add_driver_test(contact_gaps_near_tolerance EXIT 0
+  ARGS --check --output-dir {OUT} --set "Problem/Initial Velocity=-1e-10*sin(pi*x/2)"
+       --set "Problem/Obstacle=1e-10*(sin(pi*y) - 1.05)" ${decks}/good.xml
+  REGEX "warning: .*the largest initial gap, 4[.]13e-11, is within 1000 times the contact tolerance 1[.]41e-09 .*lower Contact/KKT Tolerance\n")
+# A QP that fails names the step, the iteration history and both of its tests (the KKT conditions and
+# the gap on the active set).
+signorini_add_driver_test(contact_qp_failure_history EXIT 1
+  ARGS --output-dir {OUT} --set "Mesh/Refinement Level=2" --set "Problem/Obstacle=0.1*sin(7*pi*y)-0.15"
+       --set "Problem/Initial Velocity=-3*sin(pi*x/2)" --set "Time Integration/Final Time=0.3"
+       --set "Contact/Maximum Active Set Iterations=1" --set "Contact/Newton Step Solver=CG" ${decks}/good.xml
+  REGEX "solver failure: step [0-9]+ [(]t = [^)]*[)]: contact QP: the active set method did not satisfy the KKT conditions within Contact/Maximum Active Set Iterations = 1"
+        "iteration 1: [0-9]+ active [(][0-9]+ changed[)], [0-9]+ CG iterations, largest KKT violation [^ ]+ [(]tolerance [^)]+[)], largest gap on the active set [^ ]+ [(]tolerance [^)]+[)]\n")
+# H = h on a contact boundary (3 edges, the top) whose both ends are Dirichlet nodes: 3 segments on
+# 2 free nodes, Q singular. The multipliers diverged while the updated gaps claimed contact (energy
+# 7e33, exit 0); now the QP checks the gaps of u and fails, naming the step. H = 2h is the control.
+set(singular_contact --set "Mesh/Cells X=3" --set "Mesh/Cells Y=8" --set "Mesh/Boundary Segments/top=top"
+    --set "Problem/Dirichlet Segments=clamped, contact" --set "Problem/Contact Segments=top" --set "Problem/Initial Velocity=0"
+    --set "Problem/Obstacle=5*t-0.01" --set "Time Integration/Time Step=0.01" --set "Time Integration/Final Time=0.2")
+signorini_add_driver_test(contact_h_singular EXIT 1
+  ARGS --output-dir {OUT} ${singular_contact} --set "Contact/Multiplier Segments=H = h" ${decks}/good.xml
+  REGEX "solver failure: step [0-9]+ [(]t = [^)]*[)]: contact QP: the multipliers diverged .*Q_AA is singular.*use H = 2h")
+signorini_add_driver_test(contact_2h_control EXIT 0
+  ARGS --output-dir {OUT} ${singular_contact} --set "Contact/Multiplier Segments=H = 2h" ${decks}/good.xml
+  REGEX "good[.]xml done: 20 steps"
+  FILES good.steps.csv good.e)
 signorini_add_driver_test(muelu_sublist_unknown_key EXIT 1
   ARGS --check --output-dir {OUT} --set "Linear Solver/Preconditioner=MueLu" --set "Linear Solver/MueLu/bogus key=1"
        ${decks}/good.xml
