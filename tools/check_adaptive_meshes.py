@@ -27,6 +27,9 @@ import sys
 import netCDF4
 import numpy as np
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from exodus_text import names as exodus_names  # noqa: E402
+
 parser = argparse.ArgumentParser()
 parser.add_argument("base")
 parser.add_argument("--every", type=int, default=1, help="keep only every N-th written mesh")
@@ -51,7 +54,7 @@ def element_variable(d, name):
     """The element variable `name` at the file's first time (block 1), or None."""
     if "name_elem_var" not in d.variables:
         return None
-    names = [b"".join(n).decode().strip("\x00").strip() for n in d["name_elem_var"][:].data]
+    names = exodus_names(d["name_elem_var"])
     return d[f"vals_elem_var{names.index(name) + 1}eb1"][0] if name in names else None
 
 

@@ -22,10 +22,14 @@ Usage: check_first_contact.py BASE [INITIAL_LEVEL] (the run's output base, e.g. 
 level of the initial mesh's cells, 0 unless the deck sets Mesh/Refinement Level)"""
 import glob
 import math
+import os
 import sys
 
 import netCDF4
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from exodus_text import names as exodus_names  # noqa: E402
 
 base = sys.argv[1]
 initial = int(sys.argv[2]) if len(sys.argv) > 2 else 0
@@ -60,10 +64,6 @@ else:
         failures.append(f"control: cycle 0 finds the contact in step {found0}, expected later than {expected}")
 
 
-def text(chars):
-    return b"".join(chars).decode().strip("\x00").strip()
-
-
 def written_steps():
     """(time, file, index in the file) of every written step of the last cycle's series."""
     files = sorted(glob.glob(base + ".e") + glob.glob(base + ".e-s.*"),
@@ -78,9 +78,9 @@ def written_steps():
 def gamma_c_cells(f, i):
     """Levels of the mesh, and (y-range, level, lambda) of the cells along the side set, sorted in y."""
     with netCDF4.Dataset(f) as d:
-        names = [text(n) for n in d["name_elem_var"][:].data]
+        names = exodus_names(d["name_elem_var"])
         level = np.asarray(d[f"vals_elem_var{names.index('level') + 1}eb1"][i])
-        side_names = [text(n) for n in d["name_sset_var"][:].data]
+        side_names = exodus_names(d["name_sset_var"])
         lam = np.asarray(d[f"vals_sset_var{side_names.index('lambda') + 1}ss1"][i])
         y = np.asarray(d["coordy"][:])
         conn = np.asarray(d["connect1"][:]) - 1

@@ -4,10 +4,14 @@ obstacle, in the written Exodus series of a membrane run from t = 0.0375 to one 
 first contact (first step with active > 0 in <base>.steps.csv); the step mesh's finest level for
 comparison. Usage: contact_zone_levels.py OUT/BASENAME (e.g. out/membrane)"""
 import glob
+import os
 import sys
 
 import netCDF4
 import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from exodus_text import names as exodus_names  # noqa: E402
 
 base=sys.argv[1]
 steps=np.genfromtxt(base+'.steps.csv',delimiter=',',names=True)
@@ -19,7 +23,7 @@ for f in files:
     t=d['time_whole'][:]
     x=d['coordx'][:]; y=d['coordy'][:]
     conn=d['connect1'][:]-1
-    names=[b''.join(n).decode().strip('\x00').strip() for n in d['name_elem_var'][:]] if 'name_elem_var' in d.variables else []
+    names=exodus_names(d['name_elem_var']) if 'name_elem_var' in d.variables else []
     li=names.index('level')
     for k,tt in enumerate(t):
         if tt>first+0.0126: d.close(); sys.exit()

@@ -9,16 +9,20 @@ character may be cut between two). The deck names the output folder and basename
 it again with --output-dir or another Output/Basename, or it replaces the results it came from.
 Uses Debian's python3 with netCDF4.
 """
+import os
 import sys
 
 import netCDF4
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from exodus_text import record_bytes  # noqa: E402
 
 
 def info_lines(path):
     with netCDF4.Dataset(path) as d:
         if "info_records" not in d.variables:
             return []
-        records = [b"".join(c for c in row if c) for row in d.variables["info_records"][:]]
+        records = [record_bytes(row) for row in d.variables["info_records"][:]]
     lines, pending = [], b""
     for r in records:  # joined as bytes, decoded whole
         if r.endswith(b"\\"):

@@ -25,6 +25,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import netCDF4  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from exodus_text import names as exodus_names  # noqa: E402
+
 
 class InputError(Exception):
     """A missing or unusable input: reported in one line before any plot is written."""
@@ -89,7 +92,7 @@ def exodus_frames(base):
 
 
 def names(var):
-    return ["".join(c.decode() for c in row if c) for row in var[:]]
+    return exodus_names(var)
 
 
 def plot_eta(adaptive, uniform, more, out):

@@ -158,8 +158,8 @@ void checkAdaptivitySettings(const core::ParameterList& deck, const std::string&
     SIGNORINI_USER_ERROR("Adaptivity/Refinement Fraction = 0 refines no cell with Strategy = " << strategy
                                                                                             << ": every cycle would repeat the first");
   if (strategy == "fixed fraction" && fraction + coarsen > 1)
-    SIGNORINI_USER_ERROR("Adaptivity/Coarsening Fraction = " << coarsen << " with Refinement Fraction = " << fraction
-                                                              << ": together more than all cells");
+    SIGNORINI_USER_ERROR("Adaptivity/Coarsening Fraction = " << core::shortestText(coarsen) << " with Refinement Fraction = "
+                                                              << core::shortestText(fraction) << ": together more than all cells");
 }
 
 }  // namespace

@@ -74,7 +74,9 @@ double tieWidth(const std::vector<double>& v, double tieTolerance, MPI_Comm comm
 std::vector<char> flagFrom(const std::vector<double>& v, uint64_t t, double width) {
   const uint64_t lowest = key(std::max(0.0, fromKey(t) - width));
   std::vector<char> flags(v.size(), 0);
-  for (size_t i = 0; i < v.size(); ++i) flags[i] = key(v[i]) >= lowest;
+  // A cell whose indicator is 0 has nothing to refine: a step without error (nothing moves yet)
+  // would otherwise tie every cell at the threshold 0.
+  for (size_t i = 0; i < v.size(); ++i) flags[i] = v[i] > 0 && key(v[i]) >= lowest;
   return flags;
 }
 

@@ -20,7 +20,8 @@ namespace signorini::adapt {
 long long cellsOfFraction(double fraction, long long cells, bool roundUp);
 
 /// Flags the cells with the largest indicators: at least ceil(fraction * N) cells of the N cells
-/// of all ranks (more only when indicators tie with the threshold). The paper's strategy (50%).
+/// of all ranks (more only when indicators tie with the threshold), but never a cell whose
+/// indicator is 0 (a step without error refines nothing). The paper's strategy (50%).
 std::vector<char> markFixedFraction(const std::vector<double>& indicators, double fraction, double tieTolerance,
                                     MPI_Comm comm);
 

@@ -1,6 +1,7 @@
 #include "ParameterTools.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -119,7 +120,10 @@ void validateRecursive(ParameterList& deck, const ParameterList& valid, const st
         v->validate(deck.getEntry(key), key, path);
       } catch (std::exception&) {
         std::ostringstream value;
-        value << deck.getEntry(key).getAny();
+        if (deck.getEntry(key).getAny().type() == typeid(double))
+          value << shortestText(Teuchos::any_cast<double>(deck.getEntry(key).getAny()));
+        else
+          value << deck.getEntry(key).getAny();
         SIGNORINI_USER_ERROR(context << ": '" << full << "' = " << value.str() << " is not allowed; it must be "
                                      << describeValidator(ventry));
       }
@@ -320,6 +324,11 @@ NumberText readDouble(const std::string& text, double& value) {
   if (end == text.c_str() || !onlyBlanks(end)) return NumberText::notANumber;
   value = read;
   return NumberText::valid;
+}
+
+std::string shortestText(double value) {
+  char text[32];
+  return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);
 }
 
 NumberText readInt(const std::string& text, int& value) {

@@ -52,6 +52,8 @@ enum class NumberText { valid, notANumber, outOfRange };
 /// \p value is set when the text is valid. A double never counts as out of range (1e999 reads as inf).
 NumberText readDouble(const std::string& text, double& value);
 NumberText readInt(const std::string& text, int& value);
+/// The shortest text that reads back to \p value (1.0000000001, not 1): for messages that quote a value.
+std::string shortestText(double value);
 
 /// \p deck as an XML deck that reads back to the same values (doubles with 17 significant digits),
 /// without Teuchos' ids, doc strings and validators: for the records of the output files.

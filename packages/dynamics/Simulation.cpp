@@ -650,6 +650,16 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   if (basename.empty() && isFileDescriptorPath(deckPath))
     SIGNORINI_USER_ERROR("a deck read through a file descriptor (a pipe or a process substitution) gives no "
                          "name for the outputs; set Output/Basename");
+  {  // "<name>.cycle<l>" is the pattern of an adaptive run's cycle files: a run under <name> would retire them
+    const auto dot = I.basename.rfind(".cycle");
+    const std::string tail = dot == std::string::npos ? "" : I.basename.substr(dot + 6);
+    if (dot != std::string::npos && dot > 0 && !tail.empty() && tail.find_first_not_of("0123456789") == std::string::npos)
+      SIGNORINI_USER_ERROR((basename.empty() ? "the deck's file name gives the output basename '"
+                                             : "Output/Basename '")
+                           << I.basename << "', which ends like the cycle files of a run under the basename '"
+                           << I.basename.substr(0, dot) << "' (<basename>.cycle<l>.*): such a run would replace "
+                                                          "its results; choose another basename");
+  }
   I.outputBase = I.outDir + "/" + I.basename;
   I.outDirKey = outputDir.empty() ? "Output/Directory" : "--output-dir";
   ensureWritableDirectory(I.outDir, I.outDirKey, *comm, false);

@@ -41,9 +41,13 @@ TEST(Marking, FixedFractionMarksTheLargestFractionOfCells) {
   const auto mine = localPart(all, comm->getRank(), comm->getSize(), offset);
   for (double fraction : {0.0, 0.1, 0.5, 1.0}) {
     const auto flags = gather(adapt::markFixedFraction(mine, fraction, 0.0, raw), raw);
-    const long long wanted = static_cast<long long>(std::ceil(fraction * all.size()));
+    // ceil(f N) cells, but none whose indicator is 0 (two here)
+    const long long positive = std::count_if(all.begin(), all.end(), [](double x) { return x > 0; });
+    const long long wanted = std::min(static_cast<long long>(std::ceil(fraction * all.size())), positive);
     const long long marked = std::count(flags.begin(), flags.end(), 1);
     EXPECT_GE(marked, wanted);
+    for (size_t i = 0; i < all.size(); ++i)
+      if (all[i] == 0) EXPECT_FALSE(flags[i]) << "cell " << i << " has nothing to refine";
     double minMarked = 1e300, maxUnmarked = -1;
     for (size_t i = 0; i < all.size(); ++i)
       (flags[i] ? minMarked = std::min(minMarked, all[i]) : maxUnmarked = std::max(maxUnmarked, all[i]));
@@ -53,6 +57,24 @@ TEST(Marking, FixedFractionMarksTheLargestFractionOfCells) {
       EXPECT_LE(marked - wanted, atThreshold - 1);
     }
   }
+}
+
+TEST(Marking, AStepWithoutErrorRefinesNothing) {
+  // Every indicator 0 (nothing moves yet): the threshold is 0 and every cell would tie with it.
+  auto comm = Tpetra::getDefaultComm();
+  MPI_Comm raw = core::rawMpiComm(*comm);
+  const std::vector<double> zeros(10, 0.0);
+  for (double tie : {0.0, 0.01}) {
+    const auto fixed = gather(adapt::markFixedFraction(zeros, 0.5, tie, raw), raw);
+    EXPECT_EQ(std::count(fixed.begin(), fixed.end(), 1), 0) << "tie tolerance " << tie;
+    const auto bulk = gather(adapt::markBulk(zeros, 0.5, tie, raw), raw);
+    EXPECT_EQ(std::count(bulk.begin(), bulk.end(), 1), 0) << "tie tolerance " << tie;
+  }
+  // One cell with error in a step: it alone, although 50% asks for more.
+  std::vector<double> one(10, 0.0);
+  if (comm->getRank() == 0) one[3] = 1.0;
+  const auto flags = gather(adapt::markFixedFraction(one, 0.5, 0.01, raw), raw);
+  EXPECT_EQ(std::count(flags.begin(), flags.end(), 1), 1);
 }
 
 TEST(Marking, BulkMarksTheFewestLargestCellsReachingTheFraction) {

@@ -418,6 +418,19 @@ signorini_add_driver_test(poisson_ratio_bound_digits EXIT 1
   ARGS --output-dir {OUT} --set "Problem/Poisson's Ratio=0.5" ${decks}/good.xml
   REGEX "'Problem/Poisson's Ratio' = 0[.]5 is not allowed; it must be in [[]0, 0[.]4999999[]]")
 
+# A value just out of range is quoted with every digit it needs (it was rounded to "1", which the
+# range [0, 1] allows).
+signorini_add_driver_test(out_of_range_value_quoted_exactly EXIT 1
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=fixed fraction" --set "Adaptivity/Refinement Fraction=1.0000000001"
+       ${decks}/good.xml
+  REGEX "'Adaptivity/Refinement Fraction' = 1[.]0000000001 is not allowed; it must be in [[]0, 1[]]")
+# A basename like an adaptive run's cycle files ("x.cycle7") would be retired by a run under "x".
+signorini_add_driver_test(basename_like_cycle_files EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Basename=x.cycle7" ${decks}/good.xml
+  REGEX "Output/Basename 'x[.]cycle7', which ends like the cycle files of a run under the basename 'x'")
+signorini_add_driver_test(basename_cycle_without_number EXIT 0
+  ARGS --check --output-dir {OUT} --set "Output/Basename=x.cycle" ${decks}/good.xml
+  REGEX "is valid")
 # --check: a valid deck is set up and described, nothing is written; a bad deck fails as a run would.
 signorini_add_driver_test(check_valid_deck EXIT 0
   ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=bulk" --set "Adaptivity/Cycles=3" ${decks}/good.xml
