@@ -1,5 +1,6 @@
 #pragma once
 /// Helpers shared by the tests: small meshes, with and without hanging nodes.
+#include <cmath>
 #include <memory>
 
 #include <Tpetra_Core.hpp>
@@ -68,6 +69,18 @@ struct TestMesh {
     refineAt(*forest, 0.4, 0.6, 4);
     refineAt(*forest, 0.999, 0.001, 3);
     forest->balance();
+  }
+  /// Refines the cells whose centre lies within \p radius of (px, py), then balances; \p passes times.
+  void refineWithin(double px, double py, double radius, int passes) {
+    for (int pass = 0; pass < passes; ++pass) {
+      forest->refineIf([&](int tree, const p4est_quadrant_t& q) {
+        const double len = static_cast<double>(P4EST_QUADRANT_LEN(q.level)) / P4EST_ROOT_LEN;
+        const auto c = coarse->mapPoint(tree, q.x / static_cast<double>(P4EST_ROOT_LEN) + 0.5 * len,
+                                        q.y / static_cast<double>(P4EST_ROOT_LEN) + 0.5 * len);
+        return std::hypot(c[0] - px, c[1] - py) < radius;
+      });
+      forest->balance();
+    }
   }
   const mesh::Q1Mesh& build() {
     mesh = std::make_unique<mesh::Q1Mesh>(*forest, *segments, comm);

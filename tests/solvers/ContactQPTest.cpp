@@ -156,17 +156,8 @@ TEST(ContactCoupling, TreesOfOneCellPairLikeTheRectanglesTrees) {
   ASSERT_EQ(rectangle.coarse->numTrees(), 4);
   ASSERT_EQ(cells.coarse->numTrees(), 16);
   auto segmentsOf = [](test::TestMesh& tm) {
-    for (const auto& [px, passes] : {std::pair<double, int>{2.3, 3}, {4.6, 1}})
-      for (int pass = 0; pass < passes; ++pass) {
-        const auto& coarse = *tm.coarse;
-        tm.forest->refineIf([&, px = px](int tree, const p4est_quadrant_t& q) {
-          const double len = static_cast<double>(P4EST_QUADRANT_LEN(q.level)) / P4EST_ROOT_LEN;
-          const auto c = coarse.mapPoint(tree, q.x / static_cast<double>(P4EST_ROOT_LEN) + 0.5 * len,
-                                         q.y / static_cast<double>(P4EST_ROOT_LEN) + 0.5 * len);
-          return std::hypot(c[0] - px, c[1]) < 0.8;
-        });
-        tm.forest->balance();
-      }
+    tm.refineWithin(2.3, 0.0, 0.8, 3);
+    tm.refineWithin(4.6, 0.0, 0.8, 1);
     tm.forest->partition();
     const auto& m = tm.build();
     fem::ContactCoupling B(m, kBottom, fem::ContactCoupling::SegmentSize::TwoEdges,
@@ -216,15 +207,7 @@ TEST(ContactCoupling, HoleBoundaryPairsTheSameOnAnyRanks) {
   using Segments = std::set<std::array<long long, 3>>;  // midpoint and length in units of 1/64
   auto segmentsOf = [&](RCP<const Comm> comm, int passes) {
     test::TestMesh tm(coarse, specs, 0, comm);
-    for (int pass = 0; pass < passes; ++pass) {
-      tm.forest->refineIf([&](int tree, const p4est_quadrant_t& q) {
-        const double len = static_cast<double>(P4EST_QUADRANT_LEN(q.level)) / P4EST_ROOT_LEN;
-        const auto c = coarse->mapPoint(tree, q.x / static_cast<double>(P4EST_ROOT_LEN) + 0.5 * len,
-                                        q.y / static_cast<double>(P4EST_ROOT_LEN) + 0.5 * len);
-        return std::hypot(c[0] - 1.3, c[1] - 0.8) < 0.6;
-      });
-      tm.forest->balance();
-    }
+    tm.refineWithin(1.3, 0.8, 0.6, passes);
     tm.forest->partition();
     const auto& m = tm.build();
     fem::ContactCoupling B(m, kHole, fem::ContactCoupling::SegmentSize::TwoEdges,
