@@ -586,6 +586,9 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   if (!I.problem->hasObstacle && I.problem->contactMask != 0 && comm->getRank() == 0)
     std::cerr << "signorini: warning: " << deckPath << ": Problem/Contact Segments without Problem/Obstacle: no contact"
               << std::endl;
+  if (const auto keys = solvers::ContactQP::keysSet(deck.sublist("Contact"));
+      !I.problem->hasObstacle && !keys.empty() && comm->getRank() == 0)
+    std::cerr << "signorini: warning: " << deckPath << ": no Problem/Obstacle; without effect: " << keys << std::endl;
   if (I.problem->hasObstacle) {
     const std::string contactWarning = solvers::ContactQP::checkParameters(deck.sublist("Contact"));
     if (!contactWarning.empty() && comm->getRank() == 0)

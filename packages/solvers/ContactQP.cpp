@@ -101,6 +101,16 @@ std::string ContactQP::checkParameters(const core::ParameterList& params) {
   return unused.empty() ? "" : "Contact/Schur Preconditioner = " + preconditioner + "; without effect: " + unused;
 }
 
+std::string ContactQP::keysSet(const core::ParameterList& params) {
+  const auto defaults = getValidParameters();
+  std::string keys;
+  for (auto it = params.begin(); it != params.end(); ++it)
+    if (defaults.isParameter(params.name(it)) &&
+        !(params.entry(it).getAny() == defaults.getEntry(params.name(it)).getAny()))
+      keys += (keys.empty() ? "" : ", ") + std::string("Contact/") + params.name(it);
+  return keys;
+}
+
 ContactQP::ContactQP(const core::ParameterList& params, double lengthScale)
     : params_(params),
       gapTol_(params.get<double>("KKT Tolerance") * lengthScale),

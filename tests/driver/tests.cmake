@@ -547,6 +547,10 @@ signorini_add_driver_test(contact_and_neumann_other_name EXIT 1
 signorini_add_driver_test(contact_segments_without_obstacle EXIT 0
   ARGS --check --output-dir {OUT} --set "Problem/Obstacle=" ${decks}/good.xml
   REGEX "warning: .*Problem/Contact Segments without Problem/Obstacle: no contact\n")
+signorini_add_driver_test(contact_keys_without_obstacle EXIT 0
+  ARGS --check --output-dir {OUT} --set "Problem/Obstacle=" --set "Problem/Contact Segments="
+       --set "Contact/Strip Width=3" --set "Contact/Multiplier Segments=H = h" ${decks}/good.xml
+  REGEX "warning: .*no Problem/Obstacle; without effect: Contact/(Multiplier Segments, Contact/Strip Width|Strip Width, Contact/Multiplier Segments)\n")
 # The KKT tolerance is absolute: the paper's membrane scaled down by 1e10 is warned about before it
 # runs. Its largest initial mean gap is on the segments [0, 0.5] and [0.5, 1] of x = 1 (4 x 4 cells,
 # H = 2h): (1.05 - 2/pi) 1e-10 = 4.13e-11, against a tolerance of 1e-9 sqrt(2) = 1.41e-9.
