@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <iomanip>
 #include <iostream>
 #include <set>
@@ -108,16 +109,10 @@ namespace {
 
 /// The keys of the deck's \p sublist that it sets to other than their defaults, among those
 /// \p withoutEffect accepts, as "Sublist/key, Sublist/key2".
-template <class Filter>
-std::string keysSetWithoutEffect(const core::ParameterList& deck, const std::string& sublist, Filter withoutEffect) {
-  // Compared with the defaults (Teuchos' isDefault flag is not set when validation adds the whole sublist).
-  const auto defaults = AdaptiveSimulation::getValidParameters().sublist(sublist);
-  const auto& a = deck.sublist(sublist);
-  std::string keys;
-  for (auto it = a.begin(); it != a.end(); ++it)
-    if (withoutEffect(a.name(it)) && !(a.entry(it).getAny() == defaults.getEntry(a.name(it)).getAny()))
-      keys += (keys.empty() ? "" : ", ") + sublist + "/" + a.name(it);
-  return keys;
+std::string keysSetWithoutEffect(const core::ParameterList& deck, const std::string& sublist,
+                                 const std::function<bool(const std::string&)>& withoutEffect) {
+  return core::keysSetOtherThanDefaults(deck.sublist(sublist), AdaptiveSimulation::getValidParameters().sublist(sublist),
+                                        sublist, withoutEffect);
 }
 
 /// Settings that are valid one by one but cannot work together: user errors naming the keys. With
@@ -184,6 +179,17 @@ AdaptiveSimulation::~AdaptiveSimulation() = default;
 
 const std::string& AdaptiveSimulation::outputBase() const { return sim_->outputBase(); }
 
+template <class Pass>
+dynamics::RunSummary AdaptiveSimulation::locatingFailures(int cycle, Pass pass) const {
+  try {
+    return pass();
+  } catch (const core::SolverError& e) {
+    throw core::SolverError(whereInRun(cycle) + e.what());
+  } catch (const core::UserError& e) {
+    throw core::UserError(whereInRun(cycle) + e.what());
+  }
+}
+
 std::string AdaptiveSimulation::whereInRun(int cycle) const {
   const int n = sim_->currentStep();
   std::ostringstream os;
@@ -235,15 +241,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   if (deck_.sublist("Parallel").get<bool>("Reproducible Arithmetic"))
     core::rootOut(sim_->comm()->getRank())
         << "signorini: reproducible arithmetic: the same bits on any number of ranks (slower)" << std::endl;
-  if (strategy == "none") {
-    try {
-      return sim_->run();
-    } catch (const core::SolverError& e) {
-      throw core::SolverError(whereInRun(0) + e.what());
-    } catch (const core::UserError& e) {
-      throw core::UserError(whereInRun(0) + e.what());
-    }
-  }
+  if (strategy == "none") return locatingFailures(0, [&] { return sim_->run(); });
 
   const auto comm = sim_->comm();
   const int rank = comm->getRank();
@@ -404,13 +402,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       options.interpolateTransfer = ap.get<std::string>("Transfer") == "interpolation";
       options.reportTransferEnergy = ap.get<bool>("Report Transfer Energy");
       options.compactMeshes = compactMeshes;
-      try {  // a failure names the cycle and the step it happened in
-        last = sim_->runPass(meshes, hook, options);
-      } catch (const core::SolverError& e) {
-        throw core::SolverError(whereInRun(l) + e.what());
-      } catch (const core::UserError& e) {
-        throw core::UserError(whereInRun(l) + e.what());
-      }
+      last = locatingFailures(l, [&] { return sim_->runPass(meshes, hook, options); });
       for (const auto& [phase, seconds] : last.phaseSeconds) phaseSeconds[phase] += seconds;
       // Memory of the stored meshes of this cycle (steps with equal meshes share one forest).
       std::set<const mesh::Forest*> unique;

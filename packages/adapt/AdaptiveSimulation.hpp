@@ -44,6 +44,9 @@ class AdaptiveSimulation {
  private:
   /// "cycle l, step n (t = ...): " (no cycle without adaptivity), the start of a failure's message.
   std::string whereInRun(int cycle) const;
+  /// pass() (a pass of cycle \p cycle), its solver and user errors prefixed with whereInRun().
+  template <class Pass>
+  dynamics::RunSummary locatingFailures(int cycle, Pass pass) const;
 
   core::ParameterList deck_;
   std::unique_ptr<dynamics::Simulation> sim_;

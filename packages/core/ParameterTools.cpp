@@ -326,6 +326,18 @@ NumberText readDouble(const std::string& text, double& value) {
   return NumberText::valid;
 }
 
+std::string keysSetOtherThanDefaults(const ParameterList& list, const ParameterList& defaults, const std::string& path,
+                                     const std::function<bool(const std::string&)>& filter) {
+  std::string keys;
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const std::string& name = list.name(it);
+    if ((!filter || filter(name)) && defaults.isParameter(name) &&
+        !(list.entry(it).getAny() == defaults.getEntry(name).getAny()))
+      keys += (keys.empty() ? "" : ", ") + path + "/" + name;
+  }
+  return keys;
+}
+
 std::string shortestText(double value) {
   char text[32];
   return std::string(text, std::to_chars(text, text + sizeof text, value).ptr);

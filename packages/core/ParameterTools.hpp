@@ -2,6 +2,7 @@
 /// \file ParameterTools.hpp
 /// Building and enforcing validated Teuchos::ParameterLists (DESIGN section 4): every entry has
 /// a default, a doc string and a validator; unknown keys are errors that suggest the closest name.
+#include <functional>
 #include <limits>
 #include <ostream>
 #include <string>
@@ -52,6 +53,11 @@ enum class NumberText { valid, notANumber, outOfRange };
 /// \p value is set when the text is valid. A double never counts as out of range (1e999 reads as inf).
 NumberText readDouble(const std::string& text, double& value);
 NumberText readInt(const std::string& text, int& value);
+/// The keys of the validated list \p list that it sets to other than their values in \p defaults,
+/// among those \p filter accepts (all when empty), as "<path>/key, <path>/key2" (empty if none).
+/// Compared by value: Teuchos' isDefault flag is not set when validation adds a whole sublist.
+std::string keysSetOtherThanDefaults(const ParameterList& list, const ParameterList& defaults, const std::string& path,
+                                     const std::function<bool(const std::string&)>& filter = {});
 /// The shortest text that reads back to \p value (1.0000000001, not 1): for messages that quote a value.
 std::string shortestText(double value);
 

@@ -413,37 +413,23 @@ struct Simulation::Impl {
     massSolver(d).solve(rhs, a);
   }
 
-  /// Throws a user error if u penetrates the obstacle at t = 0.
-  void checkInitialGap(Discretisation& d, const Vector& u) {
-    if (!d.coupling) return;
+  /// Throws a user error if u penetrates the obstacle at t = 0; returns the largest mean gap (0
+  /// without contact).
+  double checkInitialGap(Discretisation& d, const Vector& u) {
+    if (!d.coupling) return 0.0;
     auto gap = d.coupling->applyTranspose(u);
     const auto gbar = d.coupling->weightedObstacle(problem->obstacle, 0.0);
     const auto& len = d.coupling->segmentLength();
-    for (int j = 0; j < d.coupling->numSegments(); ++j)
+    double largest = 0;
+    for (int j = 0; j < d.coupling->numSegments(); ++j) {
       if ((gap[j] - gbar[j]) / len[j] < -d.qp->gapTolerance()) {
         const auto& mp = d.coupling->segmentMidpoint()[j];
         SIGNORINI_USER_ERROR("Problem/Initial Displacement penetrates the obstacle at t = 0: the mean gap on the contact "
                              "segment at (" << mp[0] << ", " << mp[1] << ") is " << (gap[j] - gbar[j]) / len[j]);
       }
-  }
-
-  /// The KKT tolerance is absolute (Contact/KKT Tolerance times the domain diameter): a warning when
-  /// even the largest initial gap is within 1000 tolerances, so that the contact would be resolved to
-  /// fewer than three digits (a problem whose motion is tiny against the domain).
-  void warnIfGapsNearTolerance(Discretisation& d, const Vector& u, const std::string& deckPath) const {
-    if (!d.coupling || d.coupling->numSegments() == 0) return;
-    const auto gap = d.coupling->applyTranspose(u);
-    const auto gbar = d.coupling->weightedObstacle(problem->obstacle, 0.0);
-    double largest = 0;
-    for (int j = 0; j < d.coupling->numSegments(); ++j)
-      largest = std::max(largest, (gap[j] - gbar[j]) / d.coupling->segmentLength()[j]);
-    const double tol = d.qp->gapTolerance();
-    if (largest > 0 && largest < 1000 * tol && comm->getRank() == 0)
-      std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": the largest initial gap, " << largest
-                << ", is within 1000 times the contact tolerance " << tol
-                << " (Contact/KKT Tolerance times the domain diameter): the contact is resolved to fewer than "
-                   "three digits; lower Contact/KKT Tolerance"
-                << std::endl;
+      largest = std::max(largest, (gap[j] - gbar[j]) / len[j]);
+    }
+    return largest;
   }
 
   /// Kinetic energy 1/2 v^T M v and strain energy 1/2 u^T K u.
@@ -586,7 +572,8 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   if (!I.problem->hasObstacle && I.problem->contactMask != 0 && comm->getRank() == 0)
     std::cerr << "signorini: warning: " << deckPath << ": Problem/Contact Segments without Problem/Obstacle: no contact"
               << std::endl;
-  if (const auto keys = solvers::ContactQP::keysSet(deck.sublist("Contact"));
+  if (const auto keys = core::keysSetOtherThanDefaults(deck.sublist("Contact"), solvers::ContactQP::getValidParameters(),
+                                                       "Contact");
       !I.problem->hasObstacle && !keys.empty() && comm->getRank() == 0)
     std::cerr << "signorini: warning: " << deckPath << ": no Problem/Obstacle; without effect: " << keys << std::endl;
   if (I.problem->hasObstacle) {
@@ -633,8 +620,16 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   {
     Vector u(d->assembler->ownedMap()), v(d->assembler->ownedMap()), a(d->assembler->ownedMap());
     I.initialState(*d, u, v, a);
-    I.checkInitialGap(*d, u);
-    I.warnIfGapsNearTolerance(*d, u, deckPath);
+    // The KKT tolerance is absolute (Contact/KKT Tolerance times the domain diameter): a warning when
+    // even the largest initial gap is within 1000 tolerances, so that the contact would be resolved
+    // to fewer than three digits (a problem whose motion is tiny against the domain).
+    const double largest = I.checkInitialGap(*d, u);
+    if (d->qp && largest > 0 && largest < 1000 * d->qp->gapTolerance() && comm->getRank() == 0)
+      std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": the largest initial gap, " << largest
+                << ", is within 1000 times the contact tolerance " << d->qp->gapTolerance()
+                << " (Contact/KKT Tolerance times the domain diameter): the contact is resolved to fewer than "
+                   "three digits; lower Contact/KKT Tolerance"
+                << std::endl;
   }
   I.initialDiscretisation = std::move(d);
   I.outDir = outputDir.empty() ? out.get<std::string>("Directory") : outputDir;

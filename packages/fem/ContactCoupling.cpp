@@ -100,9 +100,9 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
   // segment; a lone edge, whose sibling half is refined further, joins the segment of the edge next
   // to it inside that half (which lies inside the lone edge's parent, too). Unrefined trees pair
   // their faces (below). Edges left without a parent edge in the contact set (a contact boundary
-  // ending inside a parent edge, the middle tree faces of an odd chain) are paired along their chain, from both ends of each run of them toward its middle (a middle of
-  // three edges is one segment; one left over joins the pair before it); a single one joins the
-  // neighbouring segment.
+  // ending inside a parent edge, the middle tree faces of an odd chain) are paired along their
+  // chain, from both ends of each run of them toward its middle (a middle of three edges is one
+  // segment; one left over joins the pair before it); a single one joins the neighbouring segment.
   edgeSegment_.assign(ne, -1);
   auto edgeLength = [&](int e) { return std::hypot(edges_[e][2] - edges_[e][0], edges_[e][3] - edges_[e][1]); };
   using Place = std::array<long long, 4>;  // tree, face, p4est level, index along the face

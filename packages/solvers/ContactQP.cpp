@@ -90,25 +90,13 @@ core::ParameterList ContactQP::getValidParameters() {
 }
 
 std::string ContactQP::checkParameters(const core::ParameterList& params) {
-  const auto defaults = getValidParameters();
-  auto changed = [&](const std::string& key) { return !(params.getEntry(key).getAny() == defaults.getEntry(key).getAny()); };
   const std::string preconditioner = params.get<std::string>("Schur Preconditioner");
-  std::string unused;
-  if (preconditioner != "auto" && preconditioner != "strip + coarse" && changed("Coarse Correction Cells"))
-    unused = "Contact/Coarse Correction Cells";
-  if ((preconditioner == "lumped" || preconditioner == "none") && changed("Strip Width"))
-    unused += (unused.empty() ? "" : ", ") + std::string("Contact/Strip Width");
+  const bool coarse = preconditioner == "auto" || preconditioner == "strip + coarse";
+  const bool strip = coarse || preconditioner == "strip";
+  const std::string unused = core::keysSetOtherThanDefaults(params, getValidParameters(), "Contact", [&](const std::string& k) {
+    return (k == "Coarse Correction Cells" && !coarse) || (k == "Strip Width" && !strip);
+  });
   return unused.empty() ? "" : "Contact/Schur Preconditioner = " + preconditioner + "; without effect: " + unused;
-}
-
-std::string ContactQP::keysSet(const core::ParameterList& params) {
-  const auto defaults = getValidParameters();
-  std::string keys;
-  for (auto it = params.begin(); it != params.end(); ++it)
-    if (defaults.isParameter(params.name(it)) &&
-        !(params.entry(it).getAny() == defaults.getEntry(params.name(it)).getAny()))
-      keys += (keys.empty() ? "" : ", ") + std::string("Contact/") + params.name(it);
-  return keys;
 }
 
 ContactQP::ContactQP(const core::ParameterList& params, double lengthScale)

@@ -40,9 +40,6 @@ class ContactQP {
   /// chosen Schur preconditioner does not use ("Coarse Correction Cells" without the coarse
   /// correction, "Strip Width" without the strip).
   static std::string checkParameters(const core::ParameterList& params);
-  /// The keys of the validated "Contact" sublist \p params set to other than their defaults, as
-  /// "Contact/key, Contact/key2" (empty if none): without an obstacle none has an effect.
-  static std::string keysSet(const core::ParameterList& params);
   /// \param params validated "Contact" sublist; \p lengthScale (the domain diameter) makes the
   /// KKT tolerance an absolute gap tolerance [length].
   ContactQP(const core::ParameterList& params, double lengthScale);
