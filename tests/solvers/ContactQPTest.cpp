@@ -435,6 +435,55 @@ TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
   if (obstacleHeight > -1) EXPECT_EQ(activeRef, ns);
 }
 
+// Whatever the KKT tolerance, down to the smallest allowed, a result that is returned satisfies the
+// KKT conditions to that tolerance (checked on u = A^{-1}(F - B lambda) solved here to rounding); a
+// tolerance below what rounding allows is a SolverError, on either Newton step solver.
+TEST(ContactQP, ReturnsOnlyResultsWithinItsTolerance) {
+  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 1, 1, 3);
+  const auto& m = tm.build();
+  const auto dir = m.nodesOnSegments(kLeft);
+  fem::Q1Assembler asmb(m, dir);
+  const double k = 0.05;
+  auto A = asmb.assembleOperator(1.0, 0.5 * k * k, 1.0, 1.0);
+  fem::ContactCoupling B(m, kRight, fem::ContactCoupling::SegmentSize::TwoEdges, dir);
+  const int ns = B.numSegments();
+  core::ParameterList linear;
+  linear.set("Relative Tolerance", 1e-15);
+  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters(), linear), m.comm());
+  solver.setOperator(A, 1.0);
+  Vector F(m.ownedMap());
+  asmb.assembleLoad(core::Expression("-x*(1 + y)", "test"), 0.0, 1.0, F);
+  const auto gbar = B.weightedObstacle(core::Expression("-1.6 + 0.3*y", "test"), 0.0);
+  for (const char* newton : {"CG", "cached columns"})
+    for (double tol : {1e-9, 1e-12, 1e-13, 1e-14}) {
+      core::ParameterList cp;
+      cp.set("KKT Tolerance", tol);
+      cp.set("Newton Step Solver", newton);
+      solvers::ContactQP qp(validated(solvers::ContactQP::getValidParameters(), cp), 1.0);
+      qp.setSystem(*A, B, 1.0, {});
+      for (int pass = 0; pass < 2; ++pass) {  // cached columns serve from the second solve on
+        std::vector<double> lambda(ns, 0.0), G;
+        Vector u(m.ownedMap());
+        try {
+          qp.solve(solver, B, F, gbar, lambda, u, G);
+        } catch (const core::SolverError&) {
+          continue;
+        }
+        Vector rhs(m.ownedMap()), u2(m.ownedMap());
+        rhs.assign(F);
+        B.apply(lambda, rhs, -1.0, true);
+        solver.solve(rhs, u2);
+        const auto G2 = B.applyTranspose(u2);
+        for (int j = 0; j < ns; ++j) {
+          const double gap = (G2[j] - gbar[j]) / B.segmentLength()[j];
+          EXPECT_LE(lambda[j], 0.0) << newton << ", tolerance " << tol << ", segment " << j;
+          EXPECT_GE(gap, -tol) << newton << ", tolerance " << tol << ", segment " << j;
+          if (lambda[j] < 0) EXPECT_LE(std::abs(gap), tol) << newton << ", tolerance " << tol << ", segment " << j;
+        }
+      }
+    }
+}
+
 // Obstacles: far away (no contact), partly touching, pushing everywhere.
 INSTANTIATE_TEST_SUITE_P(Obstacles, ContactQPTest,
                          ::testing::Combine(::testing::Values(-100.0, -1.6, -1.3, -0.5),
