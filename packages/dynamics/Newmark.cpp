@@ -72,8 +72,8 @@ void Newmark::stateFromPredictors(const Vector& predictor, const Vector& velocit
     const double c = k * (0.5 - beta) / (1 - alpha);
     u.update(1.0, predictor, -c, velocityPredictor, 0.0);
     u.update(c - k, v, 1.0);
-  } else {  // a given; the velocity predictor is v itself
-    v.assign(velocityPredictor);
+  } else {  // a given; v = velocityPredictor - (1 - alpha) k a
+    v.update(1.0, velocityPredictor, -(1 - alpha) * k, recovery, 0.0);
     u.update(1.0, predictor, -k, v, 0.0);
     u.update(-(0.5 - beta) * k * k, recovery, 1.0);
   }

@@ -223,7 +223,9 @@ struct Discretisation {
   std::unique_ptr<mesh::Q1Mesh> mesh;
   std::unique_ptr<fem::Assembler> assembler;
   RCP<CrsMatrix> M, K, A;
-  std::unique_ptr<solvers::LinearSolver> solver, massSolver;
+  /// M unlumped, for the L2 projections, when M is lumped at the contact nodes (else M itself)
+  RCP<CrsMatrix> consistentM;
+  std::unique_ptr<solvers::LinearSolver> solver, massSolver, projectionSolver;
   std::unique_ptr<fem::ContactCoupling> coupling;
   std::unique_ptr<solvers::ContactQP> qp;
   std::unique_ptr<solvers::ContactQP> projection;  ///< predictor projection (contact stabilisation)
@@ -267,9 +269,10 @@ struct Simulation::Impl {
                                                       problem->lameLambda, problem->lameMu);
   }
   std::vector<char> lumpedUnknowns(const fem::Assembler& a) const {
-    if (problem->hasObstacle && deck.sublist("Contact").get<std::string>("Boundary Mass") == "lumped")
-      return a.unknownsOnSegments(problem->contactMask);
-    return {};
+    return lumpsMass() ? a.unknownsOnSegments(problem->contactMask) : std::vector<char>{};
+  }
+  bool lumpsMass() const {
+    return problem->hasObstacle && deck.sublist("Contact").get<std::string>("Boundary Mass") == "lumped";
   }
   /// Level of the coarse correction's mesh: the finest uniform one at most at Mesh/Refinement
   /// Level with at most Contact/Coarse Correction Cells cells, else the p4est trees themselves.
@@ -323,7 +326,7 @@ struct Simulation::Impl {
       d->assembler = makeAssembler(*d->mesh);
       const double k = newmark->timeStep;
       const std::vector<char> lump = lumpedUnknowns(*d->assembler);
-      d->lumpedMass = std::find(lump.begin(), lump.end(), 1) != lump.end();
+      d->lumpedMass = lumpsMass();  // the same on every rank, with or without contact nodes
       auto matrices = d->assembler->assembleStepMatrices(newmark->beta * k * k, *problem, lump);
       d->M = matrices.M;
       d->K = matrices.K;
@@ -379,17 +382,31 @@ struct Simulation::Impl {
     return d;
   }
 
-  /// The mass solver of d (Belos CG + Jacobi with the deck's tolerance), set up on first use: an
-  /// adaptive step needs none (the transfer runs its own Jacobi CG).
+  /// Belos CG + Jacobi with the deck's tolerance on the mass matrix \p M.
+  std::unique_ptr<solvers::LinearSolver> massSolverOn(RCP<const CrsMatrix> M) {
+    auto scope = timers.scope("preconditioner");
+    auto massParams = deck.sublist("Linear Solver");
+    massParams.set("Preconditioner", "Jacobi");
+    auto solver = std::make_unique<solvers::LinearSolver>(massParams, comm);
+    solver->setOperator(M, 0.0);
+    return solver;
+  }
+  /// The mass solver of d, set up on first use: an adaptive step needs none (the transfer runs
+  /// its own Jacobi CG).
   solvers::LinearSolver& massSolver(Discretisation& d) {
-    if (!d.massSolver) {
-      auto scope = timers.scope("preconditioner");
-      auto massParams = deck.sublist("Linear Solver");
-      massParams.set("Preconditioner", "Jacobi");
-      d.massSolver = std::make_unique<solvers::LinearSolver>(massParams, comm);
-      d.massSolver->setOperator(d.M, 0.0);
-    }
+    if (!d.massSolver) d.massSolver = massSolverOn(d.M);
     return *d.massSolver;
+  }
+  /// The consistent M_rho of the L2 projections (initial data, I_h between meshes): M itself unless
+  /// Contact/Boundary Mass = lumped, whose M would miss fields that lie in both spaces; then
+  /// assembled once per mesh.
+  RCP<const CrsMatrix> projectionMass(Discretisation& d) {
+    if (!d.lumpedMass) return d.M;
+    if (!d.consistentM) {
+      auto scope = timers.scope("assembly");
+      d.consistentM = d.assembler->assembleSystem(1.0, 0.0, *problem);
+    }
+    return d.consistentM;
   }
 
   /// L2 projection of an expression at t = 0 (M_rho x = int rho f phi).
@@ -397,7 +414,8 @@ struct Simulation::Impl {
     Vector b(d.assembler->ownedMap());
     d.assembler->assembleLoad(f, 0.0, problem->density, b);
     out.putScalar(0.0);
-    massSolver(d).solve(b, out);
+    if (d.lumpedMass && !d.projectionSolver) d.projectionSolver = massSolverOn(projectionMass(d));
+    (d.lumpedMass ? *d.projectionSolver : massSolver(d)).solve(b, out);
   }
 
   /// Initial state on d: u0, v0 projected, a0 from (rho a0, phi) + a(u0, phi) = (f(0), phi) + Neumann.
@@ -505,7 +523,7 @@ struct Simulation::Impl {
       std::vector<Vector*> x;
       for (int f = 0; f < nf; ++f) b.push_back(rhs[f].get()), x.push_back(fields[f].get());
       try {
-        solvers::solveJacobiCG(*to.M, b, x, solverParams.get<double>("Relative Tolerance"),
+        solvers::solveJacobiCG(*projectionMass(to), b, x, solverParams.get<double>("Relative Tolerance"),
                                solverParams.get<int>("Maximum Iterations"));
       } catch (core::SolverError& e) {
         throw core::SolverError(std::string("the L2 projection to the new mesh (Linear Solver/Relative Tolerance, "
@@ -976,7 +994,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         auto scope = I.timers.scope("estimator");
         extras = hook(StepView{n, t, k, beta, *d->forest, *d->mesh, *d->assembler, d->coupling.get(), *I.problem, *u,
                                pred, lambda, d->id, carried,
-                               d->lumpedMass ? Teuchos::null : RCP<const CrsMatrix>(d->M), d->K});
+                               I.projectionMass(*d), d->K});
         carried = extras.carry;
       }
       tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();

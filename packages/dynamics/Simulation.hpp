@@ -47,7 +47,7 @@ struct StepView {
   /// StepExtras::carry of the previous step, on this step's mesh (nodal interpolation when the mesh
   /// changed); empty in the first step.
   const std::vector<RCP<Vector>>& carried;
-  /// The step's consistent mass matrix M_rho (null if the mass is lumped anywhere) and K_kappa.
+  /// The step's consistent mass matrix M_rho (also where the scheme lumps it) and K_kappa.
   RCP<const CrsMatrix> consistentMass, stiffness;
 };
 /// Extra per-step results from a hook: CSV columns (in the order of PassOptions::extraColumns)
