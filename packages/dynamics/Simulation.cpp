@@ -274,6 +274,24 @@ struct Simulation::Impl {
   bool lumpsMass() const {
     return problem->hasObstacle && deck.sublist("Contact").get<std::string>("Boundary Mass") == "lumped";
   }
+  /// Throws a user error naming the Problem key and the segment if a segment that a boundary
+  /// condition uses contains no boundary edge of \p mesh (e.g. "top, x >= 3" on a unit square).
+  void checkSegmentsHaveEdges(const mesh::Q1Mesh& mesh) const {
+    const std::pair<const char*, unsigned> uses[] = {{"Dirichlet Segments", problem->dirichletMask},
+                                                     {"Dirichlet X Segments", problem->componentDirichletMask[0]},
+                                                     {"Dirichlet Y Segments", problem->componentDirichletMask[1]},
+                                                     {"Neumann Segments", problem->neumannMask},
+                                                     {"Contact Segments", problem->contactMask}};
+    unsigned local = 0, global = 0;
+    for (const auto& be : mesh.boundaryEdges()) local |= be.segments;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_BOR, local, Teuchos::outArg(global));
+    for (const auto& [key, mask] : uses)
+      for (int i = 0; i < segments->size(); ++i)
+        if ((mask >> i & 1u) && !(global >> i & 1u))
+          SIGNORINI_USER_ERROR("Problem/" << key << ": the segment '" << segments->name(i)
+                                          << "' contains no boundary edge of the mesh (see Mesh/Boundary Segments/"
+                                          << segments->name(i) << ")");
+  }
   /// Level of the coarse correction's mesh: the finest uniform one at most at Mesh/Refinement
   /// Level with at most Contact/Coarse Correction Cells cells, else the p4est trees themselves.
   int coarseCorrectionLevel() const {
@@ -338,6 +356,7 @@ struct Simulation::Impl {
     if (auto* elasticity = dynamic_cast<const fem::ElasticityAssembler*>(d->assembler.get()))
       d->solver->setNearNullspace(elasticity->rigidBodyModes(), 2);
     d->solver->setOperator(d->A, d->courant);
+    checkSegmentsHaveEdges(*d->mesh);
     if (problem->hasObstacle) {
       // Contact where the constrained unknown is fixed (also under another segment name, or by a
       // Dirichlet X/Y segment on the contact component): a user error, on every mesh.

@@ -260,6 +260,7 @@ std::pair<double, double> ElasticityAssembler::errorNorms(const Vector& uOwned, 
   static const double gw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
   const double eps = 1e-6 * mesh_.hMin();
   double l2 = 0, h1 = 0;
+  std::string bad;  // the first sample of the exact solution that is not a finite number
   for (LO e = 0; e < mesh_.numLocalCells(); ++e) {
     double Xe[4][2], ue[2][4];
     for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
@@ -274,14 +275,15 @@ std::pair<double, double> ElasticityAssembler::errorNorms(const Vector& uOwned, 
           double v = 0, vx = 0, vy = 0;
           for (int a = 0; a < 4; ++a) v += N[a] * ue[c][a], vx += gx[a] * ue[c][a], vy += gy[a] * ue[c][a];
           const auto& f = exact[c];
-          const double d = v - f(x, y, t);
-          const double dx = vx - (f(x + eps, y, t) - f(x - eps, y, t)) / (2 * eps);
-          const double dy = vy - (f(x, y + eps, t) - f(x, y - eps, t)) / (2 * eps);
+          const double d = v - f.sample(x, y, t, bad);
+          const double dx = vx - (f.sample(x + eps, y, t, bad) - f.sample(x - eps, y, t, bad)) / (2 * eps);
+          const double dy = vy - (f.sample(x, y + eps, t, bad) - f.sample(x, y - eps, t, bad)) / (2 * eps);
           l2 += w * d * d;
           h1 += w * (dx * dx + dy * dy);
         }
       }
   }
+  core::throwFirstUserError(*mesh_.comm(), bad);
   double local[2] = {l2, h1}, global[2];
   Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_SUM, 2, local, global);
   return {std::sqrt(global[0]), std::sqrt(global[1])};

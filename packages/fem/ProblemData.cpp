@@ -89,6 +89,17 @@ ProblemData::ProblemData(const core::ParameterList& p, const mesh::BoundarySegme
   const std::string direction = p.get<std::string>("Contact Direction");
   contactComponent = direction[1] == 'x' ? 0 : 1;
   contactSign = direction[0] == '+' ? 1.0 : -1.0;
+  // The other model's material keys would be ignored: a wrong material without a word.
+  const auto defaults = getValidParameters();
+  const std::string otherModel = core::keysSetOtherThanDefaults(p, defaults, "Problem", [&](const std::string& k) {
+    return model == Model::ScalarWave ? k == "Young's Modulus" || k == "Poisson's Ratio" : k == "Stiffness";
+  });
+  if (!otherModel.empty())
+    SIGNORINI_USER_ERROR(otherModel << (model == Model::ScalarWave
+                                            ? ": applies to Type = plane strain elasticity only (the scalar wave's "
+                                              "material is Problem/Stiffness)"
+                                            : ": applies to Type = scalar wave only (elasticity's material is "
+                                              "Problem/Young's Modulus and Poisson's Ratio)"));
   if (model == Model::ScalarWave) {
     for (const char* key : {"Dirichlet X Segments", "Dirichlet Y Segments"})
       if (!p.get<std::string>(key).empty())

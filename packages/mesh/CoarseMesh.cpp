@@ -32,7 +32,14 @@ core::ParameterList CoarseMesh::getValidParameters() {
 }
 
 std::shared_ptr<CoarseMesh> CoarseMesh::create(const core::ParameterList& p) {
-  if (p.get<std::string>("Type") == "exodus") {
+  const bool exodus = p.get<std::string>("Type") == "exodus";
+  const std::string otherType = core::keysSetOtherThanDefaults(p, getValidParameters(), "Mesh", [&](const std::string& k) {
+    return exodus ? k == "X0" || k == "X1" || k == "Y0" || k == "Y1" || k == "Cells X" || k == "Cells Y" : k == "File";
+  });
+  if (!otherType.empty())
+    SIGNORINI_USER_ERROR(otherType << (exodus ? ": applies to Type = rectangle only (the Exodus file gives the mesh)"
+                                              : ": applies to Type = exodus only"));
+  if (exodus) {
     const std::string file = p.get<std::string>("File");
     if (file.empty()) SIGNORINI_USER_ERROR("Mesh/File: Type is \"exodus\" but no file is given");
     io::QuadMesh m;

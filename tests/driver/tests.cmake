@@ -136,6 +136,34 @@ signorini_add_bad_deck_test(exodus_missing_file ${decks}/exodus-missing-file.xml
 signorini_add_bad_deck_test(unknown_segment_name ${decks}/unknown-segment-name.xml
   "Problem/Contact Segments: no boundary segment named 'contakt'"
   "did you mean 'contact'")
+# The other problem type's material, or the other mesh type's keys, would be ignored: a wrong
+# material or mesh without a word (Stiffness given for an elastic body ran with E = 1).
+signorini_add_driver_test(material_of_the_other_problem_type EXIT 1
+  ARGS --output-dir {OUT} --set "Problem/Young's Modulus=5" ${decks}/good.xml
+  REGEX "Problem/Young's Modulus: applies to Type = plane strain elasticity only [(]the scalar wave's material is Problem/Stiffness[)]")
+signorini_add_driver_test(stiffness_for_elasticity EXIT 1
+  ARGS --output-dir {OUT} --set "Problem/Type=plane strain elasticity" --set "Problem/Stiffness=73e9"
+       --set "Problem/Initial Velocity=0, -sin(pi*x/2)" ${decks}/good.xml
+  REGEX "Problem/Stiffness: applies to Type = scalar wave only")
+signorini_add_driver_test(rectangle_keys_on_exodus_mesh EXIT 1
+  ARGS --output-dir {OUT} --set "Mesh/Cells X=7" --set "Mesh/X1=5" ${decks}/good-exodus.xml
+  REGEX "Mesh/(X1, Mesh/Cells X|Cells X, Mesh/X1): applies to Type = rectangle only [(]the Exodus file gives the mesh[)]")
+signorini_add_driver_test(exodus_file_on_rectangle EXIT 1
+  ARGS --output-dir {OUT} --set "Mesh/File=mesh.exo" ${decks}/good.xml
+  REGEX "Mesh/File: applies to Type = exodus only")
+# A boundary condition on a segment that selects no boundary edge (a unit slip: "x >= 3" on a unit
+# square) would leave the body unclamped or unloaded; each kind of segment, with its key.
+signorini_add_driver_test(dirichlet_segment_without_edges EXIT 1
+  ARGS --output-dir {OUT} --set "Mesh/Boundary Segments/clamped=left, y > 5" ${decks}/good.xml
+  REGEX "Problem/Dirichlet Segments: the segment 'clamped' contains no boundary edge of the mesh")
+signorini_add_driver_test(neumann_segment_without_edges EXIT 1
+  ARGS --output-dir {OUT} --set "Mesh/Boundary Segments/load=top, x >= 3" --set "Problem/Neumann Segments=load"
+       --set "Problem/Neumann Data=1" ${decks}/good.xml
+  REGEX "Problem/Neumann Segments: the segment 'load' contains no boundary edge of the mesh")
+# An exact solution that is not a finite number where the errors are measured.
+signorini_add_driver_test(exact_solution_not_finite EXIT 1
+  ARGS --output-dir {OUT} --set "Problem/Exact Solution=sqrt(x - 2)" ${decks}/good.xml
+  REGEX "Problem/Exact Solution: 'sqrt[(]x - 2[)]' evaluates to -?nan at")
 signorini_add_bad_deck_test(initial_penetration ${decks}/penetrating.xml
   "Problem/Initial Displacement penetrates the obstacle at t = 0")
 signorini_add_bad_deck_test(bad_expression ${decks}/bad-expression.xml
