@@ -75,8 +75,9 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
                   "Fixed fraction: share of cells refined; bulk: share of the squared estimate captured (both of the "
                   "cells below Adaptivity/Maximum Level, the ones that can be refined)", 0.0, 1.0);
   core::addDouble(a, "Coarsening Fraction", 0.0,
-                  "Share of cells with the smallest indicators coarsened (families of four; never below the deck's "
-                  "level); the paper used none",
+                  "Share of the cells above the deck's level (the ones that can be coarsened) flagged for "
+                  "coarsening, those with the smallest indicators; a family of four coarsens when all four are "
+                  "flagged; the paper used none",
                   0.0, 1.0);
   core::addDouble(a, "Tie Tolerance", 1e-8,
                   "Cell indicators of a step closer than this times its largest indicator count as equal when "
@@ -282,6 +283,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   dynamics::RunSummary last;
   std::vector<std::string> earlierFiles;  // kept files of the cycles before the last
   std::vector<std::string> previousFiles;  // the previous cycle's files, until this cycle is known to fit
+  bool unchanged = false;  // the last regularised meshes are those of the cycle before: nothing was refined
   std::map<std::string, double> phaseSeconds;  // over all cycles
   const auto runStart = std::chrono::steady_clock::now();
   try {
@@ -325,7 +327,13 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       if (atMaximum && l < cycles - 1)
         core::rootOut(rank) << "signorini: cycle " << l << " is the last: every cell of every step is at Adaptivity/"
                             << "Maximum Level = " << maxLevel << ", so a further cycle would repeat it" << std::endl;
-      const bool lastPlanned = l == cycles - 1 || atMaximum;
+      // The marking of the previous cycle refined nothing (its indicators were 0): this cycle repeats
+      // it, written as the run's result, and a further one would repeat it again.
+      if (unchanged && l < cycles - 1)
+        core::rootOut(rank) << "signorini: cycle " << l << " is the last: the marking of cycle " << l - 1
+                            << " refined no cell of any step (its indicators are 0), so a further cycle would repeat it"
+                            << std::endl;
+      const bool lastPlanned = l == cycles - 1 || atMaximum || unchanged;
       double etaMax = 0;
       const double s1Tolerance = deck_.sublist("Estimator").get<double>("S1 Relative Tolerance");
       dynamics::StepHook hook = [&](const dynamics::StepView& s) {
@@ -380,8 +388,15 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         for (size_t i = 0; i < refinable.size(); ++i) flags[refinable[i]] = marked[i];
         auto refined = std::make_shared<mesh::Forest>(s.forest);
         if (coarsen > 0 && strategy != "uniform") {
-          std::vector<char> small = markSmallest(r.cellIndicator, coarsen, ties, raw);
-          for (size_t e = 0; e < small.size(); ++e) small[e] = small[e] && !flags[e];
+          // Among the cells above the deck's level, as refinement among those below the Maximum
+          // Level: spent on cells at the level, the fraction coarsened nothing.
+          std::vector<size_t> coarsenable;
+          std::vector<double> coarsenableIndicator;
+          for (size_t e = 0; e < r.cellIndicator.size(); ++e)
+            if (s.mesh.cellLevel()[e] > baseLevel) coarsenable.push_back(e), coarsenableIndicator.push_back(r.cellIndicator[e]);
+          const std::vector<char> smallest = markSmallest(coarsenableIndicator, coarsen, ties, raw);
+          std::vector<char> small(r.cellIndicator.size(), 0);
+          for (size_t i = 0; i < coarsenable.size(); ++i) small[coarsenable[i]] = smallest[i] && !flags[coarsenable[i]];
           refined->refineAndCoarsen(flags, small, baseLevel);
           refined->balance();
         } else {
@@ -429,6 +444,8 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       const bool stop = (maxDofs > 0 && last.totalDofs >= maxDofs) || (tol > 0 && etaMax <= tol) || lastPlanned;
       if (!stop) {  // Algorithm 5.3, then the next cycle's meshes.
         mesh::regulariseSteps(next);
+        unchanged = true;
+        for (size_t n = 0; unchanged && n < next.size(); ++n) unchanged = next[n]->sameCells(*meshes[n]);
         meshes = next;
       }
       const double regularise = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr0).count();

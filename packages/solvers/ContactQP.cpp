@@ -96,7 +96,13 @@ std::string ContactQP::checkParameters(const core::ParameterList& params) {
   const std::string unused = core::keysSetOtherThanDefaults(params, getValidParameters(), "Contact", [&](const std::string& k) {
     return (k == "Coarse Correction Cells" && !coarse) || (k == "Strip Width" && !strip);
   });
-  return unused.empty() ? "" : "Contact/Schur Preconditioner = " + preconditioner + "; without effect: " + unused;
+  const std::string newton = params.get<std::string>("Newton Step Solver");
+  const std::string noCache = core::keysSetOtherThanDefaults(params, getValidParameters(), "Contact",
+                                                             [&](const std::string& k) { return k == "Cached Columns" && newton == "CG"; });
+  std::string warning = unused.empty() ? "" : "Contact/Schur Preconditioner = " + preconditioner + "; without effect: " + unused;
+  if (!noCache.empty())
+    warning += (warning.empty() ? "" : "; ") + std::string("Contact/Newton Step Solver = CG; without effect: ") + noCache;
+  return warning;
 }
 
 ContactQP::ContactQP(const core::ParameterList& params, double lengthScale)

@@ -150,10 +150,18 @@ std::string LinearSolver::checkParameters(const core::ParameterList& params, boo
     if (!muelu.entry(it).isList() && !valid->isParameter(muelu.name(it)))
       SIGNORINI_USER_ERROR("Linear Solver/MueLu: '" << muelu.name(it) << "' is not a MueLu parameter "
                            "(MueLu's masterList.xml lists them)");
+  // The Courant number that "auto" compares is set to no effect by any other choice (and by
+  // reproducible arithmetic, which always solves with Jacobi).
+  const std::string courant = core::keysSetOtherThanDefaults(params, getValidParameters(), "Linear Solver",
+                                                             [&](const std::string& k) {
+                                                               return k == "Auto MueLu Courant Number" &&
+                                                                      (reproducible || preconditioner != "auto");
+                                                             });
   if (!reproducible) {
+    std::string ignored = courant;
     if ((preconditioner == "Jacobi" || preconditioner == "none") && muelu.numParams() > 0)
-      return "Linear Solver/Preconditioner = " + preconditioner + "; without effect: Linear Solver/MueLu";
-    return "";
+      ignored += std::string(ignored.empty() ? "" : ", ") + "Linear Solver/MueLu";
+    return ignored.empty() ? "" : "Linear Solver/Preconditioner = " + preconditioner + "; without effect: " + ignored;
   }
   if (preconditioner != "auto" && preconditioner != "Jacobi")
     SIGNORINI_USER_ERROR("Linear Solver/Preconditioner: reproducible arithmetic needs \"Jacobi\" (or \"auto\"), not \""
@@ -161,7 +169,7 @@ std::string LinearSolver::checkParameters(const core::ParameterList& params, boo
   if (canonical != "CG")
     SIGNORINI_USER_ERROR("Linear Solver/Method: reproducible arithmetic solves with its own Jacobi CG and needs "
                          "\"CG\", not \"" << method << "\"");
-  std::string ignored;
+  std::string ignored = courant;
   for (const char* sublist : {"Belos", "MueLu"})
     if (params.sublist(sublist).numParams() > 0) ignored += std::string(ignored.empty() ? "" : ", ") + "Linear Solver/" + sublist;
   return ignored.empty() ? "" : "reproducible arithmetic solves with its own Jacobi CG; without effect: " + ignored;

@@ -377,6 +377,14 @@ signorini_add_driver_test(adaptive_all_cycles_without_exodus EXIT 1
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Write All Cycles=true"
        --set "Output/Write Exodus=false" ${decks}/good.xml
   REGEX "Adaptivity/Write All Cycles = true needs Output/Write Exodus = true")
+# A run without error (at rest, no load) marks nothing: the cycle after the first repeats it and
+# ends the run (its files are the run's result) instead of repeating it up to Cycles.
+signorini_add_driver_test(adaptive_nothing_marked_ends_the_run EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=fixed fraction" --set "Adaptivity/Cycles=4"
+       --set "Problem/Initial Velocity=0" ${decks}/good.xml
+  REGEX "cycle 1 is the last: the marking of cycle 0 refined no cell of any step [(]its indicators are 0[)], so a further cycle would repeat it\n"
+        "cycle 1: total unknowns"
+  FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
 # Strategy = none ignores the Adaptivity and Estimator keys the deck sets: a warning names them,
 # the run goes on; so does Compute S1 = false its tolerance.
 signorini_add_driver_test(estimator_keys_without_strategy EXIT 0
@@ -575,6 +583,15 @@ signorini_add_driver_test(contact_and_neumann_other_name EXIT 1
 signorini_add_driver_test(contact_segments_without_obstacle EXIT 0
   ARGS --check --output-dir {OUT} --set "Problem/Obstacle=" ${decks}/good.xml
   REGEX "warning: .*Problem/Contact Segments without Problem/Obstacle: no contact\n")
+# Keys that the chosen solver does not read: the Courant number of "auto" under another
+# preconditioner, the cache of the cached-columns Newton step under CG.
+signorini_add_driver_test(courant_number_without_auto EXIT 0
+  ARGS --check --output-dir {OUT} --set "Linear Solver/Preconditioner=Jacobi"
+       --set "Linear Solver/Auto MueLu Courant Number=2" ${decks}/good.xml
+  REGEX "warning: .*Linear Solver/Preconditioner = Jacobi; without effect: Linear Solver/Auto MueLu Courant Number\n")
+signorini_add_driver_test(cached_columns_without_cache EXIT 0
+  ARGS --check --output-dir {OUT} --set "Contact/Newton Step Solver=CG" --set "Contact/Cached Columns=5" ${decks}/good.xml
+  REGEX "warning: .*Contact/Newton Step Solver = CG; without effect: Contact/Cached Columns\n")
 signorini_add_driver_test(contact_keys_without_obstacle EXIT 0
   ARGS --check --output-dir {OUT} --set "Problem/Obstacle=" --set "Problem/Contact Segments="
        --set "Contact/Strip Width=3" --set "Contact/Multiplier Segments=H = h" ${decks}/good.xml
