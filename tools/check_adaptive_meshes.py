@@ -19,18 +19,17 @@ Prints a summary; exit status 1 on any violation.
 Usage: check_adaptive_meshes.py BASE [--every N] [--max-level N] [--coarser-than BASE2] (--every N
 checks only every N-th written mesh: the kept meshes are then not consecutive steps, which the
 checker must report)."""
-import argparse
 import glob
 import os
 import sys
 
-import netCDF4
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from exodus_text import names as exodus_names  # noqa: E402
+from tool_errors import ArgumentParser, exodus, fail, read_table, reporting  # noqa: E402
 
-parser = argparse.ArgumentParser()
+parser = ArgumentParser()
 parser.add_argument("base")
 parser.add_argument("--every", type=int, default=1, help="keep only every N-th written mesh")
 parser.add_argument("--max-level", type=int, help="no cell's level variable above this")
@@ -40,13 +39,15 @@ parser.add_argument("--graded", action="store_true",
                          "with cells one level coarser than the other's (forward and backward), so that a run "
                          "whose meshes are uniform or equal fails")
 args = parser.parse_args()
+if args.every < 1:
+    parser.error(f"argument --every: {args.every}: not a positive number")
 
 
 def series(base):
     files = sorted(glob.glob(base + ".e") + glob.glob(base + ".e-s.*"),
                    key=lambda f: int(f.rsplit(".", 1)[1]) if ".e-s." in f else 0)
     if not files:
-        sys.exit(f"no Exodus files {base}.e*")
+        fail(f"{base}.e: no such file (no Exodus files {base}.e*)")
     return files
 
 
@@ -62,7 +63,7 @@ def read(files):
     """Per file: times, cell corner coordinates (cells x 4), level variable."""
     out = []
     for f in files:
-        with netCDF4.Dataset(f) as d:
+        with exodus(f) as d:
             x, y = np.asarray(d["coordx"][:]), np.asarray(d["coordy"][:])
             blocks = sorted(v for v in d.variables if v.startswith("connect"))
             conn = np.concatenate([np.asarray(d[b][:]) - 1 for b in blocks])
@@ -72,8 +73,8 @@ def read(files):
     return out
 
 
-meshes = read(series(args.base)[::args.every])
-others = read(series(args.coarser_than)) if args.coarser_than else []
+meshes = reporting(lambda: read(series(args.base)[::args.every]))
+others = reporting(lambda: read(series(args.coarser_than))) if args.coarser_than else []
 
 violations = []
 
@@ -149,7 +150,7 @@ def max_hanging_nodes_per_edge(m):
 times = np.concatenate([m["times"] for m in meshes])
 table = args.base + ".steps.csv"
 if os.path.exists(table):
-    steps = np.genfromtxt(table, delimiter=",", names=True)
+    steps = reporting(lambda: read_table(table, ["t", "cells"]))
     step_times, step_cells = np.atleast_1d(steps["t"]), np.atleast_1d(steps["cells"])
     if len(times) != len(step_times) or np.abs(times - step_times).max() > 1e-9 * max(1.0, np.abs(step_times).max()):
         violations.append(f"the written times are not the {len(step_times)} steps of {os.path.basename(table)} "
@@ -198,6 +199,8 @@ if args.graded:
         violations.append(f"--graded: the largest level excess between consecutive meshes is not 1 both ways "
                           f"(forward {forward}, backward {backward}): the meshes do not change from step to step")
 if args.max_level is not None:
+    if all(m["level"] is None for m in meshes):
+        fail(f"--max-level: no element variable level in {args.base}.e*")
     top = max(int(np.rint(m["level"]).max()) for m in meshes if m["level"] is not None)
     print(f"largest level {top} (allowed: {args.max_level})")
     if top > args.max_level:

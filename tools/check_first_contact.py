@@ -30,14 +30,19 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from exodus_text import names as exodus_names  # noqa: E402
+from tool_errors import ArgumentParser, InputError, exodus, read_table, reporting  # noqa: E402
 
-base = sys.argv[1]
-initial = int(sys.argv[2]) if len(sys.argv) > 2 else 0
+ap = ArgumentParser(description=__doc__.splitlines()[0])
+ap.add_argument("base", help="the run's output base (folder/basename)")
+ap.add_argument("initial_level", nargs="?", type=int, default=0, help="the level of the initial mesh's cells")
+args = ap.parse_args()
+base = args.base
+initial = args.initial_level
 failures = []
 
 
-def steps_table(path):
-    return np.genfromtxt(path, delimiter=",", names=True)
+def steps_table(path, min_rows=1):
+    return np.atleast_1d(reporting(lambda: read_table(path, ["step", "t", "active"], min_rows)))
 
 
 def first_contact_step(table):
@@ -45,7 +50,7 @@ def first_contact_step(table):
     return int(table["step"][active[0]]) if active.size else None
 
 
-last = steps_table(base + ".steps.csv")
+last = steps_table(base + ".steps.csv", 2)
 k = float(last["t"][1] - last["t"][0])
 t_star = 2 / math.pi * math.asin(0.05 * math.pi / 2)
 expected = math.ceil(t_star / k - 1e-9)
@@ -70,7 +75,10 @@ def written_steps():
                    key=lambda f: int(f.rsplit(".", 1)[1]) if ".e-s." in f else 0)
     out = []
     for f in files:
-        with netCDF4.Dataset(f) as d:
+        with exodus(f) as d:
+            for var, name in (("name_elem_var", "level"), ("name_sset_var", "lambda")):
+                if var not in d.variables or name not in exodus_names(d[var]):
+                    raise InputError(f"{f}: no variable {name} (not the output of a membrane run with contact?)")
             out += [(float(t), f, i) for i, t in enumerate(np.asarray(d["time_whole"][:]))]
     return out
 
@@ -90,7 +98,7 @@ def gamma_c_cells(f, i):
     return level, lo[order], hi[order], level[cells][order], lam[order]
 
 
-times = written_steps()
+times = reporting(written_steps)
 t_of = {round(t / k): (f, i) for t, f, i in times}
 if found is None or found not in t_of or found - 1 not in t_of:
     failures.append("the steps around the first contact are not in the Exodus series (write every step)")

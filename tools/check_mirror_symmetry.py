@@ -4,14 +4,16 @@ line x2 = c (default 0.5): a mesh is symmetric when the mirror image of every ce
 is a cell. Prints the time of the first asymmetric mesh and, over the asymmetric meshes, how many
 cells have no mirror image and how far they reach from x1 = 1 (Gamma_C of the membrane decks).
 Usage: check_mirror_symmetry.py BASE [c] [--require-symmetric] (exit status 1 if a mesh is not)"""
-import argparse
 import glob
+import os
 import sys
 
-import netCDF4
 import numpy as np
 
-parser = argparse.ArgumentParser()
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from tool_errors import ArgumentParser, exodus, fail, reporting  # noqa: E402
+
+parser = ArgumentParser()
 parser.add_argument("base")
 parser.add_argument("axis", nargs="?", type=float, default=0.5)
 parser.add_argument("--require-symmetric", action="store_true")
@@ -20,11 +22,11 @@ base, axis = args.base, args.axis
 files = sorted(glob.glob(base + ".e") + glob.glob(base + ".e-s.*"),
                key=lambda f: int(f.rsplit(".", 1)[1]) if ".e-s." in f else 0)
 if not files:
-    sys.exit(f"no Exodus files {base}.e*")
+    fail(f"{base}.e: no such file (no Exodus files {base}.e*)")
 scale = 2.0**30  # cell centres and sizes of dyadic meshes are exact in this unit
 first, counts, reach = None, [], 0.0
 for f in files:
-    with netCDF4.Dataset(f) as d:
+    with reporting(lambda: exodus(f)) as d:
         x, y, conn = d["coordx"][:], d["coordy"][:], d["connect1"][:] - 1
         t = float(d["time_whole"][0])
     cx, cy = x[conn].mean(1), y[conn].mean(1)

@@ -7,21 +7,43 @@ for the estimate of every uniform cycle, to show how it changes with the level o
 then both runs cycle by cycle: with no coarsening the adaptive cycle c refines no cell beyond level c,
 so its meshes lie inside the uniform cycle c's; while its estimate stays above that cycle's, the
 factor against uniform cycle c cannot exceed the ratio of the two cycles' unknowns.
+The runs must be comparable: their step tables (<base>.steps.csv, the last cycle's) end at the same
+step and time; otherwise, or for a missing or cut-short table, one line and exit status 1.
 Usage: tools/compare_runs.py ADAPTIVE_BASE UNIFORM_BASE [--require-factor F]
 With --require-factor the exit status is 1 unless the interpolated factor is at least F."""
 import argparse
+import os
 import sys
 
 import numpy as np
 
-ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from tool_errors import ArgumentParser, InputError, read_table, reporting  # noqa: E402
+
+ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
 ap.add_argument("adaptive", help="output base of the adaptive run (folder/basename)")
 ap.add_argument("uniform", help="output base of the uniform run")
 ap.add_argument("--require-factor", type=float, default=0.0, help="fail unless the factor in unknowns reaches this")
 a = ap.parse_args()
 
-ad = np.atleast_1d(np.genfromtxt(a.adaptive + ".cycles.csv", delimiter=",", names=True))
-un = np.atleast_1d(np.genfromtxt(a.uniform + ".cycles.csv", delimiter=",", names=True))
+
+def read_runs():
+    """Both runs' cycle tables; InputError if one is missing or cut short, or if the runs are not
+    comparable: their (last cycles') step tables must end at the same step and time."""
+    cycles = [np.atleast_1d(read_table(base + ".cycles.csv", ["total_dofs", "eta", "wall_seconds"]))
+              for base in (a.adaptive, a.uniform)]
+    ends = []
+    for base in (a.adaptive, a.uniform):
+        steps = read_table(base + ".steps.csv", ["step", "t"])
+        ends.append((int(np.atleast_1d(steps["step"])[-1]), float(np.atleast_1d(steps["t"])[-1])))
+    (n_a, t_a), (n_u, t_u) = ends
+    if n_a != n_u or abs(t_a - t_u) > 1e-9 * max(abs(t_a), abs(t_u)):
+        raise InputError(f"the runs are not comparable: {a.adaptive}.steps.csv ends at step {n_a}, t = {t_a:.6g}, "
+                         f"{a.uniform}.steps.csv at step {n_u}, t = {t_u:.6g} (another final time or time step)")
+    return cycles
+
+
+ad, un = reporting(read_runs)
 target, n_uniform, t_uniform = un["eta"][-1], un["total_dofs"][-1], un["wall_seconds"].sum()
 print(f"{a.adaptive} against {a.uniform}")
 print("adaptive cycles: " + "; ".join(f"{int(d)} unknowns, eta {e:.4g}" for d, e in zip(ad["total_dofs"], ad["eta"])))

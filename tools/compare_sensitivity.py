@@ -4,19 +4,43 @@
 (the two-cycle runs write both): the energy relative to its initial value, the probe u(1, 0.5) and
 eta^n relative to its maximum ("reproducible": the paper's scheme under Parallel/Reproducible
 Arithmetic). Usage: compare_sensitivity.py DIR"""
+import functools
+import os
 import sys
 
 import numpy as np
 
-out = sys.argv[1]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from tool_errors import ArgumentParser, InputError, read_table, reporting  # noqa: E402
+
+ap = ArgumentParser(description=__doc__.splitlines()[0])
+ap.add_argument("dir", help="the output folder of run-rank-sensitivity.sh")
+out = ap.parse_args().dir
 steps = [25, 50, 100, 150, 200, 250, 300, 350, 400]
+rows = {}  # rows of the first table read: every table must have as many (the same steps)
 
 
+@functools.cache
 def table(base, cycle=1):
-    return np.genfromtxt(f"{out}/{base}{'.cycle0' if cycle == 0 else ''}.steps.csv", delimiter=",", names=True)
+    path = f"{out}/{base}{'.cycle0' if cycle == 0 else ''}.steps.csv"
+
+    def read():
+        t = read_table(path, ["dofs", "energy", "probecorner", "eta"], steps[-1] + 1)
+        if rows.setdefault("n", t.size) != t.size:
+            raise InputError(f"{path}: {t.size} rows, the tables read before {rows['n']}: not runs of the same steps")
+        return t
+
+    return reporting(read)
 
 
-for scheme in ["paper", "stabilised", "reproducible"]:
+schemes = ["paper", "stabilised", "reproducible"]
+for scheme in schemes:  # every table first: a missing or cut-short one stops before any output
+    for run in ("np1", "np2", "perturbed"):
+        for cycle in (1, 0):
+            table(f"{scheme}.{run}", cycle)
+
+
+for scheme in schemes:
     ref = table(f"{scheme}.np1")
     print(f"{scheme} scheme, cycle 1: relative difference of the energy at steps " + " ".join(map(str, steps)))
     for other, label in [("np2", "2 ranks against 1      "), ("perturbed", "v0 * (1 + 1e-12), 1 rank")]:

@@ -11,10 +11,15 @@ import glob
 import os
 import sys
 
-if len(sys.argv) < 3 or any(arg.startswith("-") and arg != "--common-columns" for arg in sys.argv[1:]):
-    sys.exit(__doc__)
-a, b = sys.argv[1], sys.argv[2]
-common = "--common-columns" in sys.argv[3:]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from tool_errors import ArgumentParser, InputError, fail, require_complete, require_file  # noqa: E402
+
+ap = ArgumentParser(description=__doc__.splitlines()[0])
+ap.add_argument("base_a", help="output base of one run (folder/basename)")
+ap.add_argument("base_b", help="output base of the other run")
+ap.add_argument("--common-columns", action="store_true", help="leave out columns that only one run has")
+args = ap.parse_args()
+a, b, common = args.base_a, args.base_b, args.common_columns
 
 
 def suffixes(base):
@@ -25,26 +30,29 @@ def suffixes(base):
 
 def read(path):
     try:
+        require_file(path)
+        require_complete(path)  # also: empty
         with open(path, newline="") as f:
-            rows = list(csv.reader(f))
+            return list(csv.reader(f))
     except OSError as e:
-        sys.exit(f"compare_step_tables.py: error: {path}: {e.strerror}")
-    if not rows:
-        sys.exit(f"compare_step_tables.py: error: {path}: empty")
-    return rows
+        fail(f"{path}: {e.strerror}")
+    except InputError as e:
+        fail(e)
 
 
+for base in (a, b):
+    if not os.path.isfile(base + ".steps.csv"):
+        fail(f"{base}.steps.csv: no such file")
 names = suffixes(a)
 if names != suffixes(b):
-    sys.exit(f"compare_step_tables.py: error: the runs have different step tables: {a}: {', '.join(names)}; "
-             f"{b}: {', '.join(suffixes(b))}")
+    fail(f"the runs have different step tables: {a}: {', '.join(names)}; {b}: {', '.join(suffixes(b))}")
 differs = False
 compared = 0
 for suffix in names:
     ta = read(a + suffix)
     tb = read(b + suffix)
     if any(len(row) != len(ta[0]) for row in ta) or any(len(row) != len(tb[0]) for row in tb):
-        sys.exit(f"compare_step_tables.py: error: {a + suffix} or {b + suffix}: a row of another length than the header")
+        fail(f"{a + suffix} or {b + suffix}: a row of another length than the header")
     if (ta[0] != tb[0] and not common) or len(ta) != len(tb):
         print(f"{suffix}: the tables differ in shape ({len(ta)} and {len(tb)} rows)")
         differs = True

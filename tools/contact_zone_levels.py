@@ -7,30 +7,42 @@ import glob
 import os
 import sys
 
-import netCDF4
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from exodus_text import names as exodus_names  # noqa: E402
+from tool_errors import ArgumentParser, InputError, exodus, read_table, reporting  # noqa: E402
 
-base=sys.argv[1]
-steps=np.genfromtxt(base+'.steps.csv',delimiter=',',names=True)
-first=steps['t'][np.argmax(steps['active']>0)]
-files=sorted(glob.glob(base+'.e*'), key=lambda f: (len(f), f))
-print(base, 'first contact t =', first)
-for f in files:
-    d=netCDF4.Dataset(f)
-    t=d['time_whole'][:]
-    x=d['coordx'][:]; y=d['coordy'][:]
-    conn=d['connect1'][:]-1
-    names=exodus_names(d['name_elem_var']) if 'name_elem_var' in d.variables else []
-    li=names.index('level')
-    for k,tt in enumerate(t):
-        if tt>first+0.0126: d.close(); sys.exit()
-        if tt<0.0374: continue
-        lev=d['vals_elem_var%deb1'%(li+1)][k]
-        cx=x[conn].mean(1); cy=y[conn].mean(1)
-        onC=(x[conn].max(1)>1-1e-12)
-        mid=onC&(np.abs(cy-0.5)<0.15)
-        print(f't={tt:.4f} max level {lev.max():.0f}; Gamma_C cells near y=0.5 levels {np.unique(lev[mid]).astype(int)}')
-    d.close()
+
+def main():
+    ap=ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument('base', help='output base of the run (folder/basename)')
+    base=ap.parse_args().base
+    steps=np.atleast_1d(read_table(base+'.steps.csv', ['t', 'active']))
+    if not np.any(steps['active']>0):
+        raise InputError(f'{base}.steps.csv: no step with active > 0 (no contact in the run)')
+    first=steps['t'][np.argmax(steps['active']>0)]
+    files=sorted(glob.glob(base+'.e*'), key=lambda f: (len(f), f))
+    if not files:
+        raise InputError(f'{base}.e: no such file (the run wrote no Exodus output? Output/Write Exodus)')
+    print(base, 'first contact t =', first)
+    for f in files:
+        with exodus(f) as d:
+            t=d['time_whole'][:]
+            x=d['coordx'][:]; y=d['coordy'][:]
+            conn=d['connect1'][:]-1
+            names=exodus_names(d['name_elem_var']) if 'name_elem_var' in d.variables else []
+            if 'level' not in names:
+                raise InputError(f'{f}: no element variable level')
+            li=names.index('level')
+            for k,tt in enumerate(t):
+                if tt>first+0.0126: return
+                if tt<0.0374: continue
+                lev=d['vals_elem_var%deb1'%(li+1)][k]
+                cx=x[conn].mean(1); cy=y[conn].mean(1)
+                onC=(x[conn].max(1)>1-1e-12)
+                mid=onC&(np.abs(cy-0.5)<0.15)
+                print(f't={tt:.4f} max level {lev.max():.0f}; Gamma_C cells near y=0.5 levels {np.unique(lev[mid]).astype(int)}')
+
+
+reporting(main)

@@ -16,6 +16,7 @@ import netCDF4
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from exodus_text import record_bytes  # noqa: E402
+from tool_errors import ArgumentParser, fail  # noqa: E402
 
 
 def info_lines(path):
@@ -34,15 +35,16 @@ def info_lines(path):
 
 
 def main():
-    if len(sys.argv) != 2:
-        sys.exit(__doc__)
+    ap = ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("exodus_file", help="an Exodus file written by signorini (e.g. out/membrane.e)")
+    path = ap.parse_args().exodus_file
     try:
-        lines = info_lines(sys.argv[1])
+        lines = info_lines(path)
     except OSError as e:
-        sys.exit(f"deck_from_exodus.py: error: {sys.argv[1]}: {e.strerror or e}")
+        fail(f"{path}: {e.strerror or e}")
     start = next((i for i, l in enumerate(lines) if l.startswith("<ParameterList")), None)
     if start is None:
-        sys.exit(f"deck_from_exodus.py: error: {sys.argv[1]}: no deck in its info records")
+        fail(f"{path}: no deck in its info records")
     print("\n".join(lines[start:]))
 
 

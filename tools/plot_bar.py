@@ -22,8 +22,9 @@ import netCDF4  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_results import (InputError, exodus_frames, names, nearest_frame, plot_eta, read_csv,  # noqa: E402
+from plot_results import (exodus_frames, names, nearest_frame, parse_steps, plot_eta, read_csv,  # noqa: E402
                           require_exodus, time_step)
+from tool_errors import ArgumentParser, InputError, exodus, fail  # noqa: E402
 
 FOUNDATION_X, FOUNDATION_Y = 0.15, -0.005
 
@@ -42,6 +43,20 @@ def contact_intervals(steps_csv):
     if start is not None:
         intervals.append((start, last))
     return intervals
+
+
+def require_bar_variables(base):
+    """InputError unless the Exodus output of base has the variables the pictures read: the nodal
+    u_x and u_y of an elasticity run (the bar) and the cells' level."""
+    with exodus(base + ".e") as d:
+        nodal = names(d.variables["name_nod_var"]) if "name_nod_var" in d.variables else []
+        cell = names(d.variables["name_elem_var"]) if "name_elem_var" in d.variables else []
+    missing = [n for n in ("u_x", "u_y") if n not in nodal]
+    if missing:
+        raise InputError(f"{base}.e: no nodal variable {', '.join(missing)} (nodal variables: "
+                         f"{', '.join(nodal) or 'none'}): not an elasticity run such as the bar of Example 6.2")
+    if "level" not in cell:
+        raise InputError(f"{base}.e: no element variable level")
 
 
 def frame_data(f, i):
@@ -105,7 +120,7 @@ def contact_zone_vs_refinement(base, out):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--adaptive", required=True, help="output base of the adaptive run (folder/basename)")
     ap.add_argument("--uniform", help="output base of the uniform comparison run")
     ap.add_argument("--more-adaptive", action="append", default=[], metavar="BASE:LABEL",
@@ -120,13 +135,15 @@ def main():
                 read_csv(base + ".cycles.csv", ["total_dofs", "eta"])
         steps = read_csv(a.adaptive + ".steps.csv", ["t", "active"])
         require_exodus(a.adaptive)
+        require_bar_variables(a.adaptive)
         k = a.time_step or time_step(steps)
+        mesh_steps = parse_steps(a.steps)
     except InputError as e:
-        sys.exit(f"{os.path.basename(sys.argv[0])}: error: {e}")
+        fail(e)
     os.makedirs(a.out, exist_ok=True)
     plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out)
     os.replace(os.path.join(a.out, "eta_vs_unknowns.png"), os.path.join(a.out, "bar_eta_vs_unknowns.png"))
-    plot_meshes(a.adaptive, [int(s) for s in a.steps.split(",")], k, a.out)
+    plot_meshes(a.adaptive, mesh_steps, k, a.out)
     intervals = contact_intervals(a.adaptive + ".steps.csv")
     print(f"{a.adaptive}: {len(intervals)} contact intervals [ms]: "
           + ", ".join(f"{t0 * 1e3:.2f}-{t1 * 1e3:.2f}" for t0, t1 in intervals))

@@ -16,7 +16,6 @@ import glob
 import os
 import re
 import sys
-import warnings
 
 import matplotlib
 
@@ -27,35 +26,24 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from exodus_text import names as exodus_names  # noqa: E402
+from tool_errors import ArgumentParser, InputError, fail, read_table  # noqa: E402
 
 
-class InputError(Exception):
-    """A missing or unusable input: reported in one line before any plot is written."""
-
-
-def read_csv(path, columns=()):
-    """The table at path (numpy structured array); InputError if it is missing, cut short, empty or
-    lacks one of the columns."""
-    if not os.path.isfile(path):
-        raise InputError(f"{path}: no such file")
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")  # an empty file: reported below
-            data = np.genfromtxt(path, delimiter=",", names=True)
-    except ValueError as e:  # rows of different lengths
-        raise InputError(f"{path}: not a complete table: {str(e).strip().splitlines()[-1].strip()}") from None
-    if data.dtype.names is None or data.size == 0:
-        raise InputError(f"{path}: no rows")
-    missing = [c for c in columns if c not in data.dtype.names]
-    if missing:
-        raise InputError(f"{path}: no column {', '.join(missing)}")
-    return data
+read_csv = read_table  # the name plot_bar.py imports
 
 
 def require_exodus(base):
     """InputError unless the run at base wrote Exodus output."""
     if not os.path.isfile(base + ".e"):
         raise InputError(f"{base}.e: no such file (the run wrote no Exodus output? Output/Write Exodus)")
+
+
+def parse_steps(text):
+    """The step numbers of a --steps argument ("20,60,100"); InputError unless it is such a list."""
+    try:
+        return [int(s) for s in text.split(",")]
+    except ValueError:
+        raise InputError(f"--steps {text}: not a comma-separated list of step numbers") from None
 
 
 def time_step(steps):
@@ -234,7 +222,7 @@ def plot_multiplier(bases, t, out):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--adaptive", required=True, help="output base of the adaptive run (folder/basename)")
     ap.add_argument("--uniform", help="output base of the uniform comparison run")
     ap.add_argument("--more-adaptive", action="append", default=[], metavar="BASE:LABEL",
@@ -261,8 +249,9 @@ def main():
                 if base:
                     require_exodus(base)
             k = a.time_step or time_step(steps)
+            mesh_steps = parse_steps(a.steps)
     except InputError as e:
-        sys.exit(f"{os.path.basename(sys.argv[0])}: error: {e}")
+        fail(e)
     os.makedirs(a.out, exist_ok=True)
     plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out)
     if a.eta_only:
@@ -270,7 +259,7 @@ def main():
         return
     plot_contributions(a.adaptive, a.out)
     plot_energy_and_probe(a.adaptive, a.uniform, a.out)
-    plot_meshes(a.adaptive, [int(s) for s in a.steps.split(",")], k, a.out)
+    plot_meshes(a.adaptive, mesh_steps, k, a.out)
     plot_multiplier([(a.two_h or a.adaptive, "H = 2h"), (a.h_equals_h, "H = h")], a.multiplier_time, a.out)
     print("wrote", ", ".join(sorted(os.listdir(a.out))))
 

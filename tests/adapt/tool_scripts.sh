@@ -4,8 +4,11 @@
 # starts a file only for a new mesh, and both
 # tools/plot_results.py and tools/plot_bar.py stop with one line naming the file or column for a
 # missing run, a run without the adaptive columns or a table cut short, before writing anything;
-# tools/deck_from_exodus.py gives back the deck of a run from its Exodus file, and that deck
-# runs to the same step tables, bit for bit.
+# every script in tools/ refuses a missing argument, a missing or cut-short table (also one cut inside
+# its last number), a bad argument and a run of the wrong kind (compare_runs.py: runs of other
+# final times; plot_bar.py: a scalar membrane run) with one line naming the problem, a non-zero exit
+# status and no traceback; tools/deck_from_exodus.py gives back the deck of a run from its Exodus
+# file, and that deck runs to the same step tables, bit for bit.
 # Usage: tool_scripts.sh SIGNORINI SOURCE_DIR WORK_DIR
 set -uo pipefail
 signorini=$1 src=$2 work=$3
@@ -16,6 +19,9 @@ short=(--output-dir "$work" --set 'Time Integration/Final Time=0.1' --set 'Adapt
   { cat "$work/runs.log"; fail "the runs failed"; }
 "$signorini" "${short[@]}" --set 'Adaptivity/Strategy=none' --set 'Output/Basename=plain' \
   "$src/inputs/membrane.xml" > "$work/plain.log" 2>&1 || { cat "$work/plain.log"; fail "the plain run failed"; }
+# Not comparable with the others: 4 steps to t = 0.01.
+"$signorini" "${short[@]}" --set 'Time Integration/Final Time=0.01' --set 'Output/Basename=short' \
+  "$src/inputs/membrane.xml" > "$work/short.log" 2>&1 || { cat "$work/short.log"; fail "the short run failed"; }
 plot=(/usr/bin/python3 "$src/tools/plot_results.py")
 
 "${plot[@]}" --adaptive "$work/membrane" --uniform "$work/membrane-uniform" --steps 20,40,60 --out "$work/plots" \
@@ -69,6 +75,7 @@ expect_error() {  # name regex command...: exit status 1, one line matching rege
   "$@" --out "$work/$name" > "$work/$name.log" 2>&1
   local status=$?
   [ "$status" = 1 ] || { cat "$work/$name.log"; fail "$name: exit status $status, expected 1"; }
+  ! grep -q Traceback "$work/$name.log" || { cat "$work/$name.log"; fail "$name: a traceback"; }
   [ "$(wc -l < "$work/$name.log")" = 1 ] || { cat "$work/$name.log"; fail "$name: not one line"; }
   grep -q "$regex" "$work/$name.log" || { cat "$work/$name.log"; fail "$name: message"; }
   [ ! -e "$work/$name" ] || fail "$name: wrote $(ls "$work/$name")"
@@ -86,6 +93,82 @@ expect_error cut_uniform "cut-uniform.steps.csv: not a complete table" \
   "${plot[@]}" --adaptive "$work/membrane" --uniform "$work/cut-uniform"
 expect_error bar_missing "plot_bar.py: error: $work/nothing.cycles.csv: no such file" \
   /usr/bin/python3 "$src/tools/plot_bar.py" --adaptive "$work/nothing"
+expect_error bar_scalar "plot_bar.py: error: $work/membrane.e: no nodal variable u_x, u_y .*not an elasticity run" \
+  /usr/bin/python3 "$src/tools/plot_bar.py" --adaptive "$work/membrane"
+expect_error bad_steps "plot_results.py: error: --steps 5,abc: not a comma-separated list of step numbers" \
+  "${plot[@]}" --adaptive "$work/membrane" --steps 5,abc
+
+refuses() {  # name regex command...: a non-zero exit status, one line matching regex, no traceback
+  local name=$1 regex=$2
+  shift 2
+  "$@" > "$work/$name.log" 2>&1
+  local status=$?
+  [ "$status" != 0 ] || { cat "$work/$name.log"; fail "$name: exit status 0"; }
+  ! grep -q Traceback "$work/$name.log" || { cat "$work/$name.log"; fail "$name: a traceback"; }
+  [ "$(wc -l < "$work/$name.log")" = 1 ] || { cat "$work/$name.log"; fail "$name: not one line"; }
+  grep -q -- "$regex" "$work/$name.log" || { cat "$work/$name.log"; fail "$name: message"; }
+}
+py=/usr/bin/python3 tools=$src/tools
+# Tables cut short inside their last number: the same columns in every row, no line end.
+for f in "$work"/membrane.*csv; do cp "$f" "$work/cut-number${f#"$work"/membrane}"; done
+for f in "$work"/membrane.e*; do ln -s "$f" "$work/cut-number${f#"$work"/membrane}"; done
+head -c -5 "$work/membrane.cycles.csv" > "$work/cut-number.cycles.csv"
+head -c -5 "$work/membrane.steps.csv" > "$work/cut-number.steps.csv"
+cut_number="not a complete table: its last line has no line end (cut short)"
+# compare_runs.py
+"$py" "$tools/compare_runs.py" "$work/membrane" "$work/membrane-uniform" > "$work/compare.log" 2>&1 &&
+  grep -q "factor [0-9.]* fewer unknowns" "$work/compare.log" ||
+  { cat "$work/compare.log"; fail "compare_runs.py on comparable runs"; }
+refuses compare_missing "compare_runs.py: error: $work/nothing.cycles.csv: no such file" \
+  "$py" "$tools/compare_runs.py" "$work/nothing" "$work/membrane-uniform"
+refuses compare_cut "compare_runs.py: error: $work/cut-number.cycles.csv: $cut_number" \
+  "$py" "$tools/compare_runs.py" "$work/cut-number" "$work/membrane-uniform"
+refuses compare_cut_steps "compare_runs.py: error: $work/cut.steps.csv: not a complete table" \
+  "$py" "$tools/compare_runs.py" "$work/cut" "$work/membrane-uniform"
+refuses compare_short "compare_runs.py: error: the runs are not comparable: $work/short.steps.csv ends at step 4, t = 0.01, $work/membrane-uniform.steps.csv at step 40, t = 0.1" \
+  "$py" "$tools/compare_runs.py" "$work/short" "$work/membrane-uniform" --require-factor 1
+refuses compare_no_argument "compare_runs.py: error: the following arguments are required: uniform (usage:" \
+  "$py" "$tools/compare_runs.py" "$work/membrane"
+# contact_zone_levels.py
+refuses zone_no_argument "contact_zone_levels.py: error: the following arguments are required: base" \
+  "$py" "$tools/contact_zone_levels.py"
+refuses zone_missing "contact_zone_levels.py: error: $work/nothing.steps.csv: no such file" \
+  "$py" "$tools/contact_zone_levels.py" "$work/nothing"
+refuses zone_cut "contact_zone_levels.py: error: $work/cut.steps.csv: not a complete table" \
+  "$py" "$tools/contact_zone_levels.py" "$work/cut"
+refuses zone_cut_number "contact_zone_levels.py: error: $work/cut-number.steps.csv: $cut_number" \
+  "$py" "$tools/contact_zone_levels.py" "$work/cut-number"
+refuses zone_no_contact "contact_zone_levels.py: error: $work/short.steps.csv: no step with active > 0" \
+  "$py" "$tools/contact_zone_levels.py" "$work/short"
+# check_first_contact.py
+refuses first_no_argument "check_first_contact.py: error: the following arguments are required: base" \
+  "$py" "$tools/check_first_contact.py"
+refuses first_bad_level "check_first_contact.py: error: argument initial_level: invalid int value: 'x'" \
+  "$py" "$tools/check_first_contact.py" "$work/membrane" x
+refuses first_cut "check_first_contact.py: error: $work/cut.steps.csv: not a complete table" \
+  "$py" "$tools/check_first_contact.py" "$work/cut"
+# compare_step_tables.py
+refuses tables_missing "compare_step_tables.py: error: $work/nothing.steps.csv: no such file" \
+  "$py" "$tools/compare_step_tables.py" "$work/nothing" "$work/membrane"
+refuses tables_cut_number "compare_step_tables.py: error: $work/cut-number.steps.csv: $cut_number" \
+  "$py" "$tools/compare_step_tables.py" "$work/membrane" "$work/cut-number"
+refuses tables_no_argument "compare_step_tables.py: error: the following arguments are required: base_b" \
+  "$py" "$tools/compare_step_tables.py" "$work/membrane"
+# check_adaptive_meshes.py, check_mirror_symmetry.py, compare_sensitivity.py, deck_from_exodus.py
+refuses meshes_cut "check_adaptive_meshes.py: error: $work/cut-number.steps.csv: $cut_number" \
+  "$py" "$tools/check_adaptive_meshes.py" "$work/cut-number"
+refuses meshes_every "check_adaptive_meshes.py: error: argument --every: 0: not a positive number" \
+  "$py" "$tools/check_adaptive_meshes.py" "$work/membrane" --every 0
+refuses meshes_missing "check_adaptive_meshes.py: error: $work/nothing.e: no such file" \
+  "$py" "$tools/check_adaptive_meshes.py" "$work/nothing"
+refuses mirror_no_argument "check_mirror_symmetry.py: error: the following arguments are required: base" \
+  "$py" "$tools/check_mirror_symmetry.py"
+refuses sensitivity_no_argument "compare_sensitivity.py: error: the following arguments are required: dir" \
+  "$py" "$tools/compare_sensitivity.py"
+refuses sensitivity_missing "compare_sensitivity.py: error: $work/paper.np1.steps.csv: no such file" \
+  "$py" "$tools/compare_sensitivity.py" "$work"
+refuses deck_no_argument "deck_from_exodus.py: error: the following arguments are required: exodus_file" \
+  "$py" "$tools/deck_from_exodus.py"
 
 /usr/bin/python3 "$src/tools/deck_from_exodus.py" "$work/membrane.e" > "$work/as-run.xml" || fail "no deck from the Exodus file"
 "$signorini" --output-dir "$work" --set 'Output/Basename=again' "$work/as-run.xml" > "$work/again.log" 2>&1 ||
@@ -100,5 +183,5 @@ expect_error bar_missing "plot_bar.py: error: $work/nothing.cycles.csv: no such 
   { cat "$work/exo-again.log"; fail "the recorded Exodus-mesh deck does not run from another folder"; }
 /usr/bin/python3 "$src/tools/compare_step_tables.py" "$work/exo" "$work/exo-again" ||
   fail "the recorded Exodus-mesh deck ran to other step tables"
-echo "plots drawn; missing, non-adaptive and cut-short runs refused in one line, nothing written;" \
-  "the deck from an Exodus file reruns the run bit for bit"
+echo "plots drawn; missing arguments, missing, non-adaptive, cut-short and not comparable runs refused in one line," \
+  "nothing written; the deck from an Exodus file reruns the run bit for bit"
