@@ -284,7 +284,10 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
     SIGNORINI_USER_ERROR("--set '" << spec << "': '" << join(walked, key) << "' is a sublist: set one of its entries, e.g. --set '"
                                    << join(walked, key) << "/<key>=value' (--print-parameters lists them)");
   if (!v->isParameter(key)) {
-    const std::string guess = closestName(key, names(*v));
+    std::string guess = closestName(key, names(*v));
+    if (walked.empty())  // a key given without its sublist ("Refinement Level" for "Mesh/Refinement Level")
+      for (auto it = v->begin(); guess.empty() && it != v->end(); ++it)
+        if (v->entry(it).isList() && v->sublist(v->name(it)).isParameter(key)) guess = v->name(it) + "/" + key;
     SIGNORINI_USER_ERROR("--set '" << spec << "': unknown parameter '" << key << "' "
                                    << (walked.empty() ? std::string("at the top level") : "in sublist '" + walked + "'")
                                    << (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));

@@ -9,6 +9,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
@@ -140,7 +141,7 @@ bool canCreateIn(const std::string& dir) {
 void ensureWritableDirectory(const std::string& dir, const std::string& key, const Comm& comm, bool create) {
   core::onRootCollectively(comm, [&] {
     std::vector<std::string> created;
-    std::string partial, deepest = ".";
+    std::string partial, deepest = ".", why;
     bool ok = true;
     std::stringstream ss(dir);
     if (!dir.empty() && dir[0] == '/') partial = deepest = "/";
@@ -153,6 +154,7 @@ void ensureWritableDirectory(const std::string& dir, const std::string& key, con
         deepest = partial;
       } else if (errno != ENOENT) {
         ok = false;  // e.g. ENOTDIR: a file on the way
+        why = " (" + std::string(std::strerror(errno)) + ")";
       } else if (!create) {
         break;  // the rest would be created in `deepest`
       } else if (::mkdir(partial.c_str(), 0755) == 0) {
@@ -162,14 +164,15 @@ void ensureWritableDirectory(const std::string& dir, const std::string& key, con
         deepest = partial;  // another process made it since the stat above (runs started together)
       } else {
         ok = false;
+        why = " (" + std::string(std::strerror(errno)) + ")";
       }
     }
-    ok = ok && canCreateIn(deepest);
+    if (ok && !canCreateIn(deepest)) ok = false, why = " (no file can be created in '" + deepest + "')";
     if (ok)
       io::removeOnFailure(created);
     else
       for (auto it = created.rbegin(); it != created.rend(); ++it) ::rmdir(it->c_str());
-    if (!ok) SIGNORINI_USER_ERROR(key << ": cannot write to '" << dir << "'");
+    if (!ok) SIGNORINI_USER_ERROR(key << ": cannot write to '" << dir << "'" << why);
   });
 }
 
@@ -745,8 +748,12 @@ void Simulation::checkMeshFits(double globalCells, const std::string& cause, dou
   if (!why.str().empty())
     SIGNORINI_USER_ERROR(cause << ": a mesh of " << std::setprecision(4) << globalCells << " cells on "
                                << impl_->comm->getSize() << " rank(s): " << why.str()
-                               << "; choose a coarser mesh, or more memory (ranks on more machines, "
-                                  "Parallel/Memory Per Rank)");
+                               << (perRank > indexLimit
+                                       ? "; choose a coarser mesh, or at least " +
+                                             std::to_string(static_cast<long long>(std::ceil(globalCells / indexLimit))) +
+                                             " ranks"
+                                       : std::string("; choose a coarser mesh, or more memory (ranks on more machines, "
+                                                     "Parallel/Memory Per Rank)")));
 }
 
 RunSummary Simulation::run() {

@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_ParameterEntryXMLConverterDB.hpp>
 #include <Teuchos_StringInputSource.hpp>
 #include <Teuchos_XMLObject.hpp>
 #include <Teuchos_XMLParameterListReader.hpp>
@@ -33,6 +34,12 @@ void checkEntries(const Teuchos::XMLObject& node, const std::string& path, const
       checkEntries(child, full, file);
     } else if (child.getTag() == "Parameter" && child.hasAttribute("type") && child.hasAttribute("value")) {
       const std::string type = child.getAttribute("type"), value = child.getAttribute("value");
+      try {
+        Teuchos::ParameterEntryXMLConverterDB::getConverter(child);
+      } catch (std::exception&) {  // Teuchos names neither the entry nor the line
+        SIGNORINI_USER_ERROR(file << ": '" << full << "' has the type \"" << type
+                                  << "\", which is not a parameter type (int, double, bool or string)");
+      }
       double x;
       int i;
       if (type == "double" && core::readDouble(value, x) != core::NumberText::valid)

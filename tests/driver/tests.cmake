@@ -91,6 +91,9 @@ signorini_add_bad_deck_test(malformed_xml ${decks}/malformed.xml
 signorini_add_bad_deck_test(missing_deck ${decks}/does-not-exist.xml
   "does-not-exist[.]xml: cannot open the deck"
   "missing or unreadable file")
+# A type Teuchos has no converter for: its message named neither the entry nor the line.
+signorini_add_bad_deck_test(unknown_parameter_type ${decks}/unknown-type.xml
+  "unknown-type[.]xml: 'Mesh/Cells X' has the type \"integer\", which is not a parameter type [(]int, double, bool or string[)]")
 signorini_add_bad_deck_test(duplicate_key ${decks}/duplicate-key.xml
   "duplicate-key[.]xml: 'Time Integration/Final Time' is given twice")
 signorini_add_bad_deck_test(directory_as_deck ${decks}
@@ -173,19 +176,23 @@ signorini_add_bad_deck_test(bad_expression ${decks}/bad-expression.xml
 # the working directory, must stay empty).
 signorini_add_driver_test(unwritable_output_dir_under_file EXIT 1
   ARGS --output-dir /dev/null/out ${decks}/good.xml
-  REGEX "--output-dir: cannot write to '/dev/null/out'")
+  REGEX "--output-dir: cannot write to '/dev/null/out' [(]Not a directory[)]")
 signorini_add_driver_test(unwritable_output_directory_key EXIT 1
   ARGS --set "Output/Directory=/dev/null/out" ${decks}/good.xml
   REGEX "Output/Directory: cannot write to '/dev/null/out'")
 signorini_add_driver_test(unwritable_output_dir_in_proc EXIT 1
   ARGS --output-dir /proc/signorini-not-writable ${decks}/good.xml
-  REGEX "--output-dir: cannot write to '/proc/signorini-not-writable'")
+  REGEX "--output-dir: cannot write to '/proc/signorini-not-writable' [(]")
 
 # --set overrides are validated like the deck.
 signorini_add_driver_test(set_unknown_key EXIT 1
   ARGS --output-dir {OUT} --set "Time Integration/Time Stp=0.001" ${decks}/good.xml
   REGEX "--set 'Time Integration/Time Stp=0[.]001': unknown parameter 'Time Stp'"
         "did you mean 'Time Step'")
+# A key given without its sublist: the message names the sublist that has it.
+signorini_add_driver_test(set_key_without_sublist EXIT 1
+  ARGS --output-dir {OUT} --set "Refinement Level=3" ${decks}/good.xml
+  REGEX "--set 'Refinement Level=3': unknown parameter 'Refinement Level' at the top level [(]did you mean 'Mesh/Refinement Level'[?][)]")
 signorini_add_driver_test(set_bad_double EXIT 1
   ARGS --output-dir {OUT} --set "Time Integration/Time Step=fast" ${decks}/good.xml
   REGEX "--set 'Time Integration/Time Step=fast': 'fast' is not a valid double")
