@@ -354,22 +354,35 @@ std::vector<double> bruteForce(const std::vector<double>& Q, const std::vector<d
 // (obstacle height, Schur preconditioner, Newton step solver)
 class ContactQPTest : public ::testing::TestWithParam<std::tuple<double, std::string, std::string>> {};
 
+/// The unit square of 8 x 8 cells, clamped on the left, contact on the right (4 segments), the
+/// step matrix for k = 0.05 and a load that moves the body towards the obstacle u >= g.
+struct PushedSquare {
+  test::TestMesh tm{0.0, 1.0, 0.0, 1.0, 1, 1, 3};
+  const mesh::Q1Mesh& m = tm.build();
+  const std::vector<char> dir = m.nodesOnSegments(kLeft);
+  const fem::Q1Assembler asmb{m, dir};
+  const double k = 0.05;
+  const RCP<CrsMatrix> A = asmb.assembleOperator(1.0, 0.5 * k * k, 1.0, 1.0);
+  const fem::ContactCoupling B{m, kRight, fem::ContactCoupling::SegmentSize::TwoEdges, dir};
+  const int ns = B.numSegments();
+  Vector F{m.ownedMap()};
+  PushedSquare() { asmb.assembleLoad(core::Expression("-x*(1 + y)", "test"), 0.0, 1.0, F); }
+};
+
 TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
   const double obstacleHeight = std::get<0>(GetParam());
-  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 1, 1, 3);  // 8 x 8 cells, contact on the right: 4 segments
-  const auto& m = tm.build();
-  const auto dir = m.nodesOnSegments(kLeft);
-  fem::Q1Assembler asmb(m, dir);
-  const double k = 0.05;
-  auto A = asmb.assembleOperator(1.0, 0.5 * k * k, 1.0, 1.0);
-  fem::ContactCoupling B(m, kRight, fem::ContactCoupling::SegmentSize::TwoEdges, dir);
-  const int ns = B.numSegments();
+  const PushedSquare square;
+  const auto& m = square.m;
+  const auto& asmb = square.asmb;
+  const auto& A = square.A;
+  const auto& B = square.B;
+  const auto& F = square.F;
+  const double k = square.k;
+  const int ns = square.ns;
   ASSERT_EQ(ns, 4);
   solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()), m.comm());
   solver.setOperator(A, 1.0);
-  // Load: the body moves towards the obstacle u >= g with g tilted, so some segments touch.
-  Vector F(m.ownedMap());
-  asmb.assembleLoad(core::Expression("-x*(1 + y)", "test"), 0.0, 1.0, F);
+  // The obstacle is tilted, so some segments touch.
   const auto gbar = B.weightedObstacle(core::Expression(std::to_string(obstacleHeight) + " + 0.3*y", "test"), 0.0);
 
   // Dense reference.
@@ -436,23 +449,18 @@ TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
 }
 
 // Whatever the KKT tolerance, down to the smallest allowed, a result that is returned satisfies the
-// KKT conditions to that tolerance (checked on u = A^{-1}(F - B lambda) solved here to rounding); a
-// tolerance below what rounding allows is a SolverError, on either Newton step solver.
+// KKT conditions to that tolerance (checked on u = A^{-1}(F - B lambda) solved here to rounding),
+// on either Newton step solver; the QP may instead stop with a SolverError.
 TEST(ContactQP, ReturnsOnlyResultsWithinItsTolerance) {
-  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 1, 1, 3);
-  const auto& m = tm.build();
-  const auto dir = m.nodesOnSegments(kLeft);
-  fem::Q1Assembler asmb(m, dir);
-  const double k = 0.05;
-  auto A = asmb.assembleOperator(1.0, 0.5 * k * k, 1.0, 1.0);
-  fem::ContactCoupling B(m, kRight, fem::ContactCoupling::SegmentSize::TwoEdges, dir);
-  const int ns = B.numSegments();
+  const PushedSquare square;
+  const auto& m = square.m;
+  const auto& B = square.B;
+  const auto& F = square.F;
+  const int ns = square.ns;
   core::ParameterList linear;
   linear.set("Relative Tolerance", 1e-15);
   solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters(), linear), m.comm());
-  solver.setOperator(A, 1.0);
-  Vector F(m.ownedMap());
-  asmb.assembleLoad(core::Expression("-x*(1 + y)", "test"), 0.0, 1.0, F);
+  solver.setOperator(square.A, 1.0);
   const auto gbar = B.weightedObstacle(core::Expression("-1.6 + 0.3*y", "test"), 0.0);
   for (const char* newton : {"CG", "cached columns"})
     for (double tol : {1e-9, 1e-12, 1e-13, 1e-14}) {
@@ -460,7 +468,7 @@ TEST(ContactQP, ReturnsOnlyResultsWithinItsTolerance) {
       cp.set("KKT Tolerance", tol);
       cp.set("Newton Step Solver", newton);
       solvers::ContactQP qp(validated(solvers::ContactQP::getValidParameters(), cp), 1.0);
-      qp.setSystem(*A, B, 1.0, {});
+      qp.setSystem(*square.A, B, 1.0, {});
       for (int pass = 0; pass < 2; ++pass) {  // cached columns serve from the second solve on
         std::vector<double> lambda(ns, 0.0), G;
         Vector u(m.ownedMap());
