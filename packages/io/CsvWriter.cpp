@@ -47,7 +47,8 @@ void CsvWriter::row(const std::vector<double>& values) {
 
 void CsvWriter::commit() {
   if (done_) return;
-  out_.close();
+  out_.close();  // a failed write (disk full) leaves the stream failed; the rows were flushed as they came
+  if (!out_) SIGNORINI_USER_ERROR("cannot write output file '" << path_ << ".part' (disk full or quota exceeded?)");
   publish(path_ + ".part", path_);
   done_ = committed_ = true;
 }

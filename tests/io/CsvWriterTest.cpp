@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "CsvWriter.hpp"
+#include "Error.hpp"
 
 using namespace signorini;
 
@@ -40,5 +41,24 @@ TEST(CsvWriter, WritesTheShortestTextThatReadsBackToEveryBit) {
   for (size_t i = 0; i < values.size(); ++i) {
     EXPECT_EQ(std::memcmp(&table.rows[0][i], &values[i], sizeof(double)), 0) << columns[i] << " " << values[i];
   }
+  std::remove(path.c_str());
+}
+
+// A full disk (the file is /dev/full, which refuses every write) fails the commit with a message
+// naming the file, and nothing is published; the table used to be renamed with the rows it had.
+TEST(CsvWriter, AWriteThatFailsFailsTheCommit) {
+  const std::string path = "/tmp/signorini-csv-full-" + std::to_string(::getpid()) + ".csv";
+  ASSERT_EQ(::symlink("/dev/full", (path + ".part").c_str()), 0);
+  io::CsvWriter csv(path, {"step", "energy"});
+  csv.row({1, 0.25});
+  try {
+    csv.commit();
+    ADD_FAILURE() << "the commit succeeded";
+  } catch (const core::UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot write output file '" + path + ".part'"), std::string::npos) << e.what();
+  }
+  EXPECT_NE(::access(path.c_str(), F_OK), 0) << "published";
+  csv.remove();
+  EXPECT_NE(::access((path + ".part").c_str(), F_OK), 0) << "left behind";
   std::remove(path.c_str());
 }
