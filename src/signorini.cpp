@@ -123,6 +123,7 @@ int main(int argc, char** argv) {
   }
 
   int failures = 0, finished = 0;  // decks that failed; decks that ran (or were checked) to their end
+  std::string lastWritten;         // the deck whose results were written last
   std::map<std::string, std::string> deckOfBase;  // output bases of this batch (normalised)
   // A signal between decks (or during a --check) stops the batch; the decks after it do not run.
   auto stopIfInterrupted = [&](const std::string& where) {
@@ -135,6 +136,7 @@ int main(int argc, char** argv) {
   };
   try {
     for (const auto& path : decks) {
+      lastWritten.clear();
       stopIfInterrupted("before " + path + ", which did not run (nor any deck after it)");
       out << "signorini: " << (checkOnly ? "checking " : "running ") << path << " on " << comm->getSize() << " rank(s)"
           << std::endl;
@@ -166,6 +168,7 @@ int main(int argc, char** argv) {
         out << std::endl;
         for (const auto& f : summary.files) out << "  wrote " << f << std::endl;
         ++finished;
+        lastWritten = path;
       } catch (signorini::core::Interrupted& e) {  // the run's files are gone; the remaining decks do not run
         if (rank == 0) std::cerr << "signorini: " << path << ": " << e.what() << "; its files were removed" << std::endl;
         throw;
@@ -184,7 +187,10 @@ int main(int argc, char** argv) {
                     << std::endl;
       }
     }
-    if (checkOnly) stopIfInterrupted("during the check");
+    // A signal after the last deck's last check: its results, if it wrote them, are kept.
+    stopIfInterrupted(checkOnly ? std::string("during the check")
+                      : lastWritten.empty() ? std::string("after the last deck ended")
+                                            : "after " + lastWritten + " was written (its results are kept)");
   } catch (signorini::core::Interrupted& e) {  // reported where it was caught first
     if (decks.size() > 1)
       out << "signorini: batch interrupted: " << finished << " of " << decks.size() << " deck(s) "

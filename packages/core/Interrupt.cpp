@@ -32,7 +32,8 @@ extern "C" void recordSignal(int signal) {
     clock_gettime(CLOCK_MONOTONIC, &firstAt);
     if (announce) {
       static const char notice[] =
-          "\nsignorini: stopping at the next time step and removing this run's files (signal again: stop at once)\n";
+          "\nsignorini: stopping at the next time step; the run removes its files unless they are written "
+          "already (signal again: stop at once)\n";
       [[maybe_unused]] const auto written = ::write(STDERR_FILENO, notice, sizeof notice - 1);
     }
     return;
