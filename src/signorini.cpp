@@ -95,13 +95,17 @@ int main(int argc, char** argv) {
         return 2;
       }
       const std::string value = argv[++i];
+      if (arg == "--set" && (value.find('=') == std::string::npos || value.find('=') == 0)) {
+        if (rank == 0) std::cerr << "signorini: --set '" << value << "': expected 'Sublist/key=value'\n";
+        return 2;
+      }
       // Given twice, the last one wins (as scripts that add to a command expect), with a warning.
       std::string earlier;
       // (an empty --output-dir is refused below, so a non-empty one was given)
       if (arg == "--output-dir" && !outputDir.empty() && value != outputDir) earlier = "--output-dir '" + outputDir + "'";
       const auto keyOf = [](const std::string& spec) { return spec.substr(0, spec.find('=')); };
       for (const auto& o : overrides)
-        if (arg == "--set" && value.find('=') != std::string::npos && keyOf(o) == keyOf(value) && o != value)
+        if (arg == "--set" && keyOf(o) == keyOf(value) && o != value)
           earlier = "--set '" + o + "'";
       if (!earlier.empty() && rank == 0)
         std::cerr << "signorini: warning: " << arg << " '" << value << "' replaces the earlier " << earlier << "\n";

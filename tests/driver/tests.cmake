@@ -206,6 +206,9 @@ signorini_add_driver_test(usage_unknown_option EXIT 2
 signorini_add_driver_test(usage_option_without_value EXIT 2
   ARGS --output-dir
   REGEX "--output-dir needs a value")
+signorini_add_driver_test(usage_set_without_value EXIT 2
+  ARGS --set "Mesh/Refinement Level" ${decks}/good.xml
+  REGEX "--set 'Mesh/Refinement Level': expected 'Sublist/key=value'")
 # An option given twice: the last one wins (scripts add overrides to a command), with a warning
 # naming both.
 signorini_add_driver_test(set_repeated_last_wins EXIT 0
