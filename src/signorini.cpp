@@ -164,6 +164,7 @@ int main(int argc, char** argv) {
           continue;
         }
         const auto summary = sim.run();
+        lastWritten = path;  // the files have their final names
         out << "signorini: " << path << " done: " << summary.steps << " steps, " << summary.dofsPerStep
             << " unknowns per step, " << summary.wallSeconds << " s" << std::endl;
         out << "  phase seconds:";
@@ -172,7 +173,6 @@ int main(int argc, char** argv) {
         out << std::endl;
         for (const auto& f : summary.files) out << "  wrote " << f << std::endl;
         ++finished;
-        lastWritten = path;
       } catch (signorini::core::Interrupted& e) {  // the run's files are gone; the remaining decks do not run
         if (rank == 0) std::cerr << "signorini: " << path << ": " << e.what() << "; its files were removed" << std::endl;
         throw;

@@ -331,7 +331,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       // it, written as the run's result, and a further one would repeat it again.
       if (unchanged && l < cycles - 1)
         core::rootOut(rank) << "signorini: cycle " << l << " is the last: the marking of cycle " << l - 1
-                            << " refined no cell of any step (its indicators are 0), so a further cycle would repeat it"
+                            << " left every step's mesh as it was (no cell marked), so a further cycle would repeat it"
                             << std::endl;
       const bool lastPlanned = l == cycles - 1 || atMaximum || unchanged;
       double etaMax = 0;

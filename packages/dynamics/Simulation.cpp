@@ -265,6 +265,7 @@ struct Simulation::Impl {
   std::unique_ptr<CoarseProblem> coarseProblem;
   long discretisations = 0;  ///< built so far (their ids)
   int currentStep = 0;       ///< the step runPass is at (0: the initial state)
+  bool segmentsChecked = false;  ///< checkSegmentsHaveEdges ran (on the run's first mesh, the deck's)
 
   std::unique_ptr<fem::Assembler> makeAssembler(const mesh::Q1Mesh& m) const {
     if (problem->components() == 1) return std::make_unique<fem::Q1Assembler>(m, m.nodesOnSegments(problem->dirichletMask));
@@ -279,6 +280,8 @@ struct Simulation::Impl {
   }
   /// Throws a user error naming the Problem key and the segment if a segment that a boundary
   /// condition uses contains no boundary edge of \p mesh (e.g. "top, x >= 3" on a unit square).
+  /// For the deck's mesh: edges belong to segments by their midpoints, so a segment narrower than
+  /// an edge may have edges on some refinements and none on others.
   void checkSegmentsHaveEdges(const mesh::Q1Mesh& mesh) const {
     const std::pair<const char*, unsigned> uses[] = {{"Dirichlet Segments", problem->dirichletMask},
                                                      {"Dirichlet X Segments", problem->componentDirichletMask[0]},
@@ -359,7 +362,7 @@ struct Simulation::Impl {
     if (auto* elasticity = dynamic_cast<const fem::ElasticityAssembler*>(d->assembler.get()))
       d->solver->setNearNullspace(elasticity->rigidBodyModes(), 2);
     d->solver->setOperator(d->A, d->courant);
-    checkSegmentsHaveEdges(*d->mesh);
+    if (!segmentsChecked) checkSegmentsHaveEdges(*d->mesh), segmentsChecked = true;
     if (problem->hasObstacle) {
       // Contact where the constrained unknown is fixed (also under another segment name, or by a
       // Dirichlet X/Y segment on the contact component): a user error, on every mesh.
@@ -745,15 +748,19 @@ void Simulation::checkMeshFits(double globalCells, const std::string& cause, dou
   else if (need > have)
     why << "at least " << need / 1e9 << " GB per rank, more than " << (budget > 0 ? "Parallel/Memory Per Rank = " : "this machine's ")
         << have / 1e9 << " GB per rank";
+  const long long ranksForIndices = static_cast<long long>(std::ceil(globalCells / indexLimit));
+  std::ostringstream memoryThere;  // what each of those ranks needs
+  memoryThere << std::setprecision(3)
+              << (globalCells * 750.0 * nc * nc + storedCells) / static_cast<double>(ranksForIndices) / 1e9;
   if (!why.str().empty())
     SIGNORINI_USER_ERROR(cause << ": a mesh of " << std::setprecision(4) << globalCells << " cells on "
                                << impl_->comm->getSize() << " rank(s): " << why.str()
-                               << (perRank > indexLimit
-                                       ? "; choose a coarser mesh, or at least " +
-                                             std::to_string(static_cast<long long>(std::ceil(globalCells / indexLimit))) +
-                                             " ranks"
-                                       : std::string("; choose a coarser mesh, or more memory (ranks on more machines, "
-                                                     "Parallel/Memory Per Rank)")));
+                               << "; choose a coarser mesh, or "
+                               << (perRank > indexLimit ? "at least " + std::to_string(ranksForIndices) +
+                                                              " ranks (32-bit local indices), each with " +
+                                                              memoryThere.str() + " GB"
+                                                        : std::string("more memory (ranks on more machines, "
+                                                                      "Parallel/Memory Per Rank)")));
 }
 
 RunSummary Simulation::run() {
@@ -1020,7 +1027,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         auto scope = I.timers.scope("estimator");
         extras = hook(StepView{n, t, k, beta, *d->forest, *d->mesh, *d->assembler, d->coupling.get(), *I.problem, *u,
                                pred, lambda, d->id, carried,
-                               I.projectionMass(*d), d->K});
+                               d->lumpedMass ? Teuchos::null : RCP<const CrsMatrix>(d->M), d->K});
         carried = extras.carry;
       }
       tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();
