@@ -163,6 +163,14 @@ signorini_add_driver_test(neumann_segment_without_edges EXIT 1
   ARGS --output-dir {OUT} --set "Mesh/Boundary Segments/load=top, x >= 3" --set "Problem/Neumann Segments=load"
        --set "Problem/Neumann Data=1" ${decks}/good.xml
   REGEX "Problem/Neumann Segments: the segment 'load' contains no boundary edge of the mesh")
+# Only the deck's mesh is checked: a segment narrower than an edge ([0.6, 0.65] holds the midpoint
+# of the edge [0.5, 0.75], of neither of its halves) loses its edges on the next cycle's mesh.
+signorini_add_driver_test(segment_without_edges_on_a_refined_mesh EXIT 0
+  ARGS --output-dir {OUT} --set "Mesh/Boundary Segments/load=top, x >= 0.6, x <= 0.65" --set "Problem/Neumann Segments=load"
+       --set "Problem/Neumann Data=1" --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=2"
+       --set "Output/Write Exodus=false" ${decks}/good.xml
+  REGEX "cycle 1: total unknowns"
+  FILES good.cycle0.steps.csv good.steps.csv good.cycles.csv)
 # An exact solution that is not a finite number where the errors are measured.
 signorini_add_driver_test(exact_solution_not_finite EXIT 1
   ARGS --output-dir {OUT} --set "Problem/Exact Solution=sqrt(x - 2)" ${decks}/good.xml
