@@ -54,6 +54,31 @@ void checkEntries(const Teuchos::XMLObject& node, const std::string& path, const
   }
 }
 
+/// Throws a user error naming the line if \p text is not UTF-8 (e.g. Latin-1 from an old editor):
+/// the bytes would reach the Exodus records and CSV headers as they are.
+void checkUtf8(const std::string& text, const std::string& path) {
+  int line = 1;
+  for (size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    if (c == '\n') ++line;
+    // Length of the sequence and the smallest code point it may encode (no overlong forms).
+    const int length = c < 0x80 ? 1 : (c >> 5) == 0x6 ? 2 : (c >> 4) == 0xE ? 3 : (c >> 3) == 0x1E ? 4 : 0;
+    bool valid = length > 0 && i + length <= text.size();
+    unsigned long code = length == 1 ? c : length == 2 ? c & 0x1Fu : length == 3 ? c & 0x0Fu : c & 0x07u;
+    for (int k = 1; valid && k < length; ++k) {
+      const auto next = static_cast<unsigned char>(text[i + k]);
+      valid = (next >> 6) == 0x2;
+      code = (code << 6) | (next & 0x3Fu);
+    }
+    static const unsigned long smallest[5] = {0, 0, 0x80, 0x800, 0x10000};
+    valid = valid && code >= smallest[length] && code <= 0x10FFFF && !(code >= 0xD800 && code <= 0xDFFF);
+    if (!valid)
+      SIGNORINI_USER_ERROR(path << ": line " << line << " is not UTF-8 (byte 0x" << std::hex << static_cast<int>(c)
+                                << "); save the deck as UTF-8");
+    i += static_cast<size_t>(length);
+  }
+}
+
 /// The deck's text, read once (a deck from a pipe cannot be read a second time).
 std::string readText(const std::string& path) {
   struct stat info;
@@ -70,6 +95,7 @@ Teuchos::ParameterList parseDeck(const std::string& text, const std::string& pat
   Teuchos::ParameterList deck;
   const std::string byteOrderMark = "\xEF\xBB\xBF";  // UTF-8, as some editors write it; the parser refuses it
   const bool marked = text.compare(0, byteOrderMark.size(), byteOrderMark) == 0;
+  checkUtf8(text, path);
   try {
     const Teuchos::XMLObject xml = Teuchos::StringInputSource(marked ? text.substr(byteOrderMark.size()) : text).getObject();
     checkEntries(xml, "", path);

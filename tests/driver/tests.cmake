@@ -91,6 +91,9 @@ signorini_add_bad_deck_test(malformed_xml ${decks}/malformed.xml
 signorini_add_bad_deck_test(missing_deck ${decks}/does-not-exist.xml
   "does-not-exist[.]xml: cannot open the deck"
   "missing or unreadable file")
+# Decks are UTF-8: other bytes (Latin-1 from an old editor) would reach the Exodus records as they are.
+signorini_add_bad_deck_test(deck_not_utf8 ${decks}/not-utf8.xml
+  "not-utf8[.]xml: line 1 is not UTF-8 [(]byte 0xe9[)]; save the deck as UTF-8")
 # A type Teuchos has no converter for: its message named neither the entry nor the line.
 signorini_add_bad_deck_test(unknown_parameter_type ${decks}/unknown-type.xml
   "unknown-type[.]xml: 'Mesh/Cells X' has the type \"integer\", which is not a parameter type [(]int, double, bool or string[)]")
