@@ -1,7 +1,7 @@
 // End-to-end facts of plane strain elastodynamics with vector Q1 elements: a manufactured
 // solution converges at second order in L2 and first in H1 (h and k halved together), and a
 // strip in uniaxial strain hitting a flat obstacle follows the closed-form one-dimensional wave
-// solution with speed sqrt((lambda + 2 mu) / rho).
+// solution with speed sqrt((lambda + 2 mu) / rho), in each of the four contact directions.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -149,6 +149,73 @@ TEST(Elasticity, UniaxialStrainFollowsTheOneDimensionalWaveSolution) {
     EXPECT_GT(rate, 0.9) << "level " << i;  // the solution has a kink, as for the membrane
   }
   EXPECT_LT(l2.back(), 0.01 * 0.25);  // the L2 norm scales by sqrt(width) / c = 0.25 against the membrane
+}
+
+// The strip of the test above turned so that the obstacle lies below, above, left and right of it
+// (Contact Direction +y, -y, +x, -x). The meshes are reflections and rotations of each other, so
+// every step must give the same contact force and error as the original, up to rounding; the
+// exact solution, turned alike, checks that each one falls the right way.
+TEST(Elasticity, TheStripGivesTheSameContactInEveryDirection) {
+  const double nu = 0.3, rho = 1.0, c = 2.0, g = -0.25;
+  const double E = c * c * rho * (1 + nu) * (1 - 2 * nu) / (1 - nu);
+  const auto U = [&](const char* distance) { return "(" + oneDimensional(distance, "2*t", c * g) + ")/2"; };
+  struct Orientation {
+    const char* direction;      // Contact Direction
+    const char* contact;        // the side the obstacle is on
+    const char* clamped;        // the opposite side
+    const char* rollers;        // Dirichlet X or Y Segments: the two other sides
+    const char* rollerKey;
+    double x1, y1;              // the strip [0, x1] x [0, y1]
+    int cellsX, cellsY;
+    std::string velocity, exact;  // toward the obstacle; the turned solution
+  };
+  const std::vector<Orientation> orientations = {
+      {"+y", "bottom", "top", "left, right", "Dirichlet X Segments", 0.25, 1.0, 1, 4, "0, -sin(pi*(1-y)/2)", "0, " + U("1-y")},
+      {"-y", "top", "bottom", "left, right", "Dirichlet X Segments", 0.25, 1.0, 1, 4, "0, sin(pi*y/2)", "0, -" + U("y")},
+      {"+x", "left", "right", "bottom, top", "Dirichlet Y Segments", 1.0, 0.25, 4, 1, "-sin(pi*(1-x)/2), 0", U("1-x") + ", 0"},
+      {"-x", "right", "left", "bottom, top", "Dirichlet Y Segments", 1.0, 0.25, 4, 1, "sin(pi*x/2), 0", "-" + U("x") + ", 0"}};
+  const int level = 3;
+  std::vector<io::CsvTable> tables;
+  for (const auto& o : orientations) {
+    core::ParameterList deck;
+    auto& p = deck.sublist("Problem");
+    p.set("Type", "plane strain elasticity");
+    p.set("Density", rho);
+    p.set("Young's Modulus", E);
+    p.set("Poisson's Ratio", nu);
+    p.set("Initial Velocity", o.velocity);
+    p.set("Obstacle", number(g));
+    p.set("Contact Direction", o.direction);
+    p.set("Contact Segments", o.contact);
+    p.set("Dirichlet Segments", o.clamped);
+    p.set(o.rollerKey, o.rollers);
+    p.set("Exact Solution", o.exact);
+    auto& m = deck.sublist("Mesh");
+    m.set("X1", o.x1);
+    m.set("Y1", o.y1);
+    m.set("Cells X", o.cellsX);
+    m.set("Cells Y", o.cellsY);
+    m.set("Refinement Level", level);
+    for (const char* side : {"left", "right", "bottom", "top"}) m.sublist("Boundary Segments").set(side, side);
+    deck.sublist("Time Integration").set("Time Step", 0.125 / (1 << level));
+    deck.sublist("Time Integration").set("Final Time", 0.5);
+    tables.push_back(run(deck, std::string("strip") + (o.direction[0] == '+' ? "plus" : "minus") + o.direction[1]));
+  }
+  const auto& reference = tables[0];
+  EXPECT_GT(columnMax(reference, "contact_force"), 0.0);  // the strip hits the obstacle
+  EXPECT_LT(columnMax(reference, "error_l2"), 0.01);      // and follows the exact solution (as above)
+  for (size_t i = 1; i < tables.size(); ++i) {
+    const auto& t = tables[i];
+    ASSERT_EQ(t.rows.size(), reference.rows.size());
+    for (size_t n = 0; n < t.rows.size(); ++n) {
+      for (const char* column : {"contact_force", "error_l2", "energy"}) {
+        const double a = reference.rows[n][reference.column(column)], b = t.rows[n][t.column(column)];
+        EXPECT_NEAR(b, a, 1e-9 * std::abs(a) + 1e-12) << orientations[i].direction << ", " << column << ", step " << n;
+      }
+      EXPECT_EQ(t.rows[n][t.column("active")], reference.rows[n][reference.column("active")])
+          << orientations[i].direction << ", step " << n;
+    }
+  }
 }
 
 }  // namespace
