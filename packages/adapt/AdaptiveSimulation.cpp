@@ -390,13 +390,8 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         if (coarsen > 0 && strategy != "uniform") {
           // Among the cells above the deck's level, as refinement among those below the Maximum
           // Level: spent on cells at the level, the fraction coarsened nothing.
-          std::vector<size_t> coarsenable;
-          std::vector<double> coarsenableIndicator;
-          for (size_t e = 0; e < r.cellIndicator.size(); ++e)
-            if (s.mesh.cellLevel()[e] > baseLevel) coarsenable.push_back(e), coarsenableIndicator.push_back(r.cellIndicator[e]);
-          const std::vector<char> smallest = markSmallest(coarsenableIndicator, coarsen, ties, raw);
-          std::vector<char> small(r.cellIndicator.size(), 0);
-          for (size_t i = 0; i < coarsenable.size(); ++i) small[coarsenable[i]] = smallest[i] && !flags[coarsenable[i]];
+          std::vector<char> small = markSmallestAbove(r.cellIndicator, s.mesh.cellLevel(), baseLevel, coarsen, ties, raw);
+          for (size_t e = 0; e < small.size(); ++e) small[e] = small[e] && !flags[e];
           refined->refineAndCoarsen(flags, small, baseLevel);
           refined->balance();
         } else {

@@ -160,4 +160,16 @@ std::vector<char> markSmallest(const std::vector<double>& indicators, double fra
   return flags;
 }
 
+std::vector<char> markSmallestAbove(const std::vector<double>& indicators, const std::vector<int>& levels,
+                                    int minLevel, double fraction, double tieTolerance, MPI_Comm comm) {
+  std::vector<size_t> above;
+  std::vector<double> aboveIndicator;
+  for (size_t e = 0; e < indicators.size(); ++e)
+    if (levels[e] > minLevel) above.push_back(e), aboveIndicator.push_back(indicators[e]);
+  const std::vector<char> smallest = markSmallest(aboveIndicator, fraction, tieTolerance, comm);
+  std::vector<char> flags(indicators.size(), 0);
+  for (size_t i = 0; i < above.size(); ++i) flags[above[i]] = smallest[i];
+  return flags;
+}
+
 }  // namespace signorini::adapt

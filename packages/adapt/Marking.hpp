@@ -35,4 +35,9 @@ std::vector<char> markBulk(const std::vector<double>& indicators, double fractio
 std::vector<char> markSmallest(const std::vector<double>& indicators, double fraction, double tieTolerance,
                                MPI_Comm comm);
 
+/// markSmallest among the cells whose level (\p levels, one per cell) is above \p minLevel, the
+/// ones coarsening can merge: the fraction counts those cells only, and no other cell is flagged.
+std::vector<char> markSmallestAbove(const std::vector<double>& indicators, const std::vector<int>& levels,
+                                    int minLevel, double fraction, double tieTolerance, MPI_Comm comm);
+
 }  // namespace signorini::adapt

@@ -113,6 +113,35 @@ TEST(Marking, SmallestMarksAtMostTheFraction) {
   EXPECT_LT(maxMarked, minUnmarked);
 }
 
+// Coarsening ranks only the cells above the deck's level: here the cells at the level have the
+// smallest indicators, and markSmallest over all cells would flag them (and nothing that coarsens).
+TEST(Marking, SmallestAboveFlagsOnlyCellsAboveTheLevelAndCountsOnlyThem) {
+  auto comm = Tpetra::getDefaultComm();
+  MPI_Comm raw = core::rawMpiComm(*comm);
+  const auto all = globalIndicators();
+  std::vector<int> allLevels(all.size());
+  long long above = 0;
+  for (size_t i = 0; i < all.size(); ++i) above += (allLevels[i] = all[i] > 5.0 ? 3 : 2) > 2;  // large ones refined
+  size_t offset;
+  const auto mine = localPart(all, comm->getRank(), comm->getSize(), offset);
+  const std::vector<int> myLevels(allLevels.begin() + offset, allLevels.begin() + offset + mine.size());
+  const auto flags = gather(adapt::markSmallestAbove(mine, myLevels, 2, 0.5, 0.0, raw), raw);
+  const long long marked = std::count(flags.begin(), flags.end(), 1);
+  EXPECT_GE(marked, above / 2 - 2);  // half of the cells above the level (ties at the threshold)
+  EXPECT_LE(marked, above / 2);
+  double maxMarked = -1, minUnmarked = 1e300;
+  for (size_t i = 0; i < all.size(); ++i) {
+    if (flags[i]) EXPECT_EQ(allLevels[i], 3) << "cell " << i << " is at the deck's level";
+    if (allLevels[i] == 3) (flags[i] ? maxMarked = std::max(maxMarked, all[i]) : minUnmarked = std::min(minUnmarked, all[i]));
+  }
+  EXPECT_LT(maxMarked, minUnmarked);  // the smallest of them
+  // markSmallest over all cells spends the fraction on the cells at the level.
+  const auto overAll = gather(adapt::markSmallest(mine, 0.5, 0.0, raw), raw);
+  long long overAllAbove = 0;
+  for (size_t i = 0; i < all.size(); ++i) overAllAbove += overAll[i] && allLevels[i] == 3;
+  EXPECT_LT(overAllAbove, marked / 2);
+}
+
 TEST(Marking, DecimalFractionsCountTheCellsTheyMean) {
   // Every two-digit fraction p/100 as a deck gives it, of every N up to 2000 cells, against integer
   // arithmetic; several products evaluate just above or below the integer (0.55 * 100, 0.29 * 100).
