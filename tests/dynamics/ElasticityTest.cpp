@@ -94,38 +94,68 @@ std::string oneDimensional(const std::string& X, const std::string& T, double G)
          T + ")+(" + X + "))/2)/pi + (" + number(G) + ")) - cos(pi*((" + T + ")-(" + X + "))/2)/pi";
 }
 
+/// The strip in uniaxial strain of the tests below, falling onto a flat obstacle; c = 2 and the
+/// obstacle g = -0.25, as U(X, T) of oneDimensional() needs (the deck's material from c and nu).
+struct Strip {
+  static constexpr double nu = 0.3, rho = 1.0, c = 2.0, g = -0.25;
+  const char* direction;        // Contact Direction
+  const char* contact;          // the side the obstacle is on
+  const char* clamped;          // the opposite side
+  const char* rollers;          // the two other sides ...
+  const char* rollerKey;        // ... on rollers: Dirichlet X or Y Segments
+  double x1, y1;                // the strip [0, x1] x [0, y1]
+  int cellsX, cellsY;           // coarse cells
+  const char* velocity;         // toward the obstacle
+  const char* distance;         // from the clamped side, as an expression
+  const char* exactForm;        // the exact solution, U standing for U(distance, c t) / c
+
+  core::ParameterList deck(int level) const {
+    const double E = c * c * rho * (1 + nu) * (1 - 2 * nu) / (1 - nu);  // lambda + 2 mu = c^2 rho
+    std::string exact = exactForm;
+    exact.replace(exact.find('U'), 1, "(" + oneDimensional(distance, "2*t", c * g) + ")/2");
+    core::ParameterList d;
+    auto& p = d.sublist("Problem");
+    p.set("Type", "plane strain elasticity");
+    p.set("Density", rho);
+    p.set("Young's Modulus", E);
+    p.set("Poisson's Ratio", nu);
+    p.set("Initial Velocity", velocity);
+    p.set("Obstacle", number(g));
+    p.set("Contact Direction", direction);
+    p.set("Contact Segments", contact);
+    p.set("Dirichlet Segments", clamped);
+    p.set(rollerKey, rollers);
+    p.set("Exact Solution", exact);
+    auto& m = d.sublist("Mesh");
+    m.set("X1", x1);
+    m.set("Y1", y1);
+    m.set("Cells X", cellsX);
+    m.set("Cells Y", cellsY);
+    m.set("Refinement Level", level);
+    for (const char* side : {"left", "right", "bottom", "top"}) m.sublist("Boundary Segments").set(side, side);
+    // c k / h = 1, as for the membrane's flat obstacle (no chattering of the contact nodes).
+    d.sublist("Time Integration").set("Time Step", 0.125 / (1 << level));
+    d.sublist("Time Integration").set("Final Time", 0.5);
+    return d;
+  }
+};
+
+// The strip [0, 0.25] x [0, 1] and its turns: the obstacle below, above, left and right of it.
+const Strip kStrips[] = {
+    {"+y", "bottom", "top", "left, right", "Dirichlet X Segments", 0.25, 1.0, 1, 4, "0, -sin(pi*(1-y)/2)", "1-y", "0, U"},
+    {"-y", "top", "bottom", "left, right", "Dirichlet X Segments", 0.25, 1.0, 1, 4, "0, sin(pi*y/2)", "y", "0, -U"},
+    {"+x", "left", "right", "bottom, top", "Dirichlet Y Segments", 1.0, 0.25, 4, 1, "-sin(pi*(1-x)/2), 0", "1-x", "U, 0"},
+    {"-x", "right", "left", "bottom, top", "Dirichlet Y Segments", 1.0, 0.25, 4, 1, "sin(pi*x/2), 0", "x", "-U, 0"}};
+
 TEST(Elasticity, UniaxialStrainFollowsTheOneDimensionalWaveSolution) {
   // A strip [0, 0.25] x [0, 1] clamped at the top, on rollers at both sides (u_x = 0), falling with
   // v = -sin(pi (1 - y)/2) onto the obstacle u_y >= g at the bottom: u_x = 0 and u_y(y, t) =
   // U(1 - y, c t) / c with c = sqrt((lambda + 2 mu) / rho) = 2 and U the membrane's solution for
   // the obstacle c g (derivation in docs/uniaxial-strain.md). Valid for c t <= 1.
-  const double nu = 0.3, rho = 1.0, c = 2.0, g = -0.25;
-  const double E = c * c * rho * (1 + nu) * (1 - 2 * nu) / (1 - nu);  // lambda + 2 mu = c^2 rho
-  const std::string exact = "0, (" + oneDimensional("1-y", "2*t", c * g) + ")/2";
+  const Strip& strip = kStrips[0];
   std::vector<double> l2;
   for (int level = 2; level <= 4; ++level) {
-    core::ParameterList deck;
-    auto& p = deck.sublist("Problem");
-    p.set("Type", "plane strain elasticity");
-    p.set("Density", rho);
-    p.set("Young's Modulus", E);
-    p.set("Poisson's Ratio", nu);
-    p.set("Initial Velocity", "0, -sin(pi*(1-y)/2)");
-    p.set("Obstacle", number(g));
-    p.set("Contact Direction", "+y");
-    p.set("Contact Segments", "bottom");
-    p.set("Dirichlet Segments", "top");
-    p.set("Dirichlet X Segments", "left, right");
-    p.set("Exact Solution", exact);
-    auto& m = deck.sublist("Mesh");
-    m.set("X1", 0.25);
-    m.set("Cells X", 1);
-    m.set("Cells Y", 4);
-    m.set("Refinement Level", level);
-    for (const char* side : {"left", "right", "bottom", "top"}) m.sublist("Boundary Segments").set(side, side);
-    // c k / h = 1, as for the membrane's flat obstacle (no chattering of the contact nodes).
-    deck.sublist("Time Integration").set("Time Step", 0.125 / (1 << level));
-    deck.sublist("Time Integration").set("Final Time", 0.5);
+    auto deck = strip.deck(level);
     auto& probes = deck.sublist("Output").sublist("Probes");
     probes.set("bottomLeft", "0.02, 0.0");
     probes.set("bottomRight", "0.23, 0.0");
@@ -138,7 +168,7 @@ TEST(Elasticity, UniaxialStrainFollowsTheOneDimensionalWaveSolution) {
         EXPECT_NEAR(r[t.column(a + ":y")], r[t.column(b + ":y")], 1e-8);
         EXPECT_NEAR(r[t.column(a + ":x")], 0.0, 1e-12);
       }
-      EXPECT_GE(r[t.column("probe:bottomLeft:y")], g - 1e-8);  // never below the obstacle
+      EXPECT_GE(r[t.column("probe:bottomLeft:y")], Strip::g - 1e-8);  // never below the obstacle
     }
     EXPECT_GT(columnMax(t, "contact_force"), 0.0);
     l2.push_back(columnMax(t, "error_l2"));
@@ -151,56 +181,14 @@ TEST(Elasticity, UniaxialStrainFollowsTheOneDimensionalWaveSolution) {
   EXPECT_LT(l2.back(), 0.01 * 0.25);  // the L2 norm scales by sqrt(width) / c = 0.25 against the membrane
 }
 
-// The strip of the test above turned so that the obstacle lies below, above, left and right of it
-// (Contact Direction +y, -y, +x, -x). The meshes are reflections and rotations of each other, so
-// every step must give the same contact force and error as the original, up to rounding; the
-// exact solution, turned alike, checks that each one falls the right way.
+// The strip turned so that the obstacle lies below, above, left and right of it (Contact
+// Direction +y, -y, +x, -x). The meshes are reflections and rotations of each other, so every step
+// must give the same contact force, energy and active set as the original, up to rounding, and the
+// same error against the exact solution turned alike (which checks that each falls the right way).
 TEST(Elasticity, TheStripGivesTheSameContactInEveryDirection) {
-  const double nu = 0.3, rho = 1.0, c = 2.0, g = -0.25;
-  const double E = c * c * rho * (1 + nu) * (1 - 2 * nu) / (1 - nu);
-  const auto U = [&](const char* distance) { return "(" + oneDimensional(distance, "2*t", c * g) + ")/2"; };
-  struct Orientation {
-    const char* direction;      // Contact Direction
-    const char* contact;        // the side the obstacle is on
-    const char* clamped;        // the opposite side
-    const char* rollers;        // Dirichlet X or Y Segments: the two other sides
-    const char* rollerKey;
-    double x1, y1;              // the strip [0, x1] x [0, y1]
-    int cellsX, cellsY;
-    std::string velocity, exact;  // toward the obstacle; the turned solution
-  };
-  const std::vector<Orientation> orientations = {
-      {"+y", "bottom", "top", "left, right", "Dirichlet X Segments", 0.25, 1.0, 1, 4, "0, -sin(pi*(1-y)/2)", "0, " + U("1-y")},
-      {"-y", "top", "bottom", "left, right", "Dirichlet X Segments", 0.25, 1.0, 1, 4, "0, sin(pi*y/2)", "0, -" + U("y")},
-      {"+x", "left", "right", "bottom, top", "Dirichlet Y Segments", 1.0, 0.25, 4, 1, "-sin(pi*(1-x)/2), 0", U("1-x") + ", 0"},
-      {"-x", "right", "left", "bottom, top", "Dirichlet Y Segments", 1.0, 0.25, 4, 1, "sin(pi*x/2), 0", "-" + U("x") + ", 0"}};
-  const int level = 3;
   std::vector<io::CsvTable> tables;
-  for (const auto& o : orientations) {
-    core::ParameterList deck;
-    auto& p = deck.sublist("Problem");
-    p.set("Type", "plane strain elasticity");
-    p.set("Density", rho);
-    p.set("Young's Modulus", E);
-    p.set("Poisson's Ratio", nu);
-    p.set("Initial Velocity", o.velocity);
-    p.set("Obstacle", number(g));
-    p.set("Contact Direction", o.direction);
-    p.set("Contact Segments", o.contact);
-    p.set("Dirichlet Segments", o.clamped);
-    p.set(o.rollerKey, o.rollers);
-    p.set("Exact Solution", o.exact);
-    auto& m = deck.sublist("Mesh");
-    m.set("X1", o.x1);
-    m.set("Y1", o.y1);
-    m.set("Cells X", o.cellsX);
-    m.set("Cells Y", o.cellsY);
-    m.set("Refinement Level", level);
-    for (const char* side : {"left", "right", "bottom", "top"}) m.sublist("Boundary Segments").set(side, side);
-    deck.sublist("Time Integration").set("Time Step", 0.125 / (1 << level));
-    deck.sublist("Time Integration").set("Final Time", 0.5);
-    tables.push_back(run(deck, std::string("strip") + (o.direction[0] == '+' ? "plus" : "minus") + o.direction[1]));
-  }
+  for (const Strip& strip : kStrips)
+    tables.push_back(run(strip.deck(3), std::string("strip") + (strip.direction[0] == '+' ? "plus" : "minus") + strip.direction[1]));
   const auto& reference = tables[0];
   EXPECT_GT(columnMax(reference, "contact_force"), 0.0);  // the strip hits the obstacle
   EXPECT_LT(columnMax(reference, "error_l2"), 0.01);      // and follows the exact solution (as above)
@@ -210,10 +198,10 @@ TEST(Elasticity, TheStripGivesTheSameContactInEveryDirection) {
     for (size_t n = 0; n < t.rows.size(); ++n) {
       for (const char* column : {"contact_force", "error_l2", "energy"}) {
         const double a = reference.rows[n][reference.column(column)], b = t.rows[n][t.column(column)];
-        EXPECT_NEAR(b, a, 1e-9 * std::abs(a) + 1e-12) << orientations[i].direction << ", " << column << ", step " << n;
+        EXPECT_NEAR(b, a, 1e-9 * std::abs(a) + 1e-12) << kStrips[i].direction << ", " << column << ", step " << n;
       }
       EXPECT_EQ(t.rows[n][t.column("active")], reference.rows[n][reference.column("active")])
-          << orientations[i].direction << ", step " << n;
+          << kStrips[i].direction << ", step " << n;
     }
   }
 }
