@@ -373,19 +373,12 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         // T^n_{l+1}: T^n_l refined by the strategy, 2:1 balanced (Algorithm 5.2).
         // Marking among the cells below the Maximum Level: the fraction goes to cells that can be
         // refined (spent on cells at the level, it refined nothing, and the cycles repeated).
-        std::vector<size_t> refinable;
-        std::vector<double> refinableIndicator;
-        for (size_t e = 0; e < r.cellIndicator.size(); ++e)
-          if (s.mesh.cellLevel()[e] < maxLevel) refinable.push_back(e), refinableIndicator.push_back(r.cellIndicator[e]);
-        std::vector<char> marked;
-        if (strategy == "uniform")
-          marked.assign(refinable.size(), 1);
-        else if (strategy == "bulk")
-          marked = markBulk(refinableIndicator, fraction, ties, raw);
-        else
-          marked = markFixedFraction(refinableIndicator, fraction, ties, raw);
-        std::vector<char> flags(r.cellIndicator.size(), 0);
-        for (size_t i = 0; i < refinable.size(); ++i) flags[refinable[i]] = marked[i];
+        std::vector<char> refinable(r.cellIndicator.size());
+        for (size_t e = 0; e < refinable.size(); ++e) refinable[e] = s.mesh.cellLevel()[e] < maxLevel;
+        const std::vector<char> flags = markAmong(r.cellIndicator, refinable, [&](const std::vector<double>& v) {
+          if (strategy == "uniform") return std::vector<char>(v.size(), 1);
+          return strategy == "bulk" ? markBulk(v, fraction, ties, raw) : markFixedFraction(v, fraction, ties, raw);
+        });
         auto refined = std::make_shared<mesh::Forest>(s.forest);
         if (coarsen > 0 && strategy != "uniform") {
           // Among the cells above the deck's level, as refinement among those below the Maximum

@@ -160,16 +160,23 @@ std::vector<char> markSmallest(const std::vector<double>& indicators, double fra
   return flags;
 }
 
+std::vector<char> markAmong(const std::vector<double>& indicators, const std::vector<char>& among,
+                            const std::function<std::vector<char>(const std::vector<double>&)>& mark) {
+  std::vector<size_t> cells;
+  std::vector<double> theirs;
+  for (size_t e = 0; e < indicators.size(); ++e)
+    if (among[e]) cells.push_back(e), theirs.push_back(indicators[e]);
+  const std::vector<char> marked = mark(theirs);
+  std::vector<char> flags(indicators.size(), 0);
+  for (size_t i = 0; i < cells.size(); ++i) flags[cells[i]] = marked[i];
+  return flags;
+}
+
 std::vector<char> markSmallestAbove(const std::vector<double>& indicators, const std::vector<int>& levels,
                                     int minLevel, double fraction, double tieTolerance, MPI_Comm comm) {
-  std::vector<size_t> above;
-  std::vector<double> aboveIndicator;
-  for (size_t e = 0; e < indicators.size(); ++e)
-    if (levels[e] > minLevel) above.push_back(e), aboveIndicator.push_back(indicators[e]);
-  const std::vector<char> smallest = markSmallest(aboveIndicator, fraction, tieTolerance, comm);
-  std::vector<char> flags(indicators.size(), 0);
-  for (size_t i = 0; i < above.size(); ++i) flags[above[i]] = smallest[i];
-  return flags;
+  std::vector<char> above(indicators.size());
+  for (size_t e = 0; e < indicators.size(); ++e) above[e] = levels[e] > minLevel;
+  return markAmong(indicators, above, [&](const std::vector<double>& v) { return markSmallest(v, fraction, tieTolerance, comm); });
 }
 
 }  // namespace signorini::adapt

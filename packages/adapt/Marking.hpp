@@ -8,6 +8,7 @@
 /// equal. A cell that ties with a marked cell is marked too (one that ties with a cell kept from
 /// coarsening is kept), so rounding (another number of ranks, another order of summation) cannot
 /// decide which of two equal cells is refined. 0 compares the values exactly.
+#include <functional>
 #include <vector>
 
 #include <mpi.h>
@@ -34,6 +35,11 @@ std::vector<char> markBulk(const std::vector<double>& indicators, double fractio
 /// fewer when indicators tie at the threshold.
 std::vector<char> markSmallest(const std::vector<double>& indicators, double fraction, double tieTolerance,
                                MPI_Comm comm);
+
+/// \p mark applied to the indicators of the cells flagged in \p among only (its fraction counts
+/// those cells), as flags for all cells: 0 for the others.
+std::vector<char> markAmong(const std::vector<double>& indicators, const std::vector<char>& among,
+                            const std::function<std::vector<char>(const std::vector<double>&)>& mark);
 
 /// markSmallest among the cells whose level (\p levels, one per cell) is above \p minLevel, the
 /// ones coarsening can merge: the fraction counts those cells only, and no other cell is flagged.

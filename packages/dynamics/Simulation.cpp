@@ -433,14 +433,19 @@ struct Simulation::Impl {
     }
     return d.consistentM;
   }
+  /// The solver on projectionMass(d): the mass solver unless the mass is lumped.
+  solvers::LinearSolver& projectionSolver(Discretisation& d) {
+    if (!d.lumpedMass) return massSolver(d);
+    if (!d.projectionSolver) d.projectionSolver = massSolverOn(projectionMass(d));
+    return *d.projectionSolver;
+  }
 
   /// L2 projection of an expression at t = 0 (M_rho x = int rho f phi).
   void projectL2(Discretisation& d, const core::ExpressionList& f, Vector& out) {
     Vector b(d.assembler->ownedMap());
     d.assembler->assembleLoad(f, 0.0, problem->density, b);
     out.putScalar(0.0);
-    if (d.lumpedMass && !d.projectionSolver) d.projectionSolver = massSolverOn(projectionMass(d));
-    (d.lumpedMass ? *d.projectionSolver : massSolver(d)).solve(b, out);
+    projectionSolver(d).solve(b, out);
   }
 
   /// Initial state on d: u0, v0 projected, a0 from (rho a0, phi) + a(u0, phi) = (f(0), phi) + Neumann.
@@ -663,12 +668,12 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   {
     Vector u(d->assembler->ownedMap()), v(d->assembler->ownedMap()), a(d->assembler->ownedMap());
     I.initialState(*d, u, v, a);
+    // The exact solution where the errors are measured, at t = 0 (so that --check finds it too).
+    if (I.problem->exactSolution) d->assembler->errorNorms(u, *I.problem->exactSolution, 0.0);
     // The KKT tolerance is absolute (Contact/KKT Tolerance times the domain diameter): a warning when
     // even the largest initial gap is within 1000 tolerances, so that the contact would be resolved
     // to fewer than three digits (a problem whose motion is tiny against the domain).
     const double largest = I.checkInitialGap(*d, u);
-    // The exact solution where the errors are measured, at t = 0 (so that --check finds it too).
-    if (I.problem->exactSolution) d->assembler->errorNorms(u, *I.problem->exactSolution, 0.0);
     if (d->qp && largest > 0 && largest < 1000 * d->qp->gapTolerance() && comm->getRank() == 0)
       std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": the largest initial gap, " << largest
                 << ", is within 1000 times the contact tolerance " << d->qp->gapTolerance()
@@ -750,19 +755,18 @@ void Simulation::checkMeshFits(double globalCells, const std::string& cause, dou
   else if (need > have)
     why << "at least " << need / 1e9 << " GB per rank, more than " << (budget > 0 ? "Parallel/Memory Per Rank = " : "this machine's ")
         << have / 1e9 << " GB per rank";
-  const long long ranksForIndices = static_cast<long long>(std::ceil(globalCells / indexLimit));
-  std::ostringstream memoryThere;  // what each of those ranks needs
-  memoryThere << std::setprecision(3)
-              << (globalCells * 750.0 * nc * nc + storedCells) / static_cast<double>(ranksForIndices) / 1e9;
-  if (!why.str().empty())
-    SIGNORINI_USER_ERROR(cause << ": a mesh of " << std::setprecision(4) << globalCells << " cells on "
-                               << impl_->comm->getSize() << " rank(s): " << why.str()
-                               << "; choose a coarser mesh, or "
-                               << (perRank > indexLimit ? "at least " + std::to_string(ranksForIndices) +
-                                                              " ranks (32-bit local indices), each with " +
-                                                              memoryThere.str() + " GB"
-                                                        : std::string("more memory (ranks on more machines, "
-                                                                      "Parallel/Memory Per Rank)")));
+  if (why.str().empty()) return;
+  std::ostringstream remedy;
+  if (perRank > indexLimit) {  // the ranks the indices need, and what each of them then needs
+    const double ranks = std::ceil(globalCells / indexLimit);
+    remedy << "at least " << std::setprecision(12) << ranks << " ranks (32-bit local indices), each with "
+           << std::setprecision(3) << (globalCells * 750.0 * nc * nc + storedCells) / ranks / 1e9 << " GB";
+  } else {
+    remedy << "more memory (ranks on more machines, Parallel/Memory Per Rank)";
+  }
+  SIGNORINI_USER_ERROR(cause << ": a mesh of " << std::setprecision(4) << globalCells << " cells on "
+                             << impl_->comm->getSize() << " rank(s): " << why.str() << "; choose a coarser mesh, or "
+                             << remedy.str());
 }
 
 RunSummary Simulation::run() {
