@@ -8,6 +8,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <numeric>
 #include <set>
 #include <sstream>
 
@@ -82,7 +83,9 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
   core::addDouble(a, "Tie Tolerance", 1e-8,
                   "Cell indicators of a step closer than this times its largest indicator count as equal when "
                   "marking: all of a tied group are refined (or kept), so rounding, e.g. another number of ranks, "
-                  "cannot choose between equal cells; 0: exact comparison",
+                  "cannot choose between equal cells; a cell that ties with 0 is never refined (a region at rest), "
+                  "and is coarsened first along the space-filling curve when more tie with 0 than the coarsening "
+                  "fraction allows; 0: exact comparison",
                   0.0, 0.01);
   core::addInt(a, "Cycles", 5, "Number of passes over [0, T] (each pass is one cycle of Algorithm 5.1)", 1, 100);
   core::addDouble(a, "Maximum Total Unknowns", 0.0,
@@ -383,7 +386,10 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         if (coarsen > 0 && strategy != "uniform") {
           // Among the cells above the deck's level, as refinement among those below the Maximum
           // Level: spent on cells at the level, the fraction coarsened nothing.
-          std::vector<char> small = markSmallestAbove(r.cellIndicator, s.mesh.cellLevel(), baseLevel, coarsen, ties, raw);
+          std::vector<long long> positions(r.cellIndicator.size());
+          std::iota(positions.begin(), positions.end(), s.forest.firstGlobalCell());
+          std::vector<char> small =
+              markSmallestAbove(r.cellIndicator, positions, s.mesh.cellLevel(), baseLevel, coarsen, ties, raw);
           for (size_t e = 0; e < small.size(); ++e) small[e] = small[e] && !flags[e];
           refined->refineAndCoarsen(flags, small, baseLevel);
           refined->balance();

@@ -74,9 +74,10 @@ double tieWidth(const std::vector<double>& v, double tieTolerance, MPI_Comm comm
 std::vector<char> flagFrom(const std::vector<double>& v, uint64_t t, double width) {
   const uint64_t lowest = key(std::max(0.0, fromKey(t) - width));
   std::vector<char> flags(v.size(), 0);
-  // A cell whose indicator is 0 has nothing to refine: a step without error (nothing moves yet)
-  // would otherwise tie every cell at the threshold 0.
-  for (size_t i = 0; i < v.size(); ++i) flags[i] = v[i] > 0 && key(v[i]) >= lowest;
+  // A cell whose indicator ties with 0 has nothing to refine: a step without error (nothing moves
+  // yet) would otherwise tie every cell at the threshold 0, and a step whose error sits in part of
+  // the domain (the rest at rest, indicators of rounding size) would refine all of it.
+  for (size_t i = 0; i < v.size(); ++i) flags[i] = v[i] > width && key(v[i]) >= lowest;
   return flags;
 }
 
@@ -84,6 +85,34 @@ long long globalSize(const std::vector<double>& v, MPI_Comm comm) {
   long long local = static_cast<long long>(v.size()), global = 0;
   MPI_Allreduce(&local, &global, 1, MPI_LONG_LONG, MPI_SUM, comm);
   return global;
+}
+
+/// The first \p allowed cells along the curve among those whose indicator ties with 0 (at most
+/// \p width): when they alone exceed the allowance, no threshold on the indicators can choose.
+std::vector<char> firstAlongCurve(const std::vector<double>& v, const std::vector<long long>& positions, double width,
+                                  long long allowed, MPI_Comm comm) {
+  std::vector<long long> zero;
+  long long last = -1;
+  for (size_t i = 0; i < v.size(); ++i)
+    if (v[i] <= width) zero.push_back(positions[i]), last = std::max(last, positions[i]);
+  std::sort(zero.begin(), zero.end());
+  MPI_Allreduce(MPI_IN_PLACE, &last, 1, MPI_LONG_LONG, MPI_MAX, comm);
+  auto upTo = [&](long long p) {
+    long long local = std::upper_bound(zero.begin(), zero.end(), p) - zero.begin(), global = 0;
+    MPI_Allreduce(&local, &global, 1, MPI_LONG_LONG, MPI_SUM, comm);
+    return global;
+  };
+  long long lo = -1, hi = last;  // the largest position with at most `allowed` of them up to it
+  while (lo < hi) {
+    const long long mid = lo + (hi - lo + 1) / 2;
+    if (upTo(mid) <= allowed)
+      lo = mid;
+    else
+      hi = mid - 1;
+  }
+  std::vector<char> flags(v.size(), 0);
+  for (size_t i = 0; i < v.size(); ++i) flags[i] = v[i] <= width && positions[i] <= lo;
+  return flags;
 }
 
 }  // namespace
@@ -134,16 +163,17 @@ std::vector<char> markBulk(const std::vector<double>& indicators, double fractio
   return flagFrom(indicators, t, width);
 }
 
-std::vector<char> markSmallest(const std::vector<double>& indicators, double fraction, double tieTolerance,
-                               MPI_Comm comm) {
+std::vector<char> markSmallest(const std::vector<double>& indicators, const std::vector<long long>& positions,
+                               double fraction, double tieTolerance, MPI_Comm comm) {
+  SIGNORINI_ASSERT(positions.size() == indicators.size(), "one curve position per cell");
   const long long allowed = cellsOfFraction(fraction, globalSize(indicators, comm), false);
   std::vector<char> flags(indicators.size(), 0);
   if (allowed <= 0) return flags;
   const double width = tieWidth(indicators, tieTolerance, comm);
-  // The largest threshold with at most `allowed` cells at or below it.
   const auto sorted = sortedKeys(indicators);
+  if (globalCount(sorted, key(width), false, comm) > allowed) return firstAlongCurve(indicators, positions, width, allowed, comm);
+  // The largest threshold with at most `allowed` cells at or below it.
   uint64_t lo = 0, hi = key(std::numeric_limits<double>::max());
-  if (globalCount(sorted, 0, false, comm) > allowed) return flags;
   while (lo < hi) {
     const uint64_t mid = lo + (hi - lo + 1) / 2;
     if (globalCount(sorted, mid, false, comm) <= allowed)
@@ -172,11 +202,16 @@ std::vector<char> markAmong(const std::vector<double>& indicators, const std::ve
   return flags;
 }
 
-std::vector<char> markSmallestAbove(const std::vector<double>& indicators, const std::vector<int>& levels,
-                                    int minLevel, double fraction, double tieTolerance, MPI_Comm comm) {
+std::vector<char> markSmallestAbove(const std::vector<double>& indicators, const std::vector<long long>& positions,
+                                    const std::vector<int>& levels, int minLevel, double fraction,
+                                    double tieTolerance, MPI_Comm comm) {
   std::vector<char> above(indicators.size());
-  for (size_t e = 0; e < indicators.size(); ++e) above[e] = levels[e] > minLevel;
-  return markAmong(indicators, above, [&](const std::vector<double>& v) { return markSmallest(v, fraction, tieTolerance, comm); });
+  std::vector<long long> theirPositions;
+  for (size_t e = 0; e < indicators.size(); ++e)
+    if ((above[e] = levels[e] > minLevel)) theirPositions.push_back(positions[e]);
+  return markAmong(indicators, above, [&](const std::vector<double>& v) {
+    return markSmallest(v, theirPositions, fraction, tieTolerance, comm);
+  });
 }
 
 }  // namespace signorini::adapt

@@ -59,6 +59,12 @@ long long Forest::numGlobalCells() const {
   return static_cast<long long>(p4est_ ? p4est_->global_num_quadrants : compact_->firstQuadrant.back());
 }
 
+long long Forest::firstGlobalCell() const {
+  int rank = 0;
+  MPI_Comm_rank(comm_, &rank);
+  return static_cast<long long>(p4est_ ? p4est_->global_first_quadrant[rank] : compact_->firstQuadrant[rank]);
+}
+
 int Forest::numLocalCells() const {
   return p4est_ ? static_cast<int>(p4est_->local_num_quadrants) : static_cast<int>(compact_->levels.size());
 }

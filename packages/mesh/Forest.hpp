@@ -31,6 +31,10 @@ class Forest {
   MPI_Comm comm() const { return comm_; }
   long long numGlobalCells() const;
   int numLocalCells() const;
+  /// Position on the space-filling curve of this rank's first cell among the cells of all ranks
+  /// (local cell i is at firstGlobalCell() + i): the same cell has the same position on any
+  /// number of ranks. Either form.
+  long long firstGlobalCell() const;
 
   /// Replaces the p4est by a compact form of the same cells and partition: the level of every
   /// local cell in curve order (1 byte per cell) plus the partition (p4est's global first

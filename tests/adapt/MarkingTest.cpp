@@ -33,6 +33,17 @@ std::vector<double> localPart(const std::vector<double>& all, int rank, int size
 
 std::vector<char> gather(const std::vector<char>& local, MPI_Comm comm) { return core::allGatherv(comm, local); }
 
+/// Curve positions of the local cells of contiguous chunks: their indices in the global list.
+std::vector<long long> positionsOf(const std::vector<double>& mine, MPI_Comm comm) {
+  long long n = static_cast<long long>(mine.size()), first = 0;
+  MPI_Exscan(&n, &first, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  std::vector<long long> p(mine.size());
+  std::iota(p.begin(), p.end(), rank == 0 ? 0 : first);  // MPI_Exscan leaves rank 0's result undefined
+  return p;
+}
+
 TEST(Marking, FixedFractionMarksTheLargestFractionOfCells) {
   auto comm = Tpetra::getDefaultComm();
   MPI_Comm raw = core::rawMpiComm(*comm);
@@ -75,6 +86,19 @@ TEST(Marking, AStepWithoutErrorRefinesNothing) {
   if (comm->getRank() == 0) one[3] = 1.0;
   const auto flags = gather(adapt::markFixedFraction(one, 0.5, 0.01, raw), raw);
   EXPECT_EQ(std::count(flags.begin(), flags.end(), 1), 1);
+  // The rest at rest up to rounding (indicators within the tie width of 0): still it alone. Tied
+  // with the threshold at the fifth largest indicator, all ten were refined.
+  std::vector<double> rest(10);
+  for (int i = 0; i < 10; ++i) rest[i] = 1e-12 * (1 + i + 10 * comm->getRank());  // distinct
+  if (comm->getRank() == 0) rest[3] = 1.0;
+  const auto atRest = gather(adapt::markFixedFraction(rest, 0.5, 1e-8, raw), raw);
+  EXPECT_EQ(std::count(atRest.begin(), atRest.end(), 1), 1);
+  EXPECT_EQ(atRest[3], 1);
+  const auto bulkAtRest = gather(adapt::markBulk(rest, 1.0, 1e-8, raw), raw);  // all the error: the one cell
+  EXPECT_EQ(std::count(bulkAtRest.begin(), bulkAtRest.end(), 1), 1);
+  // Compared exactly (tie tolerance 0), such cells are cells with error like any other.
+  const auto exact = gather(adapt::markFixedFraction(rest, 0.5, 0.0, raw), raw);
+  EXPECT_EQ(std::count(exact.begin(), exact.end(), 1), 5 * comm->getSize());
 }
 
 TEST(Marking, BulkMarksTheFewestLargestCellsReachingTheFraction) {
@@ -103,7 +127,7 @@ TEST(Marking, SmallestMarksAtMostTheFraction) {
   const auto all = globalIndicators();
   size_t offset;
   const auto mine = localPart(all, comm->getRank(), comm->getSize(), offset);
-  const auto flags = gather(adapt::markSmallest(mine, 0.25, 0.0, raw), raw);
+  const auto flags = gather(adapt::markSmallest(mine, positionsOf(mine, raw), 0.25, 0.0, raw), raw);
   const long long marked = std::count(flags.begin(), flags.end(), 1);
   EXPECT_LE(marked, static_cast<long long>(0.25 * all.size()));
   EXPECT_GE(marked, static_cast<long long>(0.25 * all.size()) - 2);  // ties at the threshold
@@ -125,7 +149,7 @@ TEST(Marking, SmallestAboveFlagsOnlyCellsAboveTheLevelAndCountsOnlyThem) {
   size_t offset;
   const auto mine = localPart(all, comm->getRank(), comm->getSize(), offset);
   const std::vector<int> myLevels(allLevels.begin() + offset, allLevels.begin() + offset + mine.size());
-  const auto flags = gather(adapt::markSmallestAbove(mine, myLevels, 2, 0.5, 0.0, raw), raw);
+  const auto flags = gather(adapt::markSmallestAbove(mine, positionsOf(mine, raw), myLevels, 2, 0.5, 0.0, raw), raw);
   const long long marked = std::count(flags.begin(), flags.end(), 1);
   EXPECT_GE(marked, above / 2 - 2);  // half of the cells above the level (ties at the threshold)
   EXPECT_LE(marked, above / 2);
@@ -136,10 +160,42 @@ TEST(Marking, SmallestAboveFlagsOnlyCellsAboveTheLevelAndCountsOnlyThem) {
   }
   EXPECT_LT(maxMarked, minUnmarked);  // the smallest of them
   // markSmallest over all cells spends the fraction on the cells at the level.
-  const auto overAll = gather(adapt::markSmallest(mine, 0.5, 0.0, raw), raw);
+  const auto overAll = gather(adapt::markSmallest(mine, positionsOf(mine, raw), 0.5, 0.0, raw), raw);
   long long overAllAbove = 0;
   for (size_t i = 0; i < all.size(); ++i) overAllAbove += overAll[i] && allLevels[i] == 3;
   EXPECT_LT(overAllAbove, marked / 2);
+}
+
+// A region at rest has indicators 0 (or within the tie width of 0): more such cells than the
+// coarsening allowance tie at the threshold, and no threshold on the indicators can choose among
+// them. The curve positions do: the first ones along the curve, exactly the allowance, on any
+// number of ranks.
+TEST(Marking, CellsAtRestCoarsenAlongTheCurveUpToTheFraction) {
+  auto comm = Tpetra::getDefaultComm();
+  MPI_Comm raw = core::rawMpiComm(*comm);
+  for (double tolerance : {0.0, 1e-8}) {
+    std::vector<double> all;
+    for (int i = 0; i < 48; ++i) {
+      const bool moving = i % 4 == 1;  // 12 cells with error, 36 at rest
+      all.push_back(moving ? 1.0 + i : (tolerance > 0 && i % 3 == 0 ? 1e-12 : 0.0));
+    }
+    size_t offset;
+    const auto mine = localPart(all, comm->getRank(), comm->getSize(), offset);
+    const auto flags = gather(adapt::markSmallest(mine, positionsOf(mine, raw), 0.5, tolerance, raw), raw);
+    std::vector<char> expected(all.size(), 0);
+    for (size_t i = 0, chosen = 0; i < all.size() && chosen < 24; ++i)
+      if (all[i] < 1) expected[i] = 1, ++chosen;  // the first 24 cells at rest
+    EXPECT_EQ(flags, expected) << "tie tolerance " << tolerance;
+    // Among the cells above the deck's level: the first half of those at rest that are above it.
+    std::vector<int> levels(all.size());
+    for (size_t i = 0; i < all.size(); ++i) levels[i] = i < 8 ? 2 : 3;
+    const std::vector<int> myLevels(levels.begin() + offset, levels.begin() + offset + mine.size());
+    const auto above = gather(adapt::markSmallestAbove(mine, positionsOf(mine, raw), myLevels, 2, 0.5, tolerance, raw), raw);
+    std::fill(expected.begin(), expected.end(), 0);
+    for (size_t i = 8, chosen = 0; i < all.size() && chosen < 20; ++i)
+      if (all[i] < 1) expected[i] = 1, ++chosen;  // 40 cells above the level: 20
+    EXPECT_EQ(above, expected) << "tie tolerance " << tolerance;
+  }
 }
 
 TEST(Marking, DecimalFractionsCountTheCellsTheyMean) {
@@ -169,7 +225,7 @@ TEST(Marking, DecimalFractionsCountTheCellsTheyMean) {
   const auto mine = localPart(all, comm->getRank(), comm->getSize(), offset);
   const auto refine = gather(adapt::markFixedFraction(mine, 0.55, 0.0, raw), raw);
   EXPECT_EQ(std::count(refine.begin(), refine.end(), 1), 55);
-  const auto coarsen = gather(adapt::markSmallest(mine, 0.29, 0.0, raw), raw);
+  const auto coarsen = gather(adapt::markSmallest(mine, positionsOf(mine, raw), 0.29, 0.0, raw), raw);
   EXPECT_EQ(std::count(coarsen.begin(), coarsen.end(), 1), 29);
 }
 
@@ -218,7 +274,7 @@ TEST(Marking, NearTiesAreMarkedAlikeWhateverTheRounding) {
     EXPECT_EQ(countGroup(bulk.first), 10);
     // coarsening 24 of 50: the 16 values below 5 and none of the group
     const auto small = markBothWays([&](const std::vector<double>& v, MPI_Comm c) {
-      return adapt::markSmallest(v, 0.48, tolerance, c);
+      return adapt::markSmallest(v, positionsOf(v, c), 0.48, tolerance, c);
     });
     EXPECT_EQ(small.first, small.second);
     EXPECT_EQ(countGroup(small.first), 0);
