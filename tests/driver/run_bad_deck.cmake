@@ -8,7 +8,8 @@
 #    directory of the run, so that output written to "." is caught too).
 #    BLOCK names directories made in it first, to take output names (they are not outputs).
 #    SEED names files made in it first, as an earlier run would have left them (each holds
-#    "seeded <name>"); UNCHANGED names those of them that must still hold exactly that afterwards.
+#    "seeded <name>"); UNCHANGED names those of them that must still hold exactly that afterwards;
+#    the others that EXPECT_FILES lists must have been replaced by the run's own.
 # 2. Runs `MPIEXEC --oversubscribe --allow-run-as-root -np NP rank_status.sh STATUS_DIR SIGNORINI ARGS`
 #    (ARGS separated by "|"); rank_status.sh records the exit status of every rank.
 # 3. Checks that EVERY rank exited with EXPECT_EXIT (a crash gives 134/139, a killed or hung
@@ -103,6 +104,7 @@ endforeach()
 if(NOT "${EXPECT_REGEX}" STREQUAL "")
   string(REPLACE "<AND>" ";" regexes "${EXPECT_REGEX}")
   foreach(re IN LISTS regexes)
+    string(REPLACE "<SEMICOLON>" ";" re "${re}")  # a ";" of the message (tests.cmake)
     if(NOT "${all}" MATCHES "${re}")
       fail("the output does not match the regular expression: ${re}")
     endif()
@@ -134,6 +136,15 @@ set(expected "")
 if(NOT "${EXPECT_FILES}" STREQUAL "")
   string(REPLACE "|" ";" expected "${EXPECT_FILES}")
 endif()
+# A seeded file that the run writes again (expected, not UNCHANGED) must hold this run's output.
+foreach(f IN LISTS seeded)
+  if(f IN_LIST expected AND NOT f IN_LIST unchanged AND EXISTS "${out_dir}/${f}")
+    file(READ "${out_dir}/${f}" content)
+    if(content STREQUAL "seeded ${f}\n")
+      fail("the earlier run's file '${f}' was kept instead of replaced by this run's")
+    endif()
+  endif()
+endforeach()
 file(GLOB_RECURSE found LIST_DIRECTORIES true RELATIVE "${out_dir}" "${out_dir}/*")
 list(SORT found)
 foreach(f IN LISTS expected)

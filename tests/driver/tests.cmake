@@ -9,18 +9,22 @@ set(SIGNORINI_DRIVER_DECKS ${CMAKE_CURRENT_LIST_DIR}/decks)
 # signorini_add_driver_test(NAME EXIT <status>|nonzero ARGS <signorini args>...
 #                           [REGEX <re>...] [FILES <file>...] [BLOCK <name>...] [SEED <file>...]
 #                           [UNCHANGED <file>...] [NP n])
-# ARGS may use {OUT} for the test's fresh output directory. Every REGEX must match stdout+stderr;
+# ARGS may use {OUT} for the test's fresh output directory. Every REGEX (each one argument, ";"
+# included) must match stdout+stderr;
 # FILES are the only files allowed (and required) in the output directory afterwards; BLOCK names
 # directories made there before the run, so that writing an output of that name fails; SEED names
 # files made there before the run (an earlier run's outputs), UNCHANGED those that must be left
 # exactly as they were.
 function(signorini_add_driver_test name)
-  cmake_parse_arguments(D "" "EXIT;NP" "ARGS;REGEX;FILES;BLOCK;SEED;UNCHANGED" ${ARGN})
+  # PARSE_ARGV keeps a ";" inside one argument (escaped as "\;"): a message such as "X = Jacobi;
+  # without effect: Y" stays one regular expression instead of two matched apart.
+  cmake_parse_arguments(PARSE_ARGV 1 D "" "EXIT;NP" "ARGS;REGEX;FILES;BLOCK;SEED;UNCHANGED")
   if(NOT D_NP)
     set(D_NP 2)
   endif()
   string(REPLACE ";" "|" args "${D_ARGS}")
-  string(REPLACE ";" "<AND>" regex "${D_REGEX}")
+  string(REPLACE "\\;" "<SEMICOLON>" regex "${D_REGEX}")
+  string(REPLACE ";" "<AND>" regex "${regex}")
   string(REPLACE ";" "|" files "${D_FILES}")
   string(REPLACE ";" "|" block "${D_BLOCK}")
   string(REPLACE ";" "|" seed "${D_SEED}")

@@ -1,7 +1,13 @@
 // Facts about the elasticity estimator (docs/estimator.md):
 //  - it vanishes for a linear displacement (constant stress) with consistent tractions and
 //    multipliers, also with hanging nodes, and a wrong traction is detected;
-//  - on a roller side only the free component's traction counts;
+//  - a kink (|x - 1/2| or |y - 1/2| in either component) gives the exact traction-jump indicators
+//    h_K (beta k^2 C)^2 |dK on the kink| (C = lambda + 2 mu or mu) next to the kink and nothing
+//    elsewhere, with hanging faces on the kink and on trapezoids (Gauss points on the faces);
+//  - div sigma(u_h) of a bilinear field (cross terms, and on parallelograms all second
+//    derivatives) enters the cell residual exactly: a matching body force gives eta_* = 0, the
+//    opposite one sum_K h_K^2 |K| (2 beta k^2 |div sigma|)^2;
+//  - on a roller side only the free component's traction counts, with its exact value;
 //  - eta_* decreases like h under uniform refinement of a smooth problem;
 //  - s0 and s1 of the constrained component equal the scalar estimator's for the same field,
 //    for either sign of the contact direction;
@@ -22,6 +28,7 @@
 #include "ContactCoupling.hpp"
 #include "ElasticityEstimator.hpp"
 #include "MpiComm.hpp"
+#include "../QuadMeshes.hpp"
 #include "SameEstimate.hpp"
 #include "SolveCG.hpp"
 
@@ -54,22 +61,29 @@ struct Case {
   double beta = 0.25, k = 0.1, time = 0.3;
   double forceUnit = 1.0;  ///< Young's modulus and density are kE and 2 in this unit
 
-  Case(int level, bool hanging, RCP<const Comm> cm = Tpetra::getDefaultComm()) : comm(cm) {
-    coarse = mesh::CoarseMesh::rectangle(0, 1, 0, 1, 2, 2);
-    segments = std::make_unique<mesh::BoundarySegments>(
-        std::vector<std::pair<std::string, std::string>>{
-            {"left", "left"}, {"right", "right"}, {"bottom", "bottom"}, {"top", "top"}},
-        *coarse);
-    forest = std::make_unique<mesh::Forest>(coarse, core::rawMpiComm(*comm), level);
+  /// The unit square as 2 x 2 trees at \p level; \p hanging: the cells with centre in the lower left
+  /// quarter refined twice (hanging nodes on x = 1/2 and y = 1/2).
+  Case(int level, bool hanging, RCP<const Comm> cm = Tpetra::getDefaultComm())
+      : Case(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 2, 2),
+             {{"left", "left"}, {"right", "right"}, {"bottom", "bottom"}, {"top", "top"}}, level, cm) {
     if (hanging)
-      for (int pass = 0; pass < 2; ++pass) {
-        forest->refineIf([&](int tree, const p4est_quadrant_t& q) {
-          const double root = P4EST_ROOT_LEN, half = 0.5 * P4EST_QUADRANT_LEN(q.level);
-          const auto p = coarse->mapPoint(tree, (q.x + half) / root, (q.y + half) / root);
-          return p[0] < 0.5 && p[1] < 0.5;
-        });
-        forest->balance();
-      }
+      for (int pass = 0; pass < 2; ++pass) refineWhere([](double x, double y) { return x < 0.5 && y < 0.5; });
+  }
+  /// Any coarse mesh with the given segments (name, specification) at \p level.
+  Case(std::shared_ptr<mesh::CoarseMesh> c, const std::vector<std::pair<std::string, std::string>>& segs, int level,
+       RCP<const Comm> cm = Tpetra::getDefaultComm())
+      : comm(cm), coarse(std::move(c)) {
+    segments = std::make_unique<mesh::BoundarySegments>(segs, *coarse);
+    forest = std::make_unique<mesh::Forest>(coarse, core::rawMpiComm(*comm), level);
+  }
+  /// Refines (once) the cells whose centre satisfies \p where, then balances.
+  void refineWhere(const std::function<bool(double, double)>& where) {
+    forest->refineIf([&](int tree, const p4est_quadrant_t& q) {
+      const double root = P4EST_ROOT_LEN, half = 0.5 * P4EST_QUADRANT_LEN(q.level);
+      const auto p = coarse->mapPoint(tree, (q.x + half) / root, (q.y + half) / root);
+      return where(p[0], p[1]);
+    });
+    forest->balance();
   }
   void finish(const std::map<std::string, std::string>& entries) {
     forest->partition();
@@ -121,6 +135,61 @@ std::string sideTractions(double sxx, double syy, double sxy) {
     return "(x < 0.001 ? " + num(l) + " : (x > 0.999 ? " + num(r) + " : (y < 0.001 ? " + num(b) + " : " + num(t) + ")))";
   };
   return side(0) + ", " + side(1);
+}
+
+/// Corner pairs (z-order) of the faces 0:-x 1:+x 2:-y 3:+y of a cell (as p4est_face_corners).
+constexpr int kFaceCorners[4][2] = {{0, 2}, {1, 3}, {0, 1}, {2, 3}};
+
+/// h_K of local cell e: its longest diagonal (docs/estimator.md, Section 2).
+double diameter(const Case& c, LO e) {
+  const auto& X = c.mesh->cornerCoordsHost;
+  return std::max(std::hypot(X(e, 3, 0) - X(e, 0, 0), X(e, 3, 1) - X(e, 0, 1)),
+                  std::hypot(X(e, 2, 0) - X(e, 1, 0), X(e, 2, 1) - X(e, 1, 1)));
+}
+
+/// |K| of local cell e (shoelace formula over the corners in cyclic order 0, 1, 3, 2).
+double area(const Case& c, LO e) {
+  const auto& X = c.mesh->cornerCoordsHost;
+  const int cyc[4] = {0, 1, 3, 2};
+  double a = 0;
+  for (int i = 0; i < 4; ++i) {
+    const int p = cyc[i], q = cyc[(i + 1) % 4];
+    a += X(e, p, 0) * X(e, q, 1) - X(e, q, 0) * X(e, p, 1);
+  }
+  return 0.5 * std::abs(a);
+}
+
+/// The length of the boundary of local cell e on the line {x_axis = value}.
+double lengthOnLine(const Case& c, LO e, int axis, double value) {
+  const auto& X = c.mesh->cornerCoordsHost;
+  double len = 0;
+  for (const auto& f : kFaceCorners)
+    if (std::abs(X(e, f[0], axis) - value) < 1e-12 && std::abs(X(e, f[1], axis) - value) < 1e-12)
+      len += std::hypot(X(e, f[1], 0) - X(e, f[0], 0), X(e, f[1], 1) - X(e, f[0], 1));
+  return len;
+}
+
+double sumOverRanks(const Case& c, double local) {
+  double global = 0;
+  Teuchos::reduceAll(*c.comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return global;
+}
+
+/// Two trees side by side with the common side on x = 1/2: (0,0), (1/2,0), (1/2,6/5), (0,1) and
+/// (1/2,0), (1,0), (1,1), (1/2,6/5), the second listed from another corner. Neither is a
+/// parallelogram, so neither are their cells (the face terms use Gauss points); one side set
+/// "boundary" holds all boundary sides.
+std::shared_ptr<mesh::CoarseMesh> twoTrapezoids() {
+  return test::exodusCoarseMesh({0, 0.5, 1, 0, 0.5, 1}, {0, 0, 0, 1, 1.2, 1}, {{0, 1, 4, 3}, {2, 5, 4, 1}},
+                                "elasticityTrapezoids");
+}
+
+/// The parallelogram x = s + a r, y = b s + r (a = 1/2, b = 1/4) of the tree coordinates s, r in
+/// [0,1]: corners (0,0), (1,1/4), (3/2,5/4), (1/2,1); one side set "boundary".
+constexpr double kShearA = 0.5, kShearB = 0.25;
+std::shared_ptr<mesh::CoarseMesh> parallelogram() {
+  return test::exodusCoarseMesh({0, 1, 1 + kShearA, kShearA}, {0, kShearB, 1 + kShearB, 1}, {{0, 1, 2, 3}},
+                                "elasticityParallelogram");
 }
 
 struct ExactCase {
@@ -197,27 +266,222 @@ INSTANTIATE_TEST_SUITE_P(Meshes, ElasticityExact,
                          [](const auto& info) { return std::string(info.param.name); });
 
 TEST(ElasticityEstimator, RollersCheckOnlyTheFreeComponent) {
-  // u = (0, 0.5 y): sigma_xx = lambda 0.5 != 0 on the left, but u_x is fixed there (roller), so only
-  // the shear traction (zero) counts; the other sides carry their tractions.
+  // u = (0, 0.3 x + 0.5 y) satisfies the roller u_x = 0 on the left side. Its gradient is constant
+  // (u_y,x = 0.3, u_y,y = 0.5, u_x,x = u_x,y = 0), so tr eps = 0.5 and
+  //   sigma_xx = 0.5 lambda, sigma_yy = 0.5 (lambda + 2 mu), sigma_xy = 0.3 mu   (constant);
+  // u_h = u (linear), hence no interior jumps and div sigma(u_h) = 0; with predictor = u_h and f = 0
+  // there is no cell residual. Right, bottom and top carry the tractions of this stress (R = 0).
+  // On the left, n = (-1, 0), sigma n = -(sigma_xx, sigma_xy); u_x is fixed there, so only
+  // R_y = beta k^2 (sigma n)_y = -0.3 mu beta k^2 counts (the side carries no datum for u_y): every
+  // cell with a face E on x = 0 gets h_K |E| (0.3 mu beta k^2)^2, every other cell 0.
+  // The left side of Case(2, true): 16 cells of side 1/32 (y < 1/2, refined twice), 2 of side 1/16
+  // (the cell [0,1/8] x [1/2,5/8] touches the twice refined quarter and is refined by the 2:1
+  // balance) and 3 of side 1/8; h_K = sqrt 2 |E|, so sum h_K |E| = sqrt 2 (16/32^2 + 2/16^2 + 3/8^2)
+  // = 9 sqrt(2) / 128.
   auto fx = [](double, double) { return 0.0; };
-  auto fy = [](double, double y) { return 0.5 * y; };
+  auto fy = [](double x, double y) { return 0.3 * x + 0.5 * y; };
   Case probe(1, false);
   probe.finish({});
-  const double sxx = probe.lameLambda() * 0.5, syy = (probe.lameLambda() + 2 * probe.lameMu()) * 0.5;
+  const double l = probe.lameLambda(), m = probe.lameMu();
+  const double sxx = l * 0.5, syy = (l + 2 * m) * 0.5, sxy = 0.3 * m;
+  auto check = [&](Case& c, double edgeR2) {  // edgeR2 = |R|^2 on the left side
+    c.interpolate(fx, fy, *c.u);
+    c.interpolate(fx, fy, *c.pred);
+    const auto r = c.run();
+    double local = 0;
+    for (LO e = 0; e < c.mesh->numLocalCells(); ++e) {
+      const double expected = diameter(c, e) * lengthOnLine(c, e, 0, 0.0) * edgeR2;
+      local += expected;
+      if (expected > 0)
+        EXPECT_NEAR(r.cellIndicator[e], expected, 1e-12 * expected) << "cell " << e;
+      else
+        EXPECT_LT(r.cellIndicator[e], 1e-24 * edgeR2) << "cell " << e << " away from the left side";
+    }
+    const double total = sumOverRanks(c, local);
+    EXPECT_NEAR(total, 9 * std::sqrt(2.0) / 128 * edgeR2, 1e-14 * edgeR2);
+    EXPECT_NEAR(r.etaStar * r.etaStar, total, 1e-12 * total);
+  };
   Case s(2, true);
   s.finish({{"Dirichlet X Segments", "left"},
             {"Neumann Segments", "right, bottom, top"},
-            {"Neumann Data", sideTractions(sxx, syy, 0.0)}});
-  s.interpolate(fx, fy, *s.u);
-  s.interpolate(fx, fy, *s.pred);
-  EXPECT_LT(s.run().etaStar, 1e-11 * s.bk2() * syy);
-  // Without the roller the left side's missing normal traction sigma_xx shows.
+            {"Neumann Data", sideTractions(sxx, syy, sxy)}});
+  check(s, std::pow(0.3 * m * s.bk2(), 2));
+  // Without the roller the left side's whole traction counts: |R|^2 = (beta k^2)^2 (sigma_xx^2 + sigma_xy^2).
   Case w(2, true);
-  w.finish({{"Neumann Segments", "right, bottom, top"}, {"Neumann Data", sideTractions(sxx, syy, 0.0)}});
-  w.interpolate(fx, fy, *w.u);
-  w.interpolate(fx, fy, *w.pred);
-  EXPECT_GT(w.run().etaStar, 0.1 * w.bk2() * sxx);
+  w.finish({{"Neumann Segments", "right, bottom, top"}, {"Neumann Data", sideTractions(sxx, syy, sxy)}});
+  check(w, std::pow(w.bk2(), 2) * (sxx * sxx + sxy * sxy));
 }
+
+// ---------------------------------------------------------------------------------------------
+// Kinks: exact traction jumps on the interior faces.
+
+struct KinkCase {
+  const char* name;
+  int mesh;       ///< 0: 2 x 2 trees, 8 x 8 cells; 1: the same with hanging faces on the kink; 2: two trapezoids
+  int axis;       ///< the kink |x_axis - 1/2|
+  int component;  ///< in this component of u
+};
+class ElasticityKink : public ::testing::TestWithParam<KinkCase> {};
+
+TEST_P(ElasticityKink, JumpIndicatorsAreLocalisedAndExact) {
+  const auto& p = GetParam();
+  std::unique_ptr<Case> s;
+  if (p.mesh == 2) {
+    // Level 2 (4 x 4 cells per tree); the cells with centre x < 1/2, y < 1/2 are the lower two rows
+    // of the left tree (their centres have y <= 3/8 * 6/5 < 1/2): refined once, so the kink has 4
+    // fine cells and 2 coarse cells on the left and 4 cells on the right.
+    s = std::make_unique<Case>(twoTrapezoids(), std::vector<std::pair<std::string, std::string>>{{"wall", "boundary"}}, 2);
+    s->refineWhere([](double x, double y) { return x < 0.5 && y < 0.5; });
+    s->finish({{"Dirichlet Segments", "wall"}});
+  } else {
+    s = std::make_unique<Case>(2, p.mesh == 1);
+    s->finish({{"Dirichlet Segments", "left, right, bottom, top"}});
+  }
+  // u_c = |x_a - 1/2| (a = axis, c = component), u_other = 0, clamped all round, predictor = u_h,
+  // f = 0. u is linear on either side of the kink, which is a mesh line, so u_h = u (also at the
+  // hanging nodes: u is linear along every face) and its Hessian vanishes on every cell (m = 0 for a
+  // linear field on any quadrilateral): the cell residuals are 0 and only the kink's faces carry a
+  // jump. The only non-zero gradient entry is du_c/dx_a = +-1 (the sign of x_a - 1/2). With n = e_a:
+  //   c = a: sigma_aa = (lambda + 2 mu)(+-1), sigma_ab = 0 (b != a), so [sigma n] = -+2 (lambda + 2 mu) e_a;
+  //   c != a: sigma_ac = mu (+-1), the normal stresses lambda tr eps = 0, so [sigma n] = -+2 mu e_c.
+  // R = -(beta k^2 / 2)[sigma n] has |R| = beta k^2 C, C = lambda + 2 mu or mu; each side K of a
+  // kink face E gets h_K |R|^2 |E| (the coarse side of a hanging face once per fine half), so
+  //   eta_K^2 = h_K (beta k^2 C)^2 |dK on the kink|,  and 0 on every other cell.
+  const double C = p.axis == p.component ? s->lameLambda() + 2 * s->lameMu() : s->lameMu();
+  const double c2 = std::pow(s->bk2() * C, 2);
+  const int a = p.axis, comp = p.component;
+  auto kink = [a](double x, double y) { return std::abs((a == 0 ? x : y) - 0.5); };
+  auto zero = [](double, double) { return 0.0; };
+  const std::function<double(double, double)> ux = comp == 0 ? std::function<double(double, double)>(kink) : zero,
+                                               uy = comp == 1 ? std::function<double(double, double)>(kink) : zero;
+  s->interpolate(ux, uy, *s->u);
+  s->interpolate(ux, uy, *s->pred);
+  const auto r = s->run();
+  double local = 0;
+  int touching = 0;
+  for (LO e = 0; e < s->mesh->numLocalCells(); ++e) {
+    const double onLine = lengthOnLine(*s, e, a, 0.5);
+    const double expected = diameter(*s, e) * c2 * onLine;
+    local += expected;
+    if (onLine > 0) {
+      ++touching;
+      EXPECT_NEAR(r.cellIndicator[e], expected, 1e-12 * expected) << "cell " << e;
+    } else {
+      EXPECT_LT(r.cellIndicator[e], 1e-14 * c2) << "cell " << e << " away from the kink";
+    }
+  }
+  const double total = sumOverRanks(*s, local);
+  EXPECT_NEAR(r.etaStar * r.etaStar, total, 1e-12 * total);
+  EXPECT_EQ(r.s0, 0.0);
+  // Square cells touching the line with side a_K: h_K |dK on the line| = sqrt 2 a_K^2.
+  //   uniform 8 x 8: 16 cells of side 1/8: sqrt 2 * 16/64 = sqrt(2)/4;
+  //   hanging (Case(2, true), symmetric in x and y): along x = 1/2 on the left 16 cells of side 1/32
+  //   (y < 1/2), 2 of side 1/16 (the cell above the quarter, refined by the 2:1 balance) and 3 of
+  //   side 1/8; on the right 8 of side 1/16 (balance), 2 of side 1/16 (the cell at the corner
+  //   (1/2, 1/2), corner balance) and 3 of side 1/8: sqrt 2 (16/1024 + 2/256 + 3/64 + 10/256 + 3/64)
+  //   = sqrt 2 * 5/32; 34 cells.
+  if (p.mesh == 0) EXPECT_NEAR(total, std::sqrt(2.0) / 4 * c2, 1e-14 * c2);
+  if (p.mesh == 1) EXPECT_NEAR(total, std::sqrt(2.0) * 5 / 32 * c2, 1e-14 * c2);
+  const double count = sumOverRanks(*s, touching);
+  EXPECT_EQ(count, p.mesh == 0 ? 16 : p.mesh == 1 ? 34 : 10);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, ElasticityKink,
+                         ::testing::Values(KinkCase{"xKinkInUx", 0, 0, 0}, KinkCase{"xKinkInUy", 0, 0, 1},
+                                           KinkCase{"yKinkInUx", 0, 1, 0}, KinkCase{"yKinkInUy", 0, 1, 1},
+                                           KinkCase{"xKinkInUxHanging", 1, 0, 0}, KinkCase{"xKinkInUyHanging", 1, 0, 1},
+                                           KinkCase{"yKinkInUxHanging", 1, 1, 0}, KinkCase{"yKinkInUyHanging", 1, 1, 1},
+                                           KinkCase{"xKinkInUxTrapezoids", 2, 0, 0},
+                                           KinkCase{"xKinkInUyTrapezoids", 2, 0, 1}),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+// ---------------------------------------------------------------------------------------------
+// div sigma(u_h) of a bilinear field in the cell residual.
+
+struct BilinearCase {
+  const char* name;
+  bool parallelogram;  ///< else the 2 x 2 trees of the unit square
+  bool hanging;
+  int component;  ///< u = P e_component
+};
+class ElasticityBilinear : public ::testing::TestWithParam<BilinearCase> {};
+
+TEST_P(ElasticityBilinear, DivSigmaEntersTheCellResidualExactly) {
+  const auto& p = GetParam();
+  auto makeCase = [&]() {
+    std::unique_ptr<Case> c;
+    if (p.parallelogram) {
+      c = std::make_unique<Case>(parallelogram(), std::vector<std::pair<std::string, std::string>>{{"wall", "boundary"}},
+                                 p.hanging ? 1 : 2);
+      if (p.hanging)
+        for (int pass = 0; pass < 2; ++pass) c->refineWhere([](double x, double y) { return x < 0.5 && y < 0.5; });
+    } else {
+      c = std::make_unique<Case>(2, p.hanging);
+    }
+    return c;
+  };
+  // P = x y on the square; P = (x - a y)(y - b x) = (1 - a b)^2 s r on the parallelogram x = s + a r,
+  // y = b s + r. Either is bilinear in the reference coordinates of every (sub)cell and linear along
+  // every face, so u_h = u = P e_c exactly, hanging nodes included. Its Hessian is constant:
+  //   square:        P_xx = 0,    P_yy = 0,    P_xy = 1;
+  //   parallelogram: P = (1 + a b) x y - b x^2 - a y^2: P_xx = -2b, P_yy = -2a, P_xy = 1 + a b.
+  // div sigma (docs/estimator.md, Section 3), for u = (P, 0) and u = (0, P):
+  //   (P, 0): ((lambda + 2 mu) P_xx + mu P_yy, (lambda + mu) P_xy),
+  //   (0, P): ((lambda + mu) P_xy, mu P_xx + (lambda + 2 mu) P_yy);
+  // e.g. (x y, 0) gives (0, lambda + mu). sigma(u) is continuous and u_h = u, so no face has a jump;
+  // clamped all round, no boundary terms. With predictor = u_h the cell residual is
+  // r = beta k^2 (f + div sigma): f = -div sigma gives eta_* = 0, f = +div sigma gives
+  // eta_K^2 = h_K^2 |K| (2 beta k^2 |div sigma|)^2 on every cell.
+  const double A = p.parallelogram ? kShearA : 0.0, B = p.parallelogram ? kShearB : 0.0;
+  const double Pxx = -2 * B, Pyy = -2 * A, Pxy = 1 + A * B;
+  auto P = [=](double x, double y) { return p.parallelogram ? (x - A * y) * (y - B * x) : x * y; };
+  auto zero = [](double, double) { return 0.0; };
+  Case probe(1, false);
+  probe.finish({});
+  const double l = probe.lameLambda(), m = probe.lameMu();
+  double etaStar[2];
+  for (int sign : {1, -1}) {
+    auto c = makeCase();
+    const double div[2] = {p.component == 0 ? (l + 2 * m) * Pxx + m * Pyy : (l + m) * Pxy,
+                           p.component == 0 ? (l + m) * Pxy : m * Pxx + (l + 2 * m) * Pyy};
+    c->finish({{"Dirichlet Segments", p.parallelogram ? "wall" : "left, right, bottom, top"},
+               {"Body Force", num(-sign * div[0]) + ", " + num(-sign * div[1])}});
+    const std::function<double(double, double)> ux = p.component == 0 ? std::function<double(double, double)>(P) : zero,
+                                                 uy = p.component == 1 ? std::function<double(double, double)>(P) : zero;
+    c->interpolate(ux, uy, *c->u);
+    c->interpolate(ux, uy, *c->pred);
+    const auto r = c->run();
+    etaStar[sign > 0 ? 0 : 1] = r.etaStar;
+    const double r2 = std::pow(2 * c->bk2(), 2) * (div[0] * div[0] + div[1] * div[1]);  // |r|^2 for f = +div sigma
+    ASSERT_GT(r2, 0.0);
+    double local = 0;
+    for (LO e = 0; e < c->mesh->numLocalCells(); ++e) {
+      const double hh = diameter(*c, e) * diameter(*c, e) * area(*c, e);
+      local += hh;
+      if (sign > 0)
+        EXPECT_LT(r.cellIndicator[e], 1e-24 * r2) << "cell " << e;
+      else
+        EXPECT_NEAR(r.cellIndicator[e], hh * r2, 1e-12 * hh * r2) << "cell " << e;
+    }
+    const double sumH2K = sumOverRanks(*c, local);
+    // Uniform meshes: the square's 64 cells have h^2 = 2/64, |K| = 1/64: sum = 1/32. The parallelogram
+    // at level 2 has 16 copies of itself scaled by 1/4: diagonals^2 (1 + a)^2 + (1 + b)^2 = 3.8125 and
+    // (1 - a)^2 + (1 - b)^2 = 0.8125, area 1 - a b = 0.875: sum = 16 * 3.8125/16 * 0.875/16.
+    if (!p.hanging) EXPECT_NEAR(sumH2K, p.parallelogram ? 3.8125 * 0.875 / 16 : 1.0 / 32, 1e-15);
+    if (sign < 0) EXPECT_NEAR(r.etaStar * r.etaStar, sumH2K * r2, 1e-12 * sumH2K * r2);
+  }
+  EXPECT_LT(etaStar[0], 1e-11 * etaStar[1]);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, ElasticityBilinear,
+                         ::testing::Values(BilinearCase{"squareUx", false, false, 0}, BilinearCase{"squareUy", false, false, 1},
+                                           BilinearCase{"squareUxHanging", false, true, 0},
+                                           BilinearCase{"squareUyHanging", false, true, 1},
+                                           BilinearCase{"parallelogramUx", true, false, 0},
+                                           BilinearCase{"parallelogramUy", true, false, 1},
+                                           BilinearCase{"parallelogramUxHanging", true, true, 0},
+                                           BilinearCase{"parallelogramUyHanging", true, true, 1}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 TEST(ElasticityEstimator, EtaStarDecreasesLikeH) {
   // u = s (1, 1), s = sin(pi x) sin(pi y), clamped all round; predictor = u_h and f = -div sigma(u),

@@ -396,24 +396,55 @@ TEST_P(ContactTermsTest, S0MatchesHandIntegral) {
   EXPECT_NEAR(r.eta, r.etaStar + r.s0, 1e-15);
   // Cell indicators: eta_K^2 plus the s0^2 shares (all lambda_j < 0, so the shares sum to s0^2).
   EXPECT_NEAR(s.indicatorSum(r), r.etaStar * r.etaStar + r.s0 * r.s0, 1e-12 * (r.etaStar * r.etaStar + r.s0 * r.s0));
-  // Only cells at x = 0 with y < 0.3 carry an s0 share: the others keep eta_K^2 (checked against a run without
-  // multipliers).
+  // The shares cell by cell. The reference z has the same mesh, u_h and multipliers but the obstacle
+  // g = -10 far below u_h: (g - u_h)_+ = 0, so z's s0 is 0, while every edge residual (on Gamma_C
+  // R = beta k^2 kappa du_h/dn + lambda_j) and every cell residual is the same as in s. The
+  // difference of the two indicators of a cell is therefore exactly its s0 share: for a cell with
+  // face E = [y0, y1] on x = 0 in segment j (u_h = y there),
+  //   |lambda_j int_E (0.3 - y)_+ dy| = |lambda_j| ((0.3 - y0)_+^2 - (0.3 - y1)_+^2) / 2,
+  // which is 0 for y0 >= 0.3; every cell away from x = 0 has the difference 0.
   EstimatorCase z(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 4);
   if (GetParam())
     for (int pass = 0; pass < 2; ++pass) z.refineWhere([](double x, double y) { return x < 0.5 && y < 0.5; });
-  z.finish({{"Dirichlet Segments", "right"}, {"Contact Segments", "left"}, {"Obstacle", "0.3"}});
+  z.finish({{"Dirichlet Segments", "right"}, {"Contact Segments", "left"}, {"Obstacle", "-10"}});
   z.interpolate([](double x, double y) { return (1 - x) * y; }, *z.u);
   z.interpolate([](double x, double y) { return (1 - x) * y; }, *z.pred);
+  z.lambda = s.lambda;
   const auto r0 = z.run(false);
   EXPECT_EQ(r0.s0, 0.0);
+  EXPECT_NEAR(r0.etaStar, r.etaStar, 1e-14 * r.etaStar);  // the same edge and cell residuals
   ASSERT_EQ(r0.cellIndicator.size(), r.cellIndicator.size());
   const auto& X = s.mesh->cornerCoordsHost;
+  const auto& mid = s.coupling->segmentMidpoint();
+  const auto& segLen = s.coupling->segmentLength();
+  int withShare = 0;
   for (LO e = 0; e < s.mesh->numLocalCells(); ++e) {
-    const bool share = X(e, 0, 0) < 1e-12 && X(e, 0, 1) < 0.3;
-    // with lambda != 0 the contact edges' R changes too; compare only away from Gamma_C
-    if (X(e, 0, 0) > 1e-12) EXPECT_NEAR(r.cellIndicator[e], r0.cellIndicator[e], 1e-15) << "cell " << e;
-    if (share) EXPECT_GT(r.cellIndicator[e], r0.cellIndicator[e]);
+    ASSERT_EQ(X(e, 0, 0), z.mesh->cornerCoordsHost(e, 0, 0));  // the same cells in the same order
+    ASSERT_EQ(X(e, 0, 1), z.mesh->cornerCoordsHost(e, 0, 1));
+    double expected = 0;
+    if (X(e, 0, 0) < 1e-12) {  // face 0 (corners 0 and 2) lies on x = 0
+      const double y0 = X(e, 0, 1), y1 = X(e, 2, 1), ym = 0.5 * (y0 + y1);
+      int seg = -1;
+      for (size_t j = 0; j < mid.size(); ++j)
+        if (std::abs(ym - mid[j][1]) < 0.5 * segLen[j]) seg = static_cast<int>(j);
+      ASSERT_GE(seg, 0) << "cell " << e << ": no segment holds its contact edge";
+      auto pos = [](double v) { return std::max(v, 0.0); };
+      expected = std::abs(s.lambda[seg]) * 0.5 * (std::pow(pos(0.3 - y0), 2) - std::pow(pos(0.3 - y1), 2));
+    }
+    const double share = r.cellIndicator[e] - r0.cellIndicator[e];
+    if (expected > 0) {
+      ++withShare;
+      EXPECT_NEAR(share, expected, 1e-12 * expected + 1e-15 * r0.cellIndicator[e]) << "cell " << e;
+    } else {
+      EXPECT_NEAR(share, 0.0, 1e-15 * r0.cellIndicator[e]) << "cell " << e << " at y0 = " << X(e, 0, 1);
+    }
   }
+  // Cells on x = 0 below y = 0.3: uniform 16 x 16 cells of side 1/16, y0 = 0, ..., 4/16 (5 cells; the
+  // fifth, [4/16, 5/16], holds the sign change). Hanging: y < 1/2 refined twice to side 1/64, so
+  // y0 = 0, ..., 19/64 (20 cells; the last, [19/64, 20/64], holds 0.3 = 19.2/64).
+  int withShareGlobal = 0;
+  Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_SUM, withShare, Teuchos::outArg(withShareGlobal));
+  EXPECT_EQ(withShareGlobal, GetParam() ? 20 : 5);
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, ContactTermsTest, ::testing::Values(false, true),

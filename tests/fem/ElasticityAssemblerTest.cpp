@@ -1,11 +1,13 @@
 // Plane strain elasticity with vector Q1 elements: rigid body motions produce no stress, a linear
 // displacement field passes the patch test (K u = the tractions of its constant stress, every node,
-// hanging nodes included), the mass matrix holds the mass twice (two components).
+// hanging nodes included), the mass matrix holds the mass twice (two components), the error norms
+// of a known error are exact.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <tuple>
 
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
@@ -167,6 +169,31 @@ TEST_P(ElasticityAssembly, DirichletUnknownsPerComponent) {
   int allRollers = 0;
   Teuchos::reduceAll(*m.comm(), Teuchos::REDUCE_SUM, rollers, Teuchos::outArg(allRollers));
   EXPECT_GT(allRollers, 0);  // u_x fixed, u_y free
+}
+
+TEST_P(ElasticityAssembly, ErrorNormsOfAKnownErrorAreExact) {
+  // errorNorms returns the L2 norm and the H1 seminorm of u_h - u summed over both components
+  // (Assembler.hpp). On the unit square with the error e = -(x y, 2 x):
+  //   ||e||_0^2 = int x^2 y^2 + int 4 x^2 = 1/9 + 4/3 = 13/9,                 L2 = sqrt(13/9);
+  //   |e|_1^2  = int (y^2 + x^2) + int (2^2 + 0^2) = 2/3 + 4 = 14/3,           H1 seminorm = sqrt(14/3).
+  // 3 x 3 Gauss points integrate these polynomials exactly on rectangles; the exact gradient comes
+  // from central differences, exact for x y and 2 x up to rounding.
+  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
+  if (GetParam()) tm.refineCorner();
+  const auto& m = tm.build();
+  fem::ElasticityAssembler asmb(m, std::vector<char>(2 * m.overlapMap()->getNodeNumElements(), 0), kLambda, kMu);
+  Vector u(asmb.ownedMap());
+  // u_h = 0 against (x y, 2 x).
+  u.putScalar(0.0);
+  auto [l2, h1] = asmb.errorNorms(u, core::ExpressionList("x*y, 2*x", "test", 2), 0.0);
+  EXPECT_NEAR(l2, std::sqrt(13.0 / 9), 1e-14);
+  EXPECT_NEAR(h1, std::sqrt(14.0 / 3), 1e-8);
+  // u_h = the interpolant of (1 + x, 3 - y) (in the space, hanging nodes included) against
+  // (1 + x + x y, 3 - y + 2 x): the same error, through the hanging nodes' weights of each component.
+  interpolate(asmb, [](double x, double) { return 1 + x; }, [](double, double y) { return 3 - y; }, u);
+  std::tie(l2, h1) = asmb.errorNorms(u, core::ExpressionList("1 + x + x*y, 3 - y + 2*x", "test", 2), 0.0);
+  EXPECT_NEAR(l2, std::sqrt(13.0 / 9), 1e-14);
+  EXPECT_NEAR(h1, std::sqrt(14.0 / 3), 1e-8);
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, ElasticityAssembly, ::testing::Values(false, true));

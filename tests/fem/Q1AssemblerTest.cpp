@@ -1,9 +1,10 @@
 // Assembly facts: mass sums to the area, stiffness annihilates constants and gives the exact
-// energy of linear fields, patch tests on meshes with hanging nodes.
+// energy of linear fields, patch tests on meshes with hanging nodes, error norms of a known error.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <memory>
+#include <tuple>
 
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
@@ -133,6 +134,31 @@ TEST_P(AssemblyTest, InterpolantHasZeroErrorForBilinearField) {
   asmb.toOverlap(u, uo);
   EXPECT_NEAR(asmb.evaluate(uo, 0.3, 0.7), 2 + 0.3 - 0.7 + 0.7 * 0.3 * 0.7, 1e-13);
   EXPECT_TRUE(std::isnan(asmb.evaluate(uo, 1.5, 0.7)));
+}
+
+TEST_P(AssemblyTest, ErrorNormsOfAKnownErrorAreExact) {
+  // errorNorms returns the L2 norm and the H1 seminorm of u_h - u (Q1Assembler.hpp). On the unit
+  // square with the error e = -x y (or x y):
+  //   ||e||_0^2 = int_0^1 int_0^1 x^2 y^2 = 1/3 * 1/3 = 1/9,          L2 = 1/3;
+  //   |e|_1^2  = int_0^1 int_0^1 (y^2 + x^2) = 1/3 + 1/3 = 2/3,      H1 seminorm = sqrt(2/3).
+  // 3 x 3 Gauss points integrate x^2 y^2 exactly on every rectangle (degree 2 <= 5 per direction);
+  // the exact gradient comes from central differences, exact for x y up to rounding (h_min 1e-6 steps).
+  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 2, 2, GetParam().level);
+  if (GetParam().hanging) tm.refineCorner();
+  const auto& m = tm.build();
+  fem::Q1Assembler asmb(m, std::vector<char>(m.overlapMap()->getNodeNumElements(), 0));
+  Vector u(m.ownedMap());
+  // u_h = 0 against x y.
+  u.putScalar(0.0);
+  auto [l2, h1] = asmb.errorNorms(u, core::Expression("x*y", "test"), 0.0);
+  EXPECT_NEAR(l2, 1.0 / 3, 1e-14);
+  EXPECT_NEAR(h1, std::sqrt(2.0 / 3), 1e-8);
+  // u_h = the interpolant of 2 + x - y (in the space, hanging nodes included) against 2 + x - y + x y:
+  // the error is -x y again, through the hanging nodes' weights.
+  interpolate(m, [](double x, double y) { return 2 + x - y; }, u);
+  std::tie(l2, h1) = asmb.errorNorms(u, core::Expression("2 + x - y + x*y", "test"), 0.0);
+  EXPECT_NEAR(l2, 1.0 / 3, 1e-14);
+  EXPECT_NEAR(h1, std::sqrt(2.0 / 3), 1e-8);
 }
 
 INSTANTIATE_TEST_SUITE_P(Meshes, AssemblyTest,

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <map>
 #include <set>
 #include <sstream>
@@ -131,6 +132,60 @@ TEST(ContactCoupling, UnrefinedTreesArePairedAlongTheBoundary) {
   }
   EXPECT_GE(coarse, 2);  // pairs of unrefined trees
   for (const auto& [a, b] : intervals) EXPECT_EQ(intervals.count({32 - b, 32 - a}), 1u) << a << " " << b;
+}
+
+// A column of 1 x N trees of one cell each, some trees refined once: the right side is a chain of
+// sibling pairs (the refined trees' faces, whose parent is the tree face) and unrefined tree faces,
+// which have no parent in the forest. Every contact edge must belong to a segment of two or three
+// edges. The rule (ContactCoupling, README "What is verified"): the tree faces of the chain pair up
+// from both ends toward the middle as the halves of a virtual parent edge; an unrefined face whose
+// partner face is refined joins the finer edges next to it; the middle face of an odd chain has no
+// partner and joins the segment before it, so the result depends on the chain's direction (4m + 1
+// faces are not mirror-symmetric), and each expectation admits both directions.
+TEST(ContactCoupling, LoneAndOddUnrefinedFacesJoinASegment) {
+  struct Case {
+    int trees;
+    std::function<bool(double)> refined;  // by the tree's centre y
+    std::set<std::pair<long long, long long>> up, down;  // segments [a, b] in units of 1/2
+  };
+  const std::vector<Case> cases{
+      // faces (0, 1) and (3, 4) refined: two sibling pairs each; the middle face [2, 3] joins [1, 2] or [3, 4]
+      {5, [](double y) { return y < 2 || y > 3; }, {{0, 2}, {2, 6}, {6, 8}, {8, 10}}, {{0, 2}, {2, 4}, {4, 8}, {8, 10}}},
+      // faces (0, 1) and (5, 6) pair, 0 and 6 refined: faces 1 and 5 join their partners' fine edges
+      // ([0, 2] and [5, 7] of three edges), the middle three faces are one segment
+      {7, [](double y) { return y < 1 || y > 6; }, {{0, 4}, {4, 10}, {10, 14}}, {{0, 4}, {4, 10}, {10, 14}}},
+      // nothing refined: (0, 1) and (3, 4) pair, the middle face joins the segment before it
+      {5, [](double) { return false; }, {{0, 6}, {6, 10}}, {{0, 4}, {4, 10}}},
+  };
+  for (const auto& c : cases) {
+    test::TestMesh tm(0.0, 1.0, 0.0, c.trees, 1, c.trees, 0);
+    ASSERT_EQ(tm.coarse->numTrees(), c.trees);  // cell counts 1 and 5 or 7 share no power of two
+    tm.forest->refineIf([&](int tree, const p4est_quadrant_t&) { return c.refined(tm.coarse->mapPoint(tree, 0.5, 0.5)[1]); });
+    tm.forest->partition();
+    const auto& m = tm.build();
+    fem::ContactCoupling B(m, kRight, fem::ContactCoupling::SegmentSize::TwoEdges,
+                           std::vector<char>(m.overlapMap()->getNodeNumElements(), 0));
+    std::set<std::pair<long long, long long>> intervals;
+    double total = 0;
+    for (int j = 0; j < B.numSegments(); ++j) {
+      EXPECT_GE(B.segmentEdges()[j], 2) << c.trees << " trees, segment " << j;
+      EXPECT_LE(B.segmentEdges()[j], 3) << c.trees << " trees, segment " << j;
+      const double a = B.segmentMidpoint()[j][1] - 0.5 * B.segmentLength()[j];
+      intervals.insert({std::llround(2 * a), std::llround(2 * (a + B.segmentLength()[j]))});
+      total += B.segmentLength()[j];
+    }
+    EXPECT_NEAR(total, c.trees, 1e-14);  // the segments cover the side once
+    std::ostringstream got;
+    for (const auto& [a, b] : intervals) got << " [" << a << ", " << b << "]";
+    EXPECT_TRUE(intervals == c.up || intervals == c.down) << c.trees << " trees, segments in units of 1/2:" << got.str();
+    for (size_t i = 0; i < m.boundaryEdges().size(); ++i)
+      if (m.boundaryEdges()[i].x[0][0] == 1.0 && m.boundaryEdges()[i].x[1][0] == 1.0)
+        EXPECT_GE(B.localEdgeSegment()[i], 0) << "a contact edge without a segment";
+    Vector one(m.ownedMap());
+    one.putScalar(1.0);
+    const auto colSums = B.applyTranspose(one);
+    for (int j = 0; j < B.numSegments(); ++j) EXPECT_NEAR(colSums[j], B.segmentLength()[j], 1e-14);
+  }
 }
 
 TEST(ContactCoupling, TreesOfOneCellPairLikeTheRectanglesTrees) {
