@@ -9,6 +9,7 @@ packages=(
   libp4est-dev libexodusii-dev libnetcdf-dev libmuparser-dev
   libgtest-dev
   python3 python3-matplotlib python3-numpy python3-netcdf4
+  python3-paraview
 )
 missing=()
 for p in "${packages[@]}"; do
