@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include <Teuchos_DefaultMpiComm.hpp>
+#include <Teuchos_LAPACK.hpp>
 #include <Teuchos_SerialDenseMatrix.hpp>
 #include <Teuchos_SerialDenseSolver.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -331,9 +332,30 @@ TEST(StripSchurApproximation, IsExactWhenTheStripCoversTheDomain) {
     ws.update(-1.0, w, 1.0);
     EXPECT_LE(ws.normInf(), 1e-8 * w.normInf());
   }
-  // A narrow strip still gives a symmetric positive definite approximation with the right diagonal scale.
-  solvers::StripSchurApproximation narrow(*A, B, 1);
-  for (int j = 0; j < ns; ++j) EXPECT_GT(narrow.matrix()[j * ns + j], 0.0);
+  // A narrower strip: B^T A_s^{-1} B maximises 2 (B e)^T w - w^T A w over the strip's fields w only,
+  // so it is symmetric positive definite and lies below Q in the Loewner order, the narrower the
+  // lower: 0 < S_1 <= S_2 <= Q.
+  solvers::StripSchurApproximation narrow(*A, B, 1), two(*A, B, 2);
+  auto smallestEigenvalue = [&](const std::vector<double>& X) {  // of the symmetric ns x ns matrix X
+    Teuchos::LAPACK<int, double> lapack;
+    std::vector<double> a(X), w(ns), work(3 * ns);
+    int info = 0;
+    lapack.SYEV('N', 'U', ns, a.data(), ns, w.data(), work.data(), static_cast<int>(work.size()), &info);
+    EXPECT_EQ(info, 0);
+    return w[0];
+  };
+  std::vector<double> gap21(ns * ns), gapQ2(ns * ns);
+  for (int i = 0; i < ns; ++i)
+    for (int j = 0; j < ns; ++j) {
+      EXPECT_NEAR(narrow.matrix()[i * ns + j], narrow.matrix()[j * ns + i], 1e-14 * Q[0]) << i << "," << j;
+      gap21[i * ns + j] = two.matrix()[i * ns + j] - narrow.matrix()[i * ns + j];
+      gapQ2[i * ns + j] = Q[i * ns + j] - two.matrix()[i * ns + j];
+    }
+  const double scale = 1e-12 * Q[0];
+  EXPECT_GT(smallestEigenvalue(narrow.matrix()), 0.0);
+  EXPECT_GE(smallestEigenvalue(gap21), -scale);
+  EXPECT_GE(smallestEigenvalue(gapQ2), -scale);
+  EXPECT_GT(std::abs(gap21[0]), 1e3 * scale);  // the strips differ: the order is not an equality
 }
 
 TEST(StripSchurApproximation, WidthFollowsEachSegment) {
