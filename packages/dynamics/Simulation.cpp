@@ -561,11 +561,13 @@ struct Simulation::Impl {
       }
     }
     if (from.coupling && to.coupling) {
+      // The QP's warm start on the new segments: the multiplier of the nearest old segment. It is a
+      // force per unit length (B's columns integrate over the segment), so a segment split in two
+      // starts both halves from the old value, not from a share by length.
       const auto nearest = nearestPoints(from.coupling->segmentMidpoint(), to.coupling->segmentMidpoint());
       std::vector<double> next(to.coupling->numSegments(), 0.0);
       for (int j = 0; j < to.coupling->numSegments(); ++j)
-        if (nearest[j] >= 0)
-          next[j] = lambda[nearest[j]] * to.coupling->segmentLength()[j] / from.coupling->segmentLength()[nearest[j]];
+        if (nearest[j] >= 0) next[j] = lambda[nearest[j]];
       lambda = next;
     } else {
       lambda.assign(to.coupling ? to.coupling->numSegments() : 0, 0.0);

@@ -84,7 +84,9 @@ core::ParameterList ContactQP::getValidParameters() {
                1);
   core::addDouble(p, "Strip Width", 6.0,
                   "Width of the strip in units of c k (wave speed times time step; Q decays like exp(-1.4 d/k)): "
-                  "segment j gets ceil(width c k / h_j) node layers (h_j its edge length; at least 2, at most 40)",
+                  "segment j gets ceil(width (c k / h_min) h_f / h_j) node layers (h_j its edge length, h_f that "
+                  "of the finest contact edge, h_min the mesh's finest cell; at least 2, at most 40): the width "
+                  "c k where h_f = h_min, narrower where the finest cells lie away from the contact boundary",
                   0.1, 1000.0);
   return p;
 }
