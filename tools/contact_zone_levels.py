@@ -39,7 +39,7 @@ def main():
                 if tt>first+0.0126: return
                 if tt<0.0374: continue
                 lev=d['vals_elem_var%deb1'%(li+1)][k]
-                cx=x[conn].mean(1); cy=y[conn].mean(1)
+                cy=y[conn].mean(1)
                 onC=(x[conn].max(1)>1-1e-12)
                 mid=onC&(np.abs(cy-0.5)<0.15)
                 print(f't={tt:.4f} max level {lev.max():.0f}; Gamma_C cells near y=0.5 levels {np.unique(lev[mid]).astype(int)}')

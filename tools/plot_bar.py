@@ -2,13 +2,17 @@
 """Plots and numbers of paper Example 6.2 (the bar) from signorini's CSV and Exodus output.
 
   tools/plot_bar.py --adaptive out/bar --uniform out/bar-uniform [--more-adaptive BASE:LABEL]
-                    [--steps 20,30,60,110,160,250] --out out/plots-bar
+                    [--steps auto | 16,20,38,...] --out out/plots-bar
 
 Writes (PNG): bar_eta_vs_unknowns.png (paper Fig. 6.5), bar_meshes.png (Fig. 6.4: meshes of the final
-adaptive cycle at the chosen steps, displacement scaled by 5, the foundation y = -0.005 drawn),
-bar_contact_zone.png (active contact segments against the cells of the finest level next to the
-foundation, per output step). Prints the contact intervals of the adaptive run and the correlation
-of refined zone and contact zone. Uses Debian's python3 with numpy, matplotlib and netCDF4.
+adaptive cycle at nine steps, displacement scaled by 5, the foundation y = -0.005 drawn; --steps auto
+chooses them from the run's contact intervals as in the paper: (a)-(c) before, during and after the
+first contact, (d)-(f) the same for another contact, (g)-(i) three steps inside one contact, growing,
+largest and shrinking), bar_contact_zone.png (the length of the active contact zone against the
+length of Gamma_C in cells of the run's finest level and the mean level of the cells along Gamma_C,
+per written step). Prints the contact intervals of the adaptive run, the chosen steps and the
+correlations of refined zone and contact zone, over the run and per contact. Uses Debian's python3
+with numpy, matplotlib and netCDF4.
 """
 import argparse
 import os
@@ -22,8 +26,8 @@ import netCDF4  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_results import (exodus_frames, names, nearest_frame, parse_steps, plot_eta, read_csv,  # noqa: E402
-                          require_exodus, time_step)
+from plot_results import (PAPER_LABEL, adaptive_setting, deck_file, exodus_frames, names, nearest_frame,  # noqa: E402
+                          parse_steps, plot_eta, read_csv, require_exodus, time_step)
 from tool_errors import ArgumentParser, InputError, exodus, fail  # noqa: E402
 
 FOUNDATION_X, FOUNDATION_Y = 0.15, -0.005
@@ -43,6 +47,65 @@ def contact_intervals(steps_csv):
     if start is not None:
         intervals.append((start, last))
     return intervals
+
+
+def contact_step_intervals(s, k):
+    """[(first step, last step, step with the most active segments)] of the runs of consecutive steps
+    with active contact segments in a step table."""
+    steps = np.rint(s["t"] / k).astype(int)
+    out, run = [], []
+    for n, active in zip(steps, s["active"]):
+        if active > 0:
+            run.append((n, active))
+        elif run:
+            out.append(run)
+            run = []
+    if run:
+        out.append(run)
+    return [(r[0][0], r[-1][0], max(r, key=lambda na: na[1])[0]) for r in out]
+
+
+def choose_mesh_steps(s, k, written):
+    """The nine steps of Fig. 6.4 from the contact intervals, among the written steps: (a)-(c) the
+    last written step at least 3 steps before the first contact, its written step with the most
+    active segments, the first written step at least 3 steps after it; (d)-(f) the same for another
+    contact; (g)-(i) the contact (other than the first) with the most written steps in contact: its
+    first written step in contact, the one with the most active segments and its last. Returns
+    [(step, caption)]; fewer panels when the run has fewer contacts."""
+    active = dict(zip(np.rint(s["t"] / k).astype(int), s["active"]))
+    written = sorted(set(written))
+    intervals = contact_step_intervals(s, k)
+    inside = [[n for n in written if a <= n <= b and active.get(n, 0) > 0] for a, b, _ in intervals]
+    peak = [max(w, key=lambda n: active[n]) if w else None for w in inside]
+
+    def when(i):
+        a, b, _ = intervals[i]
+        return f"contact {i + 1} ({a * k * 1e3:.2f}-{b * k * 1e3:.2f} ms)"
+
+    def around(i):
+        a, b, _ = intervals[i]
+        before = [n for n in written if n <= a - 3] or [written[0]]
+        after = [n for n in written if n >= b + 3] or [written[-1]]
+        chosen = [(before[-1], f"before {when(i)}")]
+        if peak[i] is not None:
+            chosen.append((peak[i], f"in {when(i)}, most active segments"))
+        return chosen + [(after[0], f"after {when(i)}")]
+
+    panels = []
+    if not intervals:
+        return panels
+    usable = [i for i in range(1, len(intervals)) if len(inside[i]) >= 3]
+    during = max(usable, key=lambda i: (len(inside[i]), -i)) if usable else None
+    panels += around(0)
+    other = [i for i in range(1, len(intervals)) if i != during]
+    if other:
+        panels += around(other[0])
+    if during is not None:
+        w = inside[during]
+        panels += [(w[0], f"in {when(during)}, first written step"),
+                   (peak[during], f"in {when(during)}, most active segments"),
+                   (w[-1], f"in {when(during)}, last written step")]
+    return panels
 
 
 def require_bar_variables(base):
@@ -71,10 +134,14 @@ def frame_data(f, i):
     return x, y, conn, ux, uy, level
 
 
-def plot_meshes(base, steps, k, out, scale=5.0):
+def plot_meshes(base, panels, k, out, scale=5.0):
+    """panels: [(step, caption)]."""
     frames = list(exodus_frames(base))
-    fig, axes = plt.subplots((len(steps) + 2) // 3, 3, figsize=(15, 2.0 * ((len(steps) + 2) // 3)), squeeze=False)
-    for ax, step in zip(axes.flat, steps):
+    s = read_csv(base + ".steps.csv")
+    active = dict(zip(np.rint(s["t"] / k).astype(int), s["active"]))
+    rows = (len(panels) + 2) // 3
+    fig, axes = plt.subplots(rows, 3, figsize=(15, 2.3 * rows + 0.6), squeeze=False)
+    for j, (ax, (step, caption)) in enumerate(zip(axes.flat, panels)):
         time, f, i, step = nearest_frame(frames, step, k)
         x, y, conn, ux, uy, _ = frame_data(f, i)
         X, Y = x + scale * ux, y + scale * uy
@@ -82,41 +149,96 @@ def plot_meshes(base, steps, k, out, scale=5.0):
             ax.plot(X[np.append(q, q[0])], Y[np.append(q, q[0])], "k-", lw=0.15)
         ax.plot([FOUNDATION_X, 0.2], [scale * FOUNDATION_Y] * 2, "r-", lw=1.5)  # the gap scales with u
         ax.set_aspect("equal")
-        ax.set_title(f"n = {step} (t = {time * 1e3:.3f} ms), {len(conn)} cells", fontsize=9)
+        ax.set_title(f"({chr(ord('a') + j)}) n = {step}, t = {time * 1e3:.2f} ms{': ' + caption if caption else ''}\n"
+                     f"{int(active.get(step, 0))} active segments, {len(conn)} cells", fontsize=8)
         ax.set_xticks([])
         ax.set_yticks([])
-    for ax in list(axes.flat)[len(steps):]:
+    for ax in list(axes.flat)[len(panels):]:
         ax.axis("off")
-    fig.suptitle(f"final adaptive cycle, displacement scaled by {scale:g}; red: the foundation u_y = -0.005 m (scaled too)")
+    fig.suptitle(f"paper Fig. 6.4: meshes of the final adaptive cycle{adaptive_setting(base)} of {deck_file(base)}, "
+                 f"displacement scaled by {scale:g}; red: the foundation u_y = -0.005 m (scaled too)", fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "bar_meshes.png"), dpi=150)
     plt.close(fig)
 
 
-def contact_zone_vs_refinement(base, out):
-    """Active segments (steps CSV) and finest-level cells within 0.01 m of the foundation (Exodus)."""
+def gamma_c_frame(f, i):
+    """Per contact edge of a frame: its length, the level of its cell and whether its multiplier
+    is non-zero (active)."""
+    with netCDF4.Dataset(f) as d:
+        x, y = d.variables["coordx"][:], d.variables["coordy"][:]
+        conn = d.variables["connect1"][:] - 1
+        cell = names(d.variables["name_elem_var"])
+        level = d.variables[f"vals_elem_var{cell.index('level') + 1}eb1"][i, :]
+        elems = d.variables["elem_ss1"][:] - 1
+        sides = d.variables["side_ss1"][:] - 1
+        lam = d.variables[f"vals_sset_var{names(d.variables['name_sset_var']).index('lambda') + 1}ss1"][i, :]
+    a = conn[elems, sides]
+    b = conn[elems, (sides + 1) % 4]
+    length = np.hypot(x[a] - x[b], y[a] - y[b])
+    return length, np.asarray(level[elems]), np.asarray(lam) != 0, int(level.max())
+
+
+def correlation(a, b):
+    a, b = np.asarray(a, float), np.asarray(b, float)
+    return float(np.corrcoef(a, b)[0, 1]) if len(a) > 2 and a.std() > 0 and b.std() > 0 else float("nan")
+
+
+def contact_zone_vs_refinement(base, k, out):
+    """The active contact zone against the refinement along Gamma_C, per written step: the length
+    of Gamma_C in cells of the run's finest level and the length-weighted mean level of the cells
+    on Gamma_C. Returns {measure: (overall correlation, [(contact, correlation)])}."""
     s = read_csv(base + ".steps.csv")
-    frames = list(exodus_frames(base))
-    times, fine = [], []
-    for time, f, i in frames:
-        x, y, conn, _, _, level = frame_data(f, i)
-        cx, cy = x[conn].mean(axis=1), y[conn].mean(axis=1)
-        near = (cx >= FOUNDATION_X - 0.01) & (cy <= 0.01)
+    times, active, finest, mean_level, frame_max = [], [], [], [], []
+    rows = [gamma_c_frame(f, i) + (time,) for time, f, i in exodus_frames(base)]
+    top = max(r[3] for r in rows)  # the finest level of the run
+    for length, level, on, most, time in rows:
         times.append(time)
-        fine.append(int(np.sum(near & (level >= level.max()))))
-    active = np.interp(times, s["t"], s["active"])
-    fig, ax = plt.subplots(figsize=(8, 3.5))
-    ax.plot(np.array(times) * 1e3, fine, "b-", label="finest-level cells within 0.01 m of the foundation")
-    ax.set_xlabel("t [ms]")
-    ax.set_ylabel("cells", color="b")
-    ax2 = ax.twinx()
-    ax2.plot(s["t"] * 1e3, s["active"], "r-", lw=0.8, label="active contact segments")
-    ax2.set_ylabel("active segments", color="r")
-    fig.legend(loc="upper right", fontsize=8)
+        active.append(1e3 * length[on].sum())
+        finest.append(1e3 * length[level >= top].sum())
+        mean_level.append(float((length * level).sum() / length.sum()))
+        frame_max.append(most)
+    times, active = np.array(times), np.array(active)
+    steps = np.rint(times / k).astype(int)
+    intervals = contact_step_intervals(s, k)
+    # per contact: its written steps and up to 6 steps on either side, at most to the middle of the gaps
+    windows = []
+    for j, (a, b, _) in enumerate(intervals):
+        lo = a - 6 if j == 0 else max(a - 6, (intervals[j - 1][1] + a) / 2)
+        hi = b + 6 if j == len(intervals) - 1 else min(b + 6, (b + intervals[j + 1][0]) / 2)
+        windows.append((steps >= lo) & (steps <= hi))
+    measures = {"finest": (np.array(finest), f"length of $\\Gamma_C$ in cells of level {top} (the run's finest)"),
+                "mean level": (np.array(mean_level), "mean level of the cells on $\\Gamma_C$ (length-weighted)")}
+    result = {name: (correlation(active, v), [correlation(active[w], v[w]) for w in windows])
+              for name, (v, _) in measures.items()}
+
+    fig, (ax, bx) = plt.subplots(2, 1, figsize=(11, 6.4), sharex=True)
+    ms = times * 1e3
+    for axis in (ax, bx):
+        for a, b, _ in intervals:
+            axis.axvspan((a - 0.5) * k * 1e3, (b + 0.5) * k * 1e3, color="0.85", lw=0)
+        axis.grid(True, alpha=0.3)
+    ax.plot(ms, active, "r-", lw=1, label="active contact zone ($\\lambda_H \\neq 0$)")
+    ax.plot(ms, finest, "b-", lw=1, label=measures["finest"][1])
+    ax.set_ylabel("length on $\\Gamma_C$ [mm]")
+    bx.plot(ms, mean_level, "k-", lw=1, label=measures["mean level"][1])
+    bx.set_ylabel("level")
+    bx.set_xlabel("t [ms]")
+    for axis, name in [(ax, "finest"), (bx, "mean level")]:
+        for j, ((a, b, _), r) in enumerate(zip(intervals, result[name][1])):  # staggered: contacts can be close
+            axis.annotate(f"{r:.2f}", ((a + b) / 2 * k * 1e3, 1.0), xycoords=("data", "axes fraction"),
+                          xytext=(0, 2 + 9 * (j % 2)), textcoords="offset points", ha="center", va="bottom", fontsize=7)
+        axis.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, frameon=False)
+    gamma = f"finest level {top} in every written step" if min(frame_max) == top else \
+        f"finest level of the written steps {min(frame_max)}-{top}"
+    fig.suptitle(f"{os.path.basename(base)} (final adaptive cycle, {gamma}); grey: contact intervals;\n"
+                 "numbers above a contact: correlation with the active length over its steps +-6 (at most to the "
+                 f"middle of the gaps); over the run: r = {result['finest'][0]:.2f} (top), "
+                 f"{result['mean level'][0]:.2f} (bottom)", fontsize=9)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "bar_contact_zone.png"), dpi=150)
     plt.close(fig)
-    return float(np.corrcoef(active, fine)[0, 1]) if len(fine) > 2 else float("nan")
+    return result
 
 
 def main():
@@ -125,7 +247,8 @@ def main():
     ap.add_argument("--uniform", help="output base of the uniform comparison run")
     ap.add_argument("--more-adaptive", action="append", default=[], metavar="BASE:LABEL",
                     help="a further adaptive run for the estimate plot (repeatable)")
-    ap.add_argument("--steps", default="20,30,60,110,160,250", help="steps for the mesh pictures")
+    ap.add_argument("--steps", default="auto",
+                    help="steps for the mesh pictures, or auto: nine steps chosen from the contact intervals")
     ap.add_argument("--time-step", type=float, help="the run's time step (default: from its step table)")
     ap.add_argument("--out", default="out/plots-bar")
     a = ap.parse_args()
@@ -137,18 +260,32 @@ def main():
         require_exodus(a.adaptive)
         require_bar_variables(a.adaptive)
         k = a.time_step or time_step(steps)
-        mesh_steps = parse_steps(a.steps)
+        mesh_steps = None if a.steps == "auto" else parse_steps(a.steps)
     except InputError as e:
         fail(e)
     os.makedirs(a.out, exist_ok=True)
-    plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out)
+    plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out, PAPER_LABEL, eta_unit="m", h_unit="m",
+             title="paper Example 6.2 (bar), cf. Fig. 6.5")
     os.replace(os.path.join(a.out, "eta_vs_unknowns.png"), os.path.join(a.out, "bar_eta_vs_unknowns.png"))
-    plot_meshes(a.adaptive, mesh_steps, k, a.out)
     intervals = contact_intervals(a.adaptive + ".steps.csv")
     print(f"{a.adaptive}: {len(intervals)} contact intervals [ms]: "
           + ", ".join(f"{t0 * 1e3:.2f}-{t1 * 1e3:.2f}" for t0, t1 in intervals))
-    r = contact_zone_vs_refinement(a.adaptive, a.out)
-    print(f"correlation of active segments and finest cells next to the foundation (per output step): {r:.2f}")
+    if mesh_steps is None:
+        written = [int(round(t / k)) for t, _, _ in exodus_frames(a.adaptive)]
+        panels = choose_mesh_steps(steps, k, written)
+        if not panels:
+            print("note: no contact in the run: the meshes of steps 0 and the last written step", file=sys.stderr)
+            panels = [(written[0], "no contact in the run"), (written[-1], "no contact in the run")]
+    else:
+        panels = [(n, "") for n in mesh_steps]
+    print("meshes of steps " + "; ".join(f"({chr(ord('a') + j)}) {n}: {c}" for j, (n, c) in enumerate(panels)))
+    plot_meshes(a.adaptive, panels, k, a.out)
+    result = contact_zone_vs_refinement(a.adaptive, k, a.out)
+    for name, (overall, per) in result.items():
+        what = {"finest": "length of Gamma_C in cells of the run's finest level",
+                "mean level": "mean level of the cells on Gamma_C"}[name]
+        print(f"correlation of the active contact length with the {what} (per written step): "
+              f"{overall:.2f} over the run; per contact " + ", ".join(f"{r:.2f}" for r in per))
 
 
 if __name__ == "__main__":
