@@ -133,8 +133,16 @@ std::string LinearSolver::checkParameters(const core::ParameterList& params, boo
   if (canonical.empty()) {
     std::ostringstream names;
     for (const auto& name : supportedMethods()) names << (names.tellp() > 0 ? ", " : "") << name;
+    // Recycling CG is a Belos method for SPD systems, but Trilinos 13.2's solver factory does not
+    // register it for Tpetra ("has not been registered" at run time).
+    std::string upper;
+    for (char c : method) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    const bool rcg = upper == "RCG" || upper == "RECYCLING CG";
     SIGNORINI_USER_ERROR("Linear Solver/Method: \"" << method << "\" is not one of the Krylov methods for these "
-                         "symmetric positive definite systems: " << names.str() << " (any case)");
+                         "symmetric positive definite systems: " << names.str() << " (any case)"
+                         << (rcg ? "; RCG (recycling CG) is not registered in this Trilinos's Belos solver factory "
+                                   "for Tpetra, GCRODR recycles as well"
+                                 : ""));
   }
   // The Belos keys that signorini sets from its own (they would be overridden silently).
   const auto& belos = params.sublist("Belos");
