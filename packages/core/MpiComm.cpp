@@ -1,6 +1,9 @@
 #include "MpiComm.hpp"
 
+#include <chrono>
+#include <iostream>
 #include <string>
+#include <thread>
 
 #include <unistd.h>
 
@@ -40,6 +43,31 @@ void throwFirstUserError(const Comm& comm, const std::string& localMessage) {
   message.resize(static_cast<size_t>(length));
   MPI_Bcast(message.data(), length, MPI_CHAR, first, c);
   throw UserError(message);
+}
+
+void throwFirstUserErrorOrAbort(const Comm& comm, const std::string& localMessage, double seconds) {
+  MPI_Comm c = rawMpiComm(comm);
+  int size = 1;
+  MPI_Comm_size(c, &size);
+  if (size > 1) {
+    // Only a rank with a message can be left alone here: the others are then still inside the library.
+    int mine = localMessage.empty() ? 0 : 1, any = 0, done = 0;
+    MPI_Request request;
+    MPI_Iallreduce(&mine, &any, 1, MPI_INT, MPI_MAX, c, &request);
+    const auto start = std::chrono::steady_clock::now();
+    while (!done) {
+      MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+      if (done) break;
+      if (mine && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > seconds) {
+        std::cerr << "signorini: error: " << localMessage
+                  << " (on this rank only; the other ranks wait inside the library: ending them)" << std::endl;
+        MPI_Abort(c, 1);
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    if (!any) return;
+  }
+  throwFirstUserError(comm, localMessage);
 }
 
 void onRootCollectively(const Comm& comm, const std::function<void()>& action) {

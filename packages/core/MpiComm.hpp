@@ -23,6 +23,13 @@ void onRootCollectively(const Comm& comm, const std::function<void()>& action);
 /// every rank throws core::UserError with the message of the lowest such rank. Collective.
 void throwFirstUserError(const Comm& comm, const std::string& localMessage);
 
+/// throwFirstUserError() after a call into a library whose collectives a rank may have left by an
+/// exception while the others wait in them (MueLu's set-up failing on some ranks only): a rank with
+/// a message waits at most \p seconds for the others; if they do not come, it prints its message
+/// to stderr ("signorini: error: ...") and ends every rank with MPI_Abort (exit status 1; the
+/// run's .part files stay behind, and the next run in the folder removes them). Collective.
+void throwFirstUserErrorOrAbort(const Comm& comm, const std::string& localMessage, double seconds = 20.0);
+
 /// The physical memory of this node [bytes] divided by the ranks of \p comm on it
 /// (MPI_COMM_TYPE_SHARED): what one rank can use. Collective.
 double memoryPerRank(const Comm& comm);

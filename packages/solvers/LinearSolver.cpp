@@ -13,6 +13,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "Error.hpp"
+#include "MpiComm.hpp"
 #include "JacobiCG.hpp"
 #include "ReproducibleSum.hpp"
 
@@ -151,6 +152,12 @@ std::string LinearSolver::checkParameters(const core::ParameterList& params, boo
     if (belos.isParameter(key))
       SIGNORINI_USER_ERROR("Linear Solver/Belos/" << key << ": set by signorini from Linear Solver/" << ours
                                                   << "; set that instead");
+  // The MueLu keys that signorini sets from the problem (the rigid body modes of elasticity).
+  const auto& mueluGiven = params.sublist("MueLu");
+  for (const auto& [key, from] : {std::pair<const char*, const char*>{"number of equations", "the unknowns per node of Problem/Type"},
+                                  {"user data", "the rigid body modes of Problem/Type"}})
+    if (mueluGiven.isParameter(key) || mueluGiven.isSublist(key))
+      SIGNORINI_USER_ERROR("Linear Solver/MueLu/" << key << ": set by signorini from " << from);
   // MueLu's own validation prints its whole parameter table (hundreds of lines) before it throws.
   const auto& muelu = params.sublist("MueLu");
   const auto valid = MueLu::MasterList::List();
@@ -230,12 +237,15 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
     mueluParams.setParameters(I.params.sublist("MueLu"));
     // MueLu gets its own copy of A (the assemblers' matrices view arrays their pattern shares).
     RCP<Operator> op = Teuchos::rcp(new CrsMatrix(*A, Teuchos::Copy));
+    std::string failure;
     try {
       I.prec = MueLu::CreateTpetraPreconditioner(op, mueluParams);
     } catch (const std::exception& e) {
       if (I.params.sublist("MueLu").numParams() == 0) throw;  // not the user's settings
-      SIGNORINI_USER_ERROR("Linear Solver/MueLu: MueLu cannot be set up with these parameters: " << firstLines(e.what()));
+      failure = "Linear Solver/MueLu: MueLu cannot be set up with these parameters: " + firstLines(e.what());
     }
+    // A set-up that fails on some ranks only leaves the others inside MueLu's collectives.
+    core::throwFirstUserErrorOrAbort(*A->getComm(), failure);
   } else if (choice == "Jacobi") {
     I.prec = Teuchos::rcp(new JacobiPreconditioner(*A));
   }

@@ -570,6 +570,12 @@ signorini_add_driver_test(unknown_krylov_method EXIT 1
 signorini_add_driver_test(krylov_method_needing_a_right_preconditioner EXIT 1
   ARGS --check --output-dir {OUT} --set "Linear Solver/Method=BICGSTAB" ${decks}/good.xml
   REGEX "Linear Solver/Method: \"BICGSTAB\" is not one of the Krylov methods")
+# MueLu keys that signorini sets itself: on 2 ranks "number of equations = 3" failed MueLu's set-up
+# on one rank only and left the other waiting inside MueLu (a hang); refused before the run.
+signorini_add_driver_test(muelu_key_set_by_signorini EXIT 1
+  ARGS --check --output-dir {OUT} --set "Mesh/Refinement Level=4" --set "Linear Solver/Preconditioner=MueLu"
+       --set "Linear Solver/MueLu/number of equations=3" ${decks}/good.xml
+  REGEX "Linear Solver/MueLu/number of equations: set by signorini from the unknowns per node of Problem/Type")
 # DESIGN 1.6 names RCG, but Trilinos 13.2's Belos factory does not register it for Tpetra: refused
 # before the run with the reason, not as an unexpected error at the first solve.
 signorini_add_driver_test(krylov_method_not_registered EXIT 1
