@@ -364,6 +364,17 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                                     s.forest, s.mesh, dynamic_cast<const fem::ElasticityAssembler&>(s.assembler),
                                     s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor, s.lambda,
                                     solveSPD, s.meshId, guess});
+        {
+          // Not finite: beta k^2 (or its square, in the physical scaling's division) left the range
+          // of doubles, e.g. for a time step of 1e-100; the marking needs numbers.
+          bool finite = std::isfinite(r.eta);
+          for (double x : r.cellIndicator) finite = finite && std::isfinite(x);
+          std::ostringstream why;
+          if (!finite)
+            why << "the estimator's indicators are not finite numbers: Time Integration/Time Step = " << s.timeStep << " gives beta k^2 = " << s.beta * s.timeStep * s.timeStep
+                << ", which the estimate (Estimator/Scaling) cannot divide by or square in doubles";
+          core::throwFirstUserError(*sim_->comm(), why.str());
+        }
         etaMax = std::max(etaMax, r.eta);
         std::vector<double> indicator(r.cellIndicator.size());
         for (size_t e = 0; e < indicator.size(); ++e) indicator[e] = std::sqrt(r.cellIndicator[e]);
