@@ -369,16 +369,32 @@ struct Simulation::Impl {
       const unsigned fixed = problem->dirichletMask |
                              (problem->components() == 2 ? problem->componentDirichletMask[problem->contactComponent] : 0u);
       int overlapLocal = 0, overlapGlobal = 0;
+      const auto& corners = d->mesh->cornerCoordsHost;
       for (const auto& be : d->mesh->boundaryEdges())
         if (be.segments & problem->contactMask) {
           if (be.segments & fixed) overlapLocal |= 1;
           if (be.segments & problem->neumannMask) overlapLocal |= 2;
+          if (problem->components() == 2) {
+            // d = Contact Direction points into the body (d . n < 0, n the outward normal from the
+            // edge and its cell's centre), so that d . u >= g keeps the body off an obstacle outside it.
+            const double tx = be.x[1][0] - be.x[0][0], ty = be.x[1][1] - be.x[0][1];
+            double cx = 0, cy = 0;
+            for (int c = 0; c < 4; ++c) cx += 0.25 * corners(be.cell, c, 0), cy += 0.25 * corners(be.cell, c, 1);
+            double nx = ty, ny = -tx;
+            if (nx * (0.5 * (be.x[0][0] + be.x[1][0]) - cx) + ny * (0.5 * (be.x[0][1] + be.x[1][1]) - cy) < 0) nx = -nx, ny = -ny;
+            const double dn = problem->contactSign * (problem->contactComponent == 0 ? nx : ny);
+            if (!(dn < -1e-3 * std::hypot(nx, ny))) overlapLocal |= 4;
+          }
         }
       Teuchos::reduceAll(*comm, Teuchos::REDUCE_BOR, overlapLocal, Teuchos::outArg(overlapGlobal));
       if (overlapGlobal & 1)
         SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a contact segment and a Dirichlet segment "
                              "that fixes the constrained component (Problem/Contact Segments against Dirichlet Segments"
                              << (problem->components() == 2 ? ", Dirichlet X Segments, Dirichlet Y Segments" : "") << ")");
+      if (overlapGlobal & 4)
+        SIGNORINI_USER_ERROR("Problem/Contact Direction: on a contact edge it does not point into the body (d is "
+                             "minus the outward normal, e.g. +y on a bottom edge; otherwise d . u >= g puts the "
+                             "obstacle inside the body or along its boundary)");
       if (overlapGlobal & 2)
         SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a contact segment and a Neumann segment "
                              "(Problem/Contact Segments against Neumann Segments; on Gamma_C the traction is the multiplier)");

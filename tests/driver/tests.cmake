@@ -570,6 +570,14 @@ signorini_add_driver_test(unknown_krylov_method EXIT 1
 signorini_add_driver_test(krylov_method_needing_a_right_preconditioner EXIT 1
   ARGS --check --output-dir {OUT} --set "Linear Solver/Method=BICGSTAB" ${decks}/good.xml
   REGEX "Linear Solver/Method: \"BICGSTAB\" is not one of the Krylov methods")
+# Contact Direction along the outward normal or tangential (the bar's foundation is its bottom: +y):
+# the obstacle would be inside the body or along its boundary; it ran without ever touching.
+signorini_add_driver_test(contact_direction_outward EXIT 1
+  ARGS --check --output-dir {OUT} --set "Problem/Contact Direction=-y" ${PROJECT_SOURCE_DIR}/inputs/bar.xml
+  REGEX "Problem/Contact Direction: on a contact edge it does not point into the body")
+signorini_add_driver_test(contact_direction_tangential EXIT 1
+  ARGS --check --output-dir {OUT} --set "Problem/Contact Direction=+x" ${PROJECT_SOURCE_DIR}/inputs/bar.xml
+  REGEX "Problem/Contact Direction: on a contact edge it does not point into the body")
 # A time step so small that beta k^2 leaves the doubles the estimator needs: a user error naming
 # the key (it was an internal assertion in the marking).
 signorini_add_driver_test(estimate_not_finite EXIT 1
