@@ -691,6 +691,57 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     // The KKT tolerance is absolute (Contact/KKT Tolerance times the domain diameter): a warning when
     // even the largest initial gap is within 1000 tolerances, so that the contact would be resolved
     // to fewer than three digits (a problem whose motion is tiny against the domain).
+    // Initial data that is not 0 where the body is held (homogeneous Dirichlet conditions): the held
+    // unknowns stay 0, and the L2 projection of the rest oscillates next to them.
+    const auto& held = d->assembler->dirichletFlags();
+    const auto& coords = d->mesh->nodeCoords();
+    const int nc = I.problem->components();
+    for (const auto& [key, field] : {std::pair<const char*, const core::ExpressionList*>{"Initial Displacement",
+                                                                                         &I.problem->initialDisplacement},
+                                     {"Initial Velocity", &I.problem->initialVelocity}}) {
+      double local[2] = {0, 0}, global[2];  // largest |value| at held unknowns, anywhere
+      for (size_t i = 0; i < held.size(); ++i) {
+        const auto& x = coords[i / nc];
+        const double value = std::abs((*field)[static_cast<int>(i % nc)](x[0], x[1], 0.0));
+        local[1] = std::max(local[1], value);
+        if (held[i]) local[0] = std::max(local[0], value);
+      }
+      Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 2, local, global);
+      if (global[0] > 1e-12 * global[1] && global[0] > 0 && comm->getRank() == 0)
+        std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": Problem/" << key
+                  << " is not 0 on the Dirichlet segments (up to " << global[0]
+                  << "): there the body is held at 0, and the projected initial state oscillates next to them"
+                  << std::endl;
+    }
+    // The constraint holds in the means over the segments (checkInitialGap); an obstacle above the
+    // initial displacement at points of the contact boundary is most likely a mistake in the deck.
+    if (d->coupling) {
+      double worst[3] = {0, 0, 0};  // the largest penetration g - d . u0 and its point
+      const auto& u0 = I.problem->initialDisplacement[nc == 1 ? 0 : I.problem->contactComponent];
+      const double sign = nc == 1 ? 1.0 : I.problem->contactSign;
+      for (const auto& be : d->mesh->boundaryEdges())
+        if (be.segments & I.problem->contactMask)
+          for (double w : {0.0, 0.5, 1.0}) {
+            const double x = (1 - w) * be.x[0][0] + w * be.x[1][0], y = (1 - w) * be.x[0][1] + w * be.x[1][1];
+            const double penetration = I.problem->obstacle(x, y, 0.0) - sign * u0(x, y, 0.0);
+            if (penetration > worst[0]) worst[0] = penetration, worst[1] = x, worst[2] = y;
+          }
+      struct {
+        double value;
+        int rank;
+      } mine{worst[0], comm->getRank()}, first{};
+      MPI_Allreduce(&mine, &first, 1, MPI_DOUBLE_INT, MPI_MAXLOC, core::rawMpiComm(*comm));
+      if (first.value > d->qp->gapTolerance()) {
+        MPI_Bcast(worst, 3, MPI_DOUBLE, first.rank, core::rawMpiComm(*comm));
+        if (comm->getRank() == 0)
+          std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath
+                    << ": Problem/Obstacle lies above Problem/Initial Displacement at points of the contact boundary "
+                    << "(by up to " << worst[0] << " at (" << worst[1] << ", " << worst[2]
+                    << ")); the discrete constraint holds only in the means over the segments, so the run starts "
+                       "there in penetration"
+                    << std::endl;
+      }
+    }
     const double largest = I.checkInitialGap(*d, u);
     if (d->qp && largest > 0 && largest < 1000 * d->qp->gapTolerance() && comm->getRank() == 0)
       std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": the largest initial gap, " << largest

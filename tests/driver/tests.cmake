@@ -578,6 +578,15 @@ signorini_add_driver_test(contact_direction_outward EXIT 1
 signorini_add_driver_test(contact_direction_tangential EXIT 1
   ARGS --check --output-dir {OUT} --set "Problem/Contact Direction=+x" ${PROJECT_SOURCE_DIR}/inputs/bar.xml
   REGEX "Problem/Contact Direction: on a contact edge it does not point into the body")
+# Initial data against the boundary conditions, warned about (not errors: the run is defined):
+# a displacement not 0 where the body is clamped, an obstacle above the initial displacement at
+# points of the contact boundary while the segment means keep the discrete constraint.
+signorini_add_driver_test(initial_displacement_on_dirichlet_segments EXIT 0
+  ARGS --check --output-dir {OUT} --set "Problem/Initial Displacement=0.3" ${decks}/good.xml
+  REGEX "warning: .*Problem/Initial Displacement is not 0 on the Dirichlet segments [(]up to 0.3[)]")
+signorini_add_driver_test(obstacle_above_initial_displacement_at_points EXIT 0
+  ARGS --check --output-dir {OUT} --set "Problem/Obstacle=y < 0.1 ? 0.05 : -1" ${decks}/good.xml
+  REGEX "warning: .*Problem/Obstacle lies above Problem/Initial Displacement at points of the contact boundary [(]by up to 0.05 at [(]1, 0[)][)]")
 # A time step so small that beta k^2 leaves the doubles the estimator needs: a user error naming
 # the key (it was an internal assertion in the marking).
 signorini_add_driver_test(estimate_not_finite EXIT 1
