@@ -80,8 +80,9 @@ core::ParameterList ContactQP::getValidParameters() {
                "Mesh of the coarse correction A_c (factored once per run, on every rank): the finest uniform refinement "
                "of the deck's coarse mesh, at most at Mesh/Refinement Level, with at most this many cells (the coarse "
                "mesh's own cells, or its blocks of 2^o x 2^o rectangle cells that form one tree, when even those are "
-               "more). Memory and set-up time grow with it; the far field needs few cells",
-               1);
+               "more). Memory and set-up time grow with it (65536 cells: about 1 GB per rank); the far field "
+               "needs few cells",
+               1, 65536);
   core::addDouble(p, "Strip Width", 6.0,
                   "Width of the strip in units of c k (wave speed times time step; Q decays like exp(-1.4 d/k)): "
                   "segment j gets ceil(width (c k / h_min) h_f / h_j) node layers (h_j its edge length, h_f that "

@@ -308,6 +308,10 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
                  "problem's data within the range of doubles?)"
                : core::withoutSourceLocation(e.what()));
     throw core::SolverError(os.str());
+  } catch (const std::exception& e) {  // e.g. GCRODR's "Num Recycled Blocks" against its "Num Blocks"
+    if (I.params.sublist("Belos").numParams() == 0) throw;  // not the user's settings
+    SIGNORINI_USER_ERROR("Linear Solver/Belos: Belos' \"" << canonicalMethod(I.params.get<std::string>("Method"))
+                         << "\" cannot solve with these parameters: " << firstLines(e.what()));
   }
   const int its = I.solver->getNumIters();
   I.iterations += its;

@@ -599,6 +599,16 @@ signorini_add_driver_test(muelu_key_set_by_signorini EXIT 1
   ARGS --check --output-dir {OUT} --set "Mesh/Refinement Level=4" --set "Linear Solver/Preconditioner=MueLu"
        --set "Linear Solver/MueLu/number of equations=3" ${decks}/good.xml
   REGEX "Linear Solver/MueLu/number of equations: set by signorini from the unknowns per node of Problem/Type")
+# The coarse correction is factored on every rank: bounded (2^31 - 1 cells ran out of memory after 93 s).
+signorini_add_driver_test(coarse_correction_cells_bounded EXIT 1
+  ARGS --check --output-dir {OUT} --set "Contact/Coarse Correction Cells=2147483647" ${decks}/good.xml
+  REGEX "'Contact/Coarse Correction Cells' = 2147483647 is not allowed; it must be in [[]1, 65536[]]")
+# A Belos setting that Belos refuses only when it solves (GCRODR's recycled blocks against its
+# subspace): a user error naming the sublist, not Belos' text as an unexpected error.
+signorini_add_driver_test(belos_setting_refused_at_the_solve EXIT 1
+  ARGS --output-dir {OUT} --set "Linear Solver/Method=GCRODR" --set "Mesh/Refinement Level=2"
+       --set "Linear Solver/Belos/Num Blocks=2" ${decks}/good.xml
+  REGEX "Linear Solver/Belos: Belos' \"GCRODR\" cannot solve with these parameters: .*recycled blocks")
 # DESIGN 1.6 names RCG, but Trilinos 13.2's Belos factory does not register it for Tpetra: refused
 # before the run with the reason, not as an unexpected error at the first solve.
 signorini_add_driver_test(krylov_method_not_registered EXIT 1
