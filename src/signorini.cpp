@@ -21,6 +21,8 @@
 #include "DeckReader.hpp"
 #include "Error.hpp"
 #include "Interrupt.hpp"
+#include "OutputStaging.hpp"
+#include "ProblemData.hpp"
 #include "ParameterTools.hpp"
 #include "PhaseTimers.hpp"
 #include "AdaptiveSimulation.hpp"
@@ -45,6 +47,10 @@ ParameterList readDeck(const std::string& path, const std::vector<std::string>& 
   const auto valid = signorini::adapt::AdaptiveSimulation::getValidParameters();
   for (const auto& o : overrides) signorini::core::applyOverride(deck, o, valid);
   signorini::core::validateDeck(deck, valid, path);
+  // Valid settings without effect (e.g. Neumann Data without Neumann Segments): a warning.
+  const std::string problemWarning = signorini::fem::ProblemData::checkParameters(deck.sublist("Problem"));
+  if (!problemWarning.empty() && comm.getRank() == 0)
+    std::cerr << "signorini: warning: " << path << ": " << problemWarning << std::endl;
   return deck;
 }
 
@@ -156,6 +162,16 @@ int main(int argc, char** argv) {
           throw signorini::core::UserError("writes to the output base '" + sim.outputBase() + "' of the batch's deck " +
                                            earlier.first->second + ", whose results it would replace; give one " +
                                            "of them its own Output/Basename or run it separately");
+        {  // a basename too long for the file system would fail only when the run creates its first file
+          const auto& adaptivity = deck.sublist("Adaptivity");
+          const bool named = !deck.sublist("Output").get<std::string>("Basename").empty();
+          signorini::io::checkOutputNameLength(
+              sim.outputBase(),
+              signorini::io::longestRunOutputSuffix(adaptivity.get<std::string>("Strategy") != "none",
+                                                    adaptivity.get<int>("Cycles")),
+              named ? "Output/Basename" : "the output basename (the deck's file name; Output/Basename sets another)",
+              outputDir.empty() ? "Output/Directory" : "--output-dir");
+        }
         if (checkOnly) {
           std::istringstream lines(sim.plan());
           out << "signorini: " << path << " is valid; the run would do:" << std::endl;

@@ -22,6 +22,16 @@ Expression::Expression(const std::string& text, const std::string& where)
     : text_(text), where_(where), impl_(std::make_unique<Impl>()) {
   if (text.find_first_not_of(" \t\n") == std::string::npos)
     SIGNORINI_USER_ERROR(where << ": empty expression");
+  // muParser's "=" assigns to a variable: "x=1 ? 0 : -1" sets x to 0 and evaluates to 0, which
+  // changes the point every later term sees. A lone "=" (not in ==, <=, >=, !=) is refused.
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if ((c == '=' || c == '<' || c == '>' || c == '!') && i + 1 < text.size() && text[i + 1] == '=')
+      ++i;  // a comparison
+    else if (c == '=')
+      SIGNORINI_USER_ERROR(where << ": expression '" << text << "' contains '=', which assigns to a variable "
+                                 << "(muParser's assignment operator); write '==' to compare");
+  }
   try {
     impl_->bind();
     impl_->parser.DefineConst("pi", M_PI);

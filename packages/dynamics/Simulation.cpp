@@ -363,6 +363,18 @@ struct Simulation::Impl {
       d->solver->setNearNullspace(elasticity->rigidBodyModes(), 2);
     d->solver->setOperator(d->A, d->courant);
     if (!segmentsChecked) checkSegmentsHaveEdges(*d->mesh), segmentsChecked = true;
+    {
+      // A Neumann edge where every component is held (under segment names of their own; the same
+      // name in both lists is refused with the deck): the Dirichlet condition would drop the load.
+      int both = 0, any = 0;
+      for (const auto& be : d->mesh->boundaryEdges())
+        both |= (be.segments & problem->neumannMask) && (be.segments & problem->dirichletMask);
+      Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, both, Teuchos::outArg(any));
+      if (any)
+        SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a Neumann segment and a Dirichlet segment "
+                             "(Problem/Neumann Segments against Dirichlet Segments; the Dirichlet condition fixes u there, "
+                             "so the load would be dropped)");
+    }
     if (problem->hasObstacle) {
       // Contact where the constrained unknown is fixed (also under another segment name, or by a
       // Dirichlet X/Y segment on the contact component): a user error, on every mesh.

@@ -46,15 +46,35 @@ core::ParameterList ProblemData::getValidParameters() {
 }
 
 namespace {
+std::string trimmed(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\n\r"), e = s.find_last_not_of(" \t\n\r");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
+/// The segments the comma-separated \p list names, as a bit mask; a blank list names none. An
+/// empty item ("a,,b", "a,") or a name given twice is a user error naming \p key.
 unsigned maskOf(const std::string& list, const mesh::BoundarySegments& segments, const std::string& key) {
+  if (trimmed(list).empty()) return 0;
   unsigned mask = 0;
-  std::stringstream ss(list);
-  for (std::string name; std::getline(ss, name, ',');) {
-    const auto b = name.find_first_not_of(" \t"), e = name.find_last_not_of(" \t");
-    if (b == std::string::npos) continue;
-    mask |= 1u << segments.index(name.substr(b, e - b + 1), key);
+  for (size_t start = 0;;) {
+    const auto comma = list.find(',', start);
+    const std::string name = trimmed(list.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (name.empty())
+      SIGNORINI_USER_ERROR(key << ": empty item in the list '" << list
+                               << "' (a comma at the start or the end, or two commas in a row)");
+    const unsigned bit = 1u << segments.index(name, key);
+    if (mask & bit) SIGNORINI_USER_ERROR(key << ": the segment '" << name << "' is named twice in '" << list << "'");
+    mask |= bit;
+    if (comma == std::string::npos) return mask;
+    start = comma + 1;
   }
-  return mask;
+}
+
+/// The name of the first segment in \p mask.
+std::string firstName(unsigned mask, const mesh::BoundarySegments& segments) {
+  for (int i = 0; i < segments.size(); ++i)
+    if (mask >> i & 1u) return segments.name(i);
+  return "";
 }
 }  // namespace
 
@@ -119,6 +139,39 @@ ProblemData::ProblemData(const core::ParameterList& p, const mesh::BoundarySegme
   if (componentDirichletMask[contactComponent] & contactMask)
     SIGNORINI_USER_ERROR("Problem/Contact Segments and Problem/Dirichlet " << (contactComponent ? "Y" : "X")
                                                                           << " Segments name the same segment");
+  // Gamma_D and Gamma_N are disjoint: the Dirichlet condition replaces the equations of the fixed
+  // unknowns, so a load there would have no effect. A segment with every component fixed (also by
+  // both Dirichlet X and Y Segments) is refused as a Neumann segment; a roller only if the traction
+  // acts on its fixed component (the Neumann Data of that component is not the constant 0).
+  const unsigned allFixed = dirichletMask | (componentDirichletMask[0] & componentDirichletMask[1]);
+  if (const unsigned both = allFixed & neumannMask) {
+    const std::string name = firstName(both, segments);
+    if (dirichletMask & both)
+      SIGNORINI_USER_ERROR("Problem/Neumann Segments and Problem/Dirichlet Segments name the same segment '"
+                           << name << "': the Dirichlet condition fixes " << (model == Model::ScalarWave ? "u" : "every component of u")
+                           << " there, so the load Problem/Neumann Data would have no effect on it");
+    SIGNORINI_USER_ERROR("Problem/Neumann Segments names the segment '"
+                         << name << "', which Problem/Dirichlet X Segments and Dirichlet Y Segments both name: every "
+                                    "component of u is fixed there, so the load Problem/Neumann Data would have no effect on it");
+  }
+  if (model == Model::PlaneStrainElasticity)
+    for (int c = 0; c < 2; ++c) {
+      const unsigned both = componentDirichletMask[c] & neumannMask;
+      const auto& q = neumannData[c];
+      if (both && !(q.isConstant() && q(0, 0, 0) == 0.0))
+        SIGNORINI_USER_ERROR("Problem/Neumann Segments and Problem/Dirichlet " << (c ? "Y" : "X")
+                             << " Segments name the same segment '" << firstName(both, segments) << "', where u_"
+                             << (c ? "y" : "x") << " = 0, but Problem/Neumann Data gives a traction component "
+                             << (c ? "qy" : "qx") << " = '" << q.text()
+                             << "' there, which would have no effect (only the free component can carry a load)");
+    }
+}
+
+std::string ProblemData::checkParameters(const core::ParameterList& p) {
+  if (!trimmed(p.get<std::string>("Neumann Segments")).empty()) return "";
+  const std::string keys = core::keysSetOtherThanDefaults(p, getValidParameters(), "Problem",
+                                                          [](const std::string& k) { return k == "Neumann Data"; });
+  return keys.empty() ? "" : "no Problem/Neumann Segments; without effect: " + keys;
 }
 
 double ProblemData::waveSpeed() const {

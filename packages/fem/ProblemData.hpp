@@ -17,7 +17,13 @@ struct ProblemData {
   static core::ParameterList getValidParameters();
   /// Reads a validated "Problem" sublist; resolves segment names against \p segments.
   /// Throws core::UserError naming the key for an expression that does not parse or an unknown segment.
+  /// Throws core::UserError naming the keys for a segment that is both a Dirichlet and a Neumann
+  /// segment (for a roller: if the traction acts on its fixed component) and for a segment list
+  /// with an empty item or a name given twice.
   ProblemData(const core::ParameterList& p, const mesh::BoundarySegments& segments);
+  /// Settings of the validated "Problem" sublist \p p that are valid but have no effect, as a
+  /// warning ("no Problem/Neumann Segments; without effect: Problem/Neumann Data"); empty if none.
+  static std::string checkParameters(const core::ParameterList& p);
 
   Model model = Model::ScalarWave;
   double density = 1.0;    ///< rho [mass / area] (scalar wave) or [mass / volume] (elasticity)

@@ -1,9 +1,11 @@
 #include "CsvWriter.hpp"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -15,8 +17,13 @@ namespace signorini::io {
 
 CsvWriter::CsvWriter(std::string path, std::vector<std::string> columns)
     : path_(std::move(path)), columns_(std::move(columns)) {
+  errno = 0;
   out_.open(path_ + ".part", std::ios::out | std::ios::trunc);
-  if (!out_) SIGNORINI_USER_ERROR("cannot create output file '" << path_ << ".part'");
+  if (!out_) {  // the reason, e.g. "File name too long" for a long Output/Basename
+    const int reason = errno;
+    SIGNORINI_USER_ERROR("cannot create output file '" << path_ << ".part': "
+                                                       << (reason ? std::strerror(reason) : "reason unknown"));
+  }
   for (size_t i = 0; i < columns_.size(); ++i) out_ << (i ? "," : "") << columns_[i];
   out_ << "\n";
   out_.flush();

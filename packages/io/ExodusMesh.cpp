@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
@@ -296,11 +298,14 @@ struct ExodusSeriesWriter::Impl {
     ++filesStarted;
 
     int cpuWordSize = 8, ioWordSize = 8;
+    errno = 0;
     exoid = ex_create(partPath.c_str(), EX_CLOBBER, &cpuWordSize, &ioWordSize);
     if (exoid < 0) {
+      const int reason = errno;  // e.g. "File name too long" for a long Output/Basename
       SIGNORINI_USER_ERROR("cannot create Exodus II output file '"
-                           << partPath << "' (for '" << finalPath
-                           << "'): check that the output directory exists and is writable");
+                           << partPath << "' (for '" << finalPath << "'): "
+                           << (reason ? std::strerror(reason)
+                                      : "check that the output directory exists and is writable"));
     }
     meshId = id;
     numSteps = 0;

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <climits>
 #include <filesystem>
 #include <map>
 #include <set>
 #include <system_error>
 #include <utility>
 #include <vector>
+
+#include <unistd.h>
 
 #include "Error.hpp"
 #include "StringTools.hpp"
@@ -79,6 +82,53 @@ bool isRunOutputSuffix(std::string suffix) {
     }
   }
   return suffix == ".steps.csv" || suffix == ".cycles.csv" || suffix == ".e" || isExodusSeriesSuffix(suffix);
+}
+
+std::string longestRunOutputSuffix(bool adaptive, int cycles) {
+  const std::string cycleTable = ".cycles.csv.part";
+  if (!adaptive) return ".steps.csv.part";
+  if (cycles < 2) return cycleTable;
+  const std::string cycleSteps = ".cycle" + std::to_string(cycles - 2) + ".steps.csv.part";
+  return cycleSteps.size() > cycleTable.size() ? cycleSteps : cycleTable;
+}
+
+void checkOutputNameLength(const std::string& base, const std::string& suffix, const std::string& key,
+                           const std::string& folderKey) {
+  const fs::path path(base);
+  const std::string name = path.filename().string() + suffix;
+  // The file system's limit, asked of the folder or of its nearest existing ancestor (a --check
+  // creates no folder); NAME_MAX (255 on Linux) if it does not say.
+  fs::path folder = path.has_parent_path() ? path.parent_path() : fs::path(".");
+  std::error_code ec;
+  while (!fs::is_directory(folder, ec)) {
+    if (!folder.has_parent_path() || folder.parent_path() == folder) {
+      folder = folder.is_absolute() ? folder.root_path() : fs::path(".");
+      break;
+    }
+    folder = folder.parent_path();
+  }
+  long limit = ::pathconf(folder.c_str(), _PC_NAME_MAX);
+  if (limit <= 0) limit = NAME_MAX;
+  const auto shortened = [](const std::string& s) { return s.size() > 40 ? s.substr(0, 32) + "..." : s; };
+  if (path.has_parent_path())
+    for (const auto& part : path.parent_path())
+      if (static_cast<long>(part.string().size()) > limit)
+        SIGNORINI_USER_ERROR(folderKey << " '" << path.parent_path().string() << "': the folder name '"
+                                       << shortened(part.string()) << "' has " << part.string().size()
+                                       << " characters, more than the " << limit
+                                       << " the file system allows (NAME_MAX)");
+  if (static_cast<long>(name.size()) > limit) {
+    const std::string stem = path.filename().string();
+    SIGNORINI_USER_ERROR(key << " '" << shortened(stem) << "' (" << stem.size()
+                             << " characters) is too long: with the suffix '" << suffix << "' of the run's files a file "
+                             << "name has " << name.size() << " characters, more than the " << limit
+                             << " the file system allows (NAME_MAX); choose a shorter basename");
+  }
+  const std::string full = fs::absolute(path, ec).string() + suffix;
+  if (full.size() >= PATH_MAX)
+    SIGNORINI_USER_ERROR(folderKey << " and " << key << ": the run's file '" << shortened(full) << "' has a path of "
+                                   << full.size() << " characters, more than the " << PATH_MAX - 1
+                                   << " the system allows (PATH_MAX)");
 }
 
 OutputStaging::OutputStaging() : outermost_(staging().depth == 0) { ++staging().depth; }

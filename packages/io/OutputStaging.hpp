@@ -54,5 +54,16 @@ void retireOnCommit(const std::string& basePath, const std::function<bool(const 
 bool isRunOutputSuffix(std::string suffix);
 /// Whether \p suffix is ".e-s.<digits>", the suffix of the files after the first of an Exodus series.
 bool isExodusSeriesSuffix(const std::string& suffix);
+/// The longest suffix (".part" included) of the files a run with output base "<base>" writes:
+/// ".steps.csv.part" without adaptivity; with it (\p adaptive), ".cycles.csv.part" or
+/// ".cycle<l>.steps.csv.part" of the last cycle l < \p cycles - 1 that has files of its own. (An
+/// Exodus series' ".e-s.NNNN.part" is shorter below 100000 files.)
+std::string longestRunOutputSuffix(bool adaptive, int cycles);
+/// Throws core::UserError naming \p key (the basename's) if the file name of "<base><suffix>" is
+/// longer than the file system of its folder (or of the nearest folder above it that exists)
+/// allows (NAME_MAX), naming \p folderKey if a folder name of \p base is, and both if the whole
+/// path is longer than PATH_MAX.
+void checkOutputNameLength(const std::string& base, const std::string& suffix, const std::string& key,
+                           const std::string& folderKey);
 
 }  // namespace signorini::io

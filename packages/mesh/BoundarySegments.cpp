@@ -28,13 +28,22 @@ BoundarySegments::BoundarySegments(const std::vector<std::pair<std::string, std:
 
 void BoundarySegments::add(const std::string& name, const std::string& spec, const CoarseMesh& coarse) {
   const std::string key = "Mesh/Boundary Segments/" + name;
+  // The lists of Problem name segments by their names (blanks around an item dropped): a blank name
+  // could never be named.
+  if (trim(name).empty())
+    SIGNORINI_USER_ERROR("Mesh/Boundary Segments: a segment with an empty name ('" << spec
+                                                                                   << "'), which no list can name");
   if (segments_.size() >= 32) SIGNORINI_USER_ERROR(key << ": at most 32 boundary segments are supported");
   Segment seg;
   seg.name = name;
-  std::vector<std::string> parts;
-  std::stringstream ss(spec);
-  for (std::string part; std::getline(ss, part, ',');) parts.push_back(trim(part));
-  if (parts.empty() || parts[0].empty()) SIGNORINI_USER_ERROR(key << ": empty segment; expected \"<side set>[, x >= value]...\"");
+  std::vector<std::string> parts;  // every item, the empty ones too ("left," has two)
+  for (size_t start = 0;;) {
+    const auto comma = spec.find(',', start);
+    parts.push_back(trim(spec.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  if (parts[0].empty()) SIGNORINI_USER_ERROR(key << ": empty segment; expected \"<side set>[, x >= value]...\"");
   seg.set = parts[0];
   if (!coarse.hasSet(seg.set)) {
     std::string list;
@@ -46,7 +55,10 @@ void BoundarySegments::add(const std::string& name, const std::string& spec, con
   for (size_t i = 1; i < parts.size(); ++i) {
     const std::string& c = parts[i];
     Condition cond{};
-    if (c.empty() || (c[0] != 'x' && c[0] != 'y'))
+    if (c.empty())
+      SIGNORINI_USER_ERROR(key << ": empty condition in '" << spec
+                               << "' (a comma at the end, or two commas in a row); expected \"<side set>[, x >= value]...\"");
+    if (c[0] != 'x' && c[0] != 'y')
       SIGNORINI_USER_ERROR(key << ": condition '" << c << "' must start with x or y");
     cond.coord = c[0] == 'x' ? 0 : 1;
     std::string rest = trim(c.substr(1));

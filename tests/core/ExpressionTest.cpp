@@ -139,6 +139,23 @@ TEST(Expression, SyntaxErrorThrowsUserErrorNamingTheKey) {
   }
 }
 
+// muParser's "=" assigns ("x=1 ? 0 : -1" sets x and evaluates to 0): refused, naming the key and "==".
+TEST(Expression, AssignmentThrowsUserErrorNamingTheKey) {
+  for (const std::string text : {"x=1 ? 0 : -1", "(x=0.3)*0 + x", "t = 1", "x === 1", "x+=1", "=x"}) {
+    const auto msg = parseError(text, "Problem/Initial Velocity");
+    EXPECT_TRUE(contains(msg, "Problem/Initial Velocity")) << text << ": " << msg;
+    EXPECT_TRUE(contains(msg, "'=='")) << text << ": " << msg;
+  }
+}
+
+TEST(Expression, ComparisonsAreNotAssignments) {
+  EXPECT_EQ(Expression("x==1 ? 0 : -1", "k")(1, 0, 0), 0.0);
+  EXPECT_EQ(Expression("x==1 ? 0 : -1", "k")(0.5, 0, 0), -1.0);
+  EXPECT_EQ(Expression("(x<=1) + (x>=1) + (x!=1)", "k")(1, 0, 0), 2.0);
+  EXPECT_EQ(Expression("x <= 0.5 ? x : y >= 2", "k")(1, 3, 0), 1.0);
+  EXPECT_EQ(Expression("x != y", "k")(1, 1, 0), 0.0);
+}
+
 TEST(Expression, EmptyExpressionThrows) {
   for (const std::string text : {"", "   ", " \t\n"}) {
     const auto msg = parseError(text, "Problem/Neumann Data");

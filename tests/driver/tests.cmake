@@ -578,6 +578,11 @@ signorini_add_driver_test(contact_direction_outward EXIT 1
 signorini_add_driver_test(contact_direction_tangential EXIT 1
   ARGS --check --output-dir {OUT} --set "Problem/Contact Direction=+x" ${PROJECT_SOURCE_DIR}/inputs/bar.xml
   REGEX "Problem/Contact Direction: on a contact edge it does not point into the body")
+# A Neumann segment over Dirichlet edges under another name (the same name is refused with the deck).
+signorini_add_driver_test(neumann_edges_on_dirichlet_edges EXIT 1
+  ARGS --check --output-dir {OUT} --set "Mesh/Boundary Segments/n=left, y > 0.5" --set "Problem/Neumann Segments=n"
+       --set "Problem/Neumann Data=1" ${decks}/good.xml
+  REGEX "Problem: a boundary edge belongs to both a Neumann segment and a Dirichlet segment")
 # Initial data against the boundary conditions, warned about (not errors: the run is defined):
 # a displacement not 0 where the body is clamped, an obstacle above the initial displacement at
 # points of the contact boundary while the segment means keep the discrete constraint.
