@@ -1,6 +1,7 @@
 #pragma once
 /// Helpers shared by the tests: small meshes, with and without hanging nodes.
 #include <cmath>
+#include <functional>
 #include <memory>
 
 #include <Tpetra_Core.hpp>
@@ -23,6 +24,16 @@ inline void refineAt(mesh::Forest& f, double s, double r, int times) {
       const double x = q.x / static_cast<double>(P4EST_ROOT_LEN), y = q.y / static_cast<double>(P4EST_ROOT_LEN);
       return tree == 0 && s >= x && s <= x + len && r >= y && r <= y + len;
     });
+}
+
+/// Refines, once, the cells of \p f whose centre (in physical coordinates) satisfies \p where, then balances.
+inline void refineWhere(mesh::Forest& f, const mesh::CoarseMesh& coarse, const std::function<bool(double, double)>& where) {
+  f.refineIf([&](int tree, const p4est_quadrant_t& q) {
+    const double root = P4EST_ROOT_LEN, half = 0.5 * P4EST_QUADRANT_LEN(q.level);
+    const auto p = coarse.mapPoint(tree, (q.x + half) / root, (q.y + half) / root);
+    return where(p[0], p[1]);
+  });
+  f.balance();
 }
 
 /// A forest on the rectangle with segments "left", "right", "bottom", "top" (one per side).

@@ -31,6 +31,7 @@
 #include "../QuadMeshes.hpp"
 #include "SameEstimate.hpp"
 #include "SolveCG.hpp"
+#include "../TestMesh.hpp"
 
 using namespace signorini;
 using test::solveCG;
@@ -77,14 +78,7 @@ struct Case {
     forest = std::make_unique<mesh::Forest>(coarse, core::rawMpiComm(*comm), level);
   }
   /// Refines (once) the cells whose centre satisfies \p where, then balances.
-  void refineWhere(const std::function<bool(double, double)>& where) {
-    forest->refineIf([&](int tree, const p4est_quadrant_t& q) {
-      const double root = P4EST_ROOT_LEN, half = 0.5 * P4EST_QUADRANT_LEN(q.level);
-      const auto p = coarse->mapPoint(tree, (q.x + half) / root, (q.y + half) / root);
-      return where(p[0], p[1]);
-    });
-    forest->balance();
-  }
+  void refineWhere(const std::function<bool(double, double)>& where) { test::refineWhere(*forest, *coarse, where); }
   void finish(const std::map<std::string, std::string>& entries) {
     forest->partition();
     mesh = std::make_unique<mesh::Q1Mesh>(*forest, *segments, comm);

@@ -78,14 +78,7 @@ struct EstimatorCase {
     forest = std::make_unique<mesh::Forest>(coarse, core::rawMpiComm(*comm), level);
   }
   /// Refines (once) the cells whose centre satisfies \p where, then balances.
-  void refineWhere(const std::function<bool(double, double)>& where) {
-    forest->refineIf([&](int tree, const p4est_quadrant_t& q) {
-      const double root = P4EST_ROOT_LEN, half = 0.5 * P4EST_QUADRANT_LEN(q.level);
-      const auto p = coarse->mapPoint(tree, (q.x + half) / root, (q.y + half) / root);
-      return where(p[0], p[1]);
-    });
-    forest->balance();
-  }
+  void refineWhere(const std::function<bool(double, double)>& where) { test::refineWhere(*forest, *coarse, where); }
   /// Builds the mesh, the problem data (from "Problem" entries) and the operators.
   void finish(const std::map<std::string, std::string>& problemEntries, double rho = 1.0, double kappa = 1.0) {
     forest->partition();
