@@ -54,6 +54,20 @@ std::shared_ptr<CoarseMesh> CoarseMesh::create(const core::ParameterList& p) {
   const double y0 = p.get<double>("Y0"), y1 = p.get<double>("Y1");
   if (!(x1 > x0)) SIGNORINI_USER_ERROR("Mesh/X1 (" << x1 << ") must be greater than Mesh/X0 (" << x0 << ")");
   if (!(y1 > y0)) SIGNORINI_USER_ERROR("Mesh/Y1 (" << y1 << ") must be greater than Mesh/Y0 (" << y0 << ")");
+  // Areas, squared lengths and the cells' coordinates must stay within doubles: lengths up to
+  // 1e100, and cells of the deck's level at least 1e-10 of the coordinates (1e16 + 4 split into
+  // cells of 0.5 has vertices doubles cannot tell apart).
+  for (const auto& [key, value] : {std::pair<const char*, double>{"X0", x0}, {"X1", x1}, {"Y0", y0}, {"Y1", y1}})
+    if (!(std::abs(value) <= 1e100))
+      SIGNORINI_USER_ERROR("Mesh/" << key << " = " << value << ": beyond 1e100 in magnitude (areas and squared lengths "
+                           "would leave the range of doubles)");
+  const double levelCells = std::ldexp(1.0, p.get<int>("Refinement Level"));
+  const double hx = (x1 - x0) / (p.get<int>("Cells X") * levelCells), hy = (y1 - y0) / (p.get<int>("Cells Y") * levelCells);
+  const double scale = std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)});
+  if (!(std::min(hx, hy) >= 1e-10 * scale))
+    SIGNORINI_USER_ERROR("Mesh/X0, X1, Y0, Y1, Cells X, Cells Y, Refinement Level: cells of " << std::min(hx, hy)
+                         << " at coordinates of " << scale << " are below 1e-10 of them (doubles resolve 1e-16; shift "
+                         "the rectangle toward the origin)");
   return rectangle(x0, x1, y0, y1, p.get<int>("Cells X"), p.get<int>("Cells Y"));
 }
 

@@ -92,3 +92,13 @@ signorini_add_driver_test(output_exodus_create_error_gives_reason EXIT 1
   ARGS --output-dir {OUT} ${decks}/good.xml
   REGEX "cannot create Exodus II output file '[^']*good[.]e[.]part' [(]for '[^']*good[.]e'[)]: Is a directory"
   BLOCK good.e.part)
+
+# Rectangles that doubles cannot represent: vertices closer than the coordinates' resolution gave
+# Ifpack2's "Inf or NaN" as an unexpected error, extents of 1e200 a Cholesky pivot of -nan.
+signorini_add_driver_test(rectangle_cells_below_resolution EXIT 1
+  ARGS --check --output-dir {OUT} --set "Mesh/X0=1e16" --set "Mesh/X1=10000000000000004"
+       --set "Mesh/Refinement Level=3" ${decks}/good.xml
+  REGEX "Mesh/X0, X1, Y0, Y1, Cells X, Cells Y, Refinement Level: cells of .* at coordinates of 1e[+]16 are below 1e-10 of them")
+signorini_add_driver_test(rectangle_beyond_1e100 EXIT 1
+  ARGS --check --output-dir {OUT} --set "Mesh/X1=1e200" ${decks}/good.xml
+  REGEX "Mesh/X1 = 1e[+]200: beyond 1e100 in magnitude")
