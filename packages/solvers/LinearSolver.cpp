@@ -241,8 +241,10 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
     try {
       I.prec = MueLu::CreateTpetraPreconditioner(op, mueluParams);
     } catch (const std::exception& e) {
-      if (I.params.sublist("MueLu").numParams() == 0) throw;  // not the user's settings
-      failure = "Linear Solver/MueLu: MueLu cannot be set up with these parameters: " + firstLines(e.what());
+      failure = I.params.sublist("MueLu").numParams() == 0
+                    ? "Linear Solver/Preconditioner: MueLu's set-up failed on this operator (Jacobi avoids it): " +
+                          firstLines(e.what())
+                    : "Linear Solver/MueLu: MueLu cannot be set up with these parameters: " + firstLines(e.what());
     }
     // A set-up that fails on some ranks only leaves the others inside MueLu's collectives.
     core::throwFirstUserErrorOrAbort(*A->getComm(), failure);
