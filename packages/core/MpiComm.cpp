@@ -54,6 +54,7 @@ void throwFirstUserErrorOrAbort(const Comm& comm, const std::string& localMessag
     int mine = localMessage.empty() ? 0 : 1, any = 0, done = 0;
     MPI_Request request;
     MPI_Iallreduce(&mine, &any, 1, MPI_INT, MPI_MAX, c, &request);
+    if (!mine) MPI_Wait(&request, MPI_STATUS_IGNORE), done = 1;  // the usual case: no polling
     const auto start = std::chrono::steady_clock::now();
     while (!done) {
       MPI_Test(&request, &done, MPI_STATUS_IGNORE);

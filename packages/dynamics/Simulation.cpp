@@ -266,6 +266,7 @@ struct Simulation::Impl {
   long discretisations = 0;  ///< built so far (their ids)
   int currentStep = 0;       ///< the step runPass is at (0: the initial state)
   bool segmentsChecked = false;  ///< checkSegmentsHaveEdges ran (on the run's first mesh, the deck's)
+  bool directionWarned = false;  ///< the Contact Direction was checked for edges it points out of
 
   std::unique_ptr<fem::Assembler> makeAssembler(const mesh::Q1Mesh& m) const {
     if (problem->components() == 1) return std::make_unique<fem::Q1Assembler>(m, m.nodesOnSegments(problem->dirichletMask));
@@ -282,6 +283,36 @@ struct Simulation::Impl {
   /// condition uses contains no boundary edge of \p mesh (e.g. "top, x >= 3" on a unit square).
   /// For the deck's mesh: edges belong to segments by their midpoints, so a segment narrower than
   /// an edge may have edges on some refinements and none on others.
+  /// On the deck's mesh: a Neumann edge where every component is held (under segment names of their
+  /// own; the same name in both lists is refused with the deck) is a user error, the Dirichlet
+  /// condition would drop the load; a traction component that is not 0 at t = 0 on an edge whose
+  /// component is held by a roller (Dirichlet X/Y Segments) draws a warning (it has no effect there).
+  void checkNeumannAgainstDirichlet(const mesh::Q1Mesh& mesh) {
+    int flags[3] = {0, 0, 0}, any[3];  // every component held; x held and qx != 0; y held and qy != 0
+    for (const auto& be : mesh.boundaryEdges()) {
+      if (!(be.segments & problem->neumannMask)) continue;
+      flags[0] |= (be.segments & problem->dirichletMask) || ((be.segments & problem->componentDirichletMask[0]) &&
+                                                            (be.segments & problem->componentDirichletMask[1]));
+      if (problem->components() == 2)
+        for (int c = 0; c < 2; ++c)
+          if (be.segments & problem->componentDirichletMask[c])
+            for (double w : {0.0, 0.5, 1.0})
+              flags[1 + c] |= problem->neumannData[c]((1 - w) * be.x[0][0] + w * be.x[1][0],
+                                                      (1 - w) * be.x[0][1] + w * be.x[1][1], 0.0) != 0.0;
+    }
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 3, flags, any);
+    if (any[0])
+      SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a Neumann segment and a Dirichlet segment "
+                           "(Problem/Neumann Segments against Dirichlet Segments; the Dirichlet condition fixes u there, "
+                           "so the load would be dropped)");
+    for (int c = 0; c < 2; ++c)
+      if (any[1 + c] && comm->getRank() == 0)
+        std::cerr << "signorini: warning: " << deckPath << ": Problem/Neumann Data's " << (c ? "y" : "x")
+                  << " component is not 0 on edges where Problem/Dirichlet " << (c ? "Y" : "X")
+                  << " Segments hold u_" << (c ? "y" : "x") << " = 0: that part of the load has no effect there"
+                  << std::endl;
+  }
+
   void checkSegmentsHaveEdges(const mesh::Q1Mesh& mesh) const {
     const std::pair<const char*, unsigned> uses[] = {{"Dirichlet Segments", problem->dirichletMask},
                                                      {"Dirichlet X Segments", problem->componentDirichletMask[0]},
@@ -362,18 +393,10 @@ struct Simulation::Impl {
     if (auto* elasticity = dynamic_cast<const fem::ElasticityAssembler*>(d->assembler.get()))
       d->solver->setNearNullspace(elasticity->rigidBodyModes(), 2);
     d->solver->setOperator(d->A, d->courant);
-    if (!segmentsChecked) checkSegmentsHaveEdges(*d->mesh), segmentsChecked = true;
-    {
-      // A Neumann edge where every component is held (under segment names of their own; the same
-      // name in both lists is refused with the deck): the Dirichlet condition would drop the load.
-      int both = 0, any = 0;
-      for (const auto& be : d->mesh->boundaryEdges())
-        both |= (be.segments & problem->neumannMask) && (be.segments & problem->dirichletMask);
-      Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, both, Teuchos::outArg(any));
-      if (any)
-        SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a Neumann segment and a Dirichlet segment "
-                             "(Problem/Neumann Segments against Dirichlet Segments; the Dirichlet condition fixes u there, "
-                             "so the load would be dropped)");
+    if (!segmentsChecked) {  // on the deck's mesh only: edges belong to segments by their midpoints
+      checkSegmentsHaveEdges(*d->mesh);
+      checkNeumannAgainstDirichlet(*d->mesh);
+      segmentsChecked = true;
     }
     if (problem->hasObstacle) {
       // Contact where the constrained unknown is fixed (also under another segment name, or by a
@@ -395,7 +418,8 @@ struct Simulation::Impl {
             double nx = ty, ny = -tx;
             if (nx * (0.5 * (be.x[0][0] + be.x[1][0]) - cx) + ny * (0.5 * (be.x[0][1] + be.x[1][1]) - cy) < 0) nx = -nx, ny = -ny;
             const double dn = problem->contactSign * (problem->contactComponent == 0 ? nx : ny);
-            if (!(dn < -1e-3 * std::hypot(nx, ny))) overlapLocal |= 4;
+            if (dn < -1e-3 * std::hypot(nx, ny)) overlapLocal |= 4;  // into the body here
+            if (dn > 1e-3 * std::hypot(nx, ny)) overlapLocal |= 8;   // out of it: the obstacle is inside
           }
         }
       Teuchos::reduceAll(*comm, Teuchos::REDUCE_BOR, overlapLocal, Teuchos::outArg(overlapGlobal));
@@ -403,10 +427,16 @@ struct Simulation::Impl {
         SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a contact segment and a Dirichlet segment "
                              "that fixes the constrained component (Problem/Contact Segments against Dirichlet Segments"
                              << (problem->components() == 2 ? ", Dirichlet X Segments, Dirichlet Y Segments" : "") << ")");
-      if (overlapGlobal & 4)
-        SIGNORINI_USER_ERROR("Problem/Contact Direction: on a contact edge it does not point into the body (d is "
+      // Along an edge (d . n = 0) the constraint is a valid one; pointing out of the body on every
+      // contact edge, or along them all, the obstacle could never be touched from outside.
+      if (problem->components() == 2 && !(overlapGlobal & 4))
+        SIGNORINI_USER_ERROR("Problem/Contact Direction: on no contact edge does it point into the body (d is "
                              "minus the outward normal, e.g. +y on a bottom edge; otherwise d . u >= g puts the "
                              "obstacle inside the body or along its boundary)");
+      if ((overlapGlobal & 8) && !directionWarned && comm->getRank() == 0)
+        std::cerr << "signorini: warning: " << deckPath << ": Problem/Contact Direction points out of the body on "
+                  << "some contact edges (d . u >= g puts the obstacle inside the body there)" << std::endl;
+      directionWarned = true;
       if (overlapGlobal & 2)
         SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a contact segment and a Neumann segment "
                              "(Problem/Contact Segments against Neumann Segments; on Gamma_C the traction is the multiplier)");

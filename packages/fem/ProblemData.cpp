@@ -141,8 +141,7 @@ ProblemData::ProblemData(const core::ParameterList& p, const mesh::BoundarySegme
                                                                           << " Segments name the same segment");
   // Gamma_D and Gamma_N are disjoint: the Dirichlet condition replaces the equations of the fixed
   // unknowns, so a load there would have no effect. A segment with every component fixed (also by
-  // both Dirichlet X and Y Segments) is refused as a Neumann segment; a roller only if the traction
-  // acts on its fixed component (the Neumann Data of that component is not the constant 0).
+  // both Dirichlet X and Y Segments) is refused as a Neumann segment.
   const unsigned allFixed = dirichletMask | (componentDirichletMask[0] & componentDirichletMask[1]);
   if (const unsigned both = allFixed & neumannMask) {
     const std::string name = firstName(both, segments);
@@ -154,17 +153,8 @@ ProblemData::ProblemData(const core::ParameterList& p, const mesh::BoundarySegme
                          << name << "', which Problem/Dirichlet X Segments and Dirichlet Y Segments both name: every "
                                     "component of u is fixed there, so the load Problem/Neumann Data would have no effect on it");
   }
-  if (model == Model::PlaneStrainElasticity)
-    for (int c = 0; c < 2; ++c) {
-      const unsigned both = componentDirichletMask[c] & neumannMask;
-      const auto& q = neumannData[c];
-      if (both && !(q.isConstant() && q(0, 0, 0) == 0.0))
-        SIGNORINI_USER_ERROR("Problem/Neumann Segments and Problem/Dirichlet " << (c ? "Y" : "X")
-                             << " Segments name the same segment '" << firstName(both, segments) << "', where u_"
-                             << (c ? "y" : "x") << " = 0, but Problem/Neumann Data gives a traction component "
-                             << (c ? "qy" : "qx") << " = '" << q.text()
-                             << "' there, which would have no effect (only the free component can carry a load)");
-    }
+  // A roller under a traction: only where the fixed component's traction is not 0 does it lose
+  // load, which depends on the edges (a warning of Simulation on the deck's mesh).
 }
 
 std::string ProblemData::checkParameters(const core::ParameterList& p) {

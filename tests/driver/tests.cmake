@@ -574,10 +574,10 @@ signorini_add_driver_test(krylov_method_needing_a_right_preconditioner EXIT 1
 # the obstacle would be inside the body or along its boundary; it ran without ever touching.
 signorini_add_driver_test(contact_direction_outward EXIT 1
   ARGS --check --output-dir {OUT} --set "Problem/Contact Direction=-y" ${PROJECT_SOURCE_DIR}/inputs/bar.xml
-  REGEX "Problem/Contact Direction: on a contact edge it does not point into the body")
+  REGEX "Problem/Contact Direction: on no contact edge does it point into the body")
 signorini_add_driver_test(contact_direction_tangential EXIT 1
   ARGS --check --output-dir {OUT} --set "Problem/Contact Direction=+x" ${PROJECT_SOURCE_DIR}/inputs/bar.xml
-  REGEX "Problem/Contact Direction: on a contact edge it does not point into the body")
+  REGEX "Problem/Contact Direction: on no contact edge does it point into the body")
 # A Neumann segment over Dirichlet edges under another name (the same name is refused with the deck).
 signorini_add_driver_test(neumann_edges_on_dirichlet_edges EXIT 1
   ARGS --check --output-dir {OUT} --set "Mesh/Boundary Segments/n=left, y > 0.5" --set "Problem/Neumann Segments=n"
@@ -592,6 +592,12 @@ signorini_add_driver_test(initial_displacement_on_dirichlet_segments EXIT 0
 signorini_add_driver_test(obstacle_above_initial_displacement_at_points EXIT 0
   ARGS --check --output-dir {OUT} --set "Problem/Obstacle=y < 0.1 ? 0.05 : -1" ${decks}/good.xml
   REGEX "warning: .*Problem/Obstacle lies above Problem/Initial Displacement at points of the contact boundary [(]by up to 0.05 at [(]1, 0[)][)]")
+# Along some contact edges and into the body on others, d . u >= g is valid (the bar's right face
+# added to its foundation, with a floor that descends along it): no error, no warning.
+signorini_add_driver_test(contact_direction_along_some_edges EXIT 0
+  ARGS --check --output-dir {OUT} --set "Mesh/Boundary Segments/r=right" --set "Problem/Contact Segments=foundation, r"
+       --set "Problem/Obstacle=-0.005 - y" ${PROJECT_SOURCE_DIR}/inputs/bar.xml
+  REGEX "bar[.]xml is valid")
 # A time step so small that beta k^2 leaves the doubles the estimator needs: a user error naming
 # the key (it was an internal assertion in the marking).
 signorini_add_driver_test(estimate_not_finite EXIT 1
