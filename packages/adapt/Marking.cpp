@@ -22,18 +22,23 @@ uint64_t key(double x) {
   return k;
 }
 
-/// The largest threshold key t with accept(t) true, given accept is monotone (true for small t).
-template <class Accept>
-uint64_t bisect(Accept accept) {
-  uint64_t lo = 0, hi = key(std::numeric_limits<double>::max());
+/// The largest t in [lo, hi] with accept(t) true, given accept(lo) and accept monotone (true for small t).
+template <class T, class Accept>
+T largestAccepted(T lo, T hi, Accept accept) {
   while (lo < hi) {
-    const uint64_t mid = lo + (hi - lo + 1) / 2;
+    const T mid = lo + (hi - lo + 1) / 2;
     if (accept(mid))
       lo = mid;
     else
       hi = mid - 1;
   }
   return lo;
+}
+
+/// The largest threshold key t with accept(t) true, given accept is monotone (true for small t).
+template <class Accept>
+uint64_t bisect(Accept accept) {
+  return largestAccepted<uint64_t>(0, key(std::numeric_limits<double>::max()), accept);
 }
 
 /// The keys of the local indicators in ascending order: each bisection step then counts the
@@ -102,14 +107,8 @@ std::vector<char> firstAlongCurve(const std::vector<double>& v, const std::vecto
     MPI_Allreduce(&local, &global, 1, MPI_LONG_LONG, MPI_SUM, comm);
     return global;
   };
-  long long lo = -1, hi = last;  // the largest position with at most `allowed` of them up to it
-  while (lo < hi) {
-    const long long mid = lo + (hi - lo + 1) / 2;
-    if (upTo(mid) <= allowed)
-      lo = mid;
-    else
-      hi = mid - 1;
-  }
+  // The largest position with at most `allowed` of them up to it.
+  const long long lo = largestAccepted<long long>(-1, last, [&](long long p) { return upTo(p) <= allowed; });
   std::vector<char> flags(v.size(), 0);
   for (size_t i = 0; i < v.size(); ++i) flags[i] = v[i] <= width && positions[i] <= lo;
   return flags;
@@ -173,14 +172,7 @@ std::vector<char> markSmallest(const std::vector<double>& indicators, const std:
   const auto sorted = sortedKeys(indicators);
   if (globalCount(sorted, key(width), false, comm) > allowed) return firstAlongCurve(indicators, positions, width, allowed, comm);
   // The largest threshold with at most `allowed` cells at or below it.
-  uint64_t lo = 0, hi = key(std::numeric_limits<double>::max());
-  while (lo < hi) {
-    const uint64_t mid = lo + (hi - lo + 1) / 2;
-    if (globalCount(sorted, mid, false, comm) <= allowed)
-      lo = mid;
-    else
-      hi = mid - 1;
-  }
+  const uint64_t lo = bisect([&](uint64_t th) { return globalCount(sorted, th, false, comm) <= allowed; });
   // Cells that tie with the smallest indicator left out are left out too.
   const auto above = std::upper_bound(sorted.begin(), sorted.end(), lo);
   double firstKept = above == sorted.end() ? std::numeric_limits<double>::infinity() : fromKey(*above);

@@ -54,17 +54,18 @@ void throwFirstUserErrorOrAbort(const Comm& comm, const std::string& localMessag
     int mine = localMessage.empty() ? 0 : 1, any = 0, done = 0;
     MPI_Request request;
     MPI_Iallreduce(&mine, &any, 1, MPI_INT, MPI_MAX, c, &request);
-    if (!mine) MPI_Wait(&request, MPI_STATUS_IGNORE), done = 1;  // the usual case: no polling
-    const auto start = std::chrono::steady_clock::now();
-    while (!done) {
-      MPI_Test(&request, &done, MPI_STATUS_IGNORE);
-      if (done) break;
-      if (mine && std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > seconds) {
-        std::cerr << "signorini: error: " << localMessage
-                  << " (on this rank only; the other ranks wait inside the library: ending them)" << std::endl;
-        MPI_Abort(c, 1);
+    if (!mine) {
+      MPI_Wait(&request, MPI_STATUS_IGNORE);  // the usual case: no polling
+    } else {
+      const auto start = std::chrono::steady_clock::now();
+      for (MPI_Test(&request, &done, MPI_STATUS_IGNORE); !done; MPI_Test(&request, &done, MPI_STATUS_IGNORE)) {
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > seconds) {
+          std::cerr << "signorini: error: " << localMessage
+                    << " (on this rank only; the other ranks wait inside the library: ending them)" << std::endl;
+          MPI_Abort(c, 1);
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
       }
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     if (!any) return;
   }

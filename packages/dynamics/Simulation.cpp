@@ -266,7 +266,7 @@ struct Simulation::Impl {
   long discretisations = 0;  ///< built so far (their ids)
   int currentStep = 0;       ///< the step runPass is at (0: the initial state)
   bool segmentsChecked = false;  ///< checkSegmentsHaveEdges ran (on the run's first mesh, the deck's)
-  bool directionWarned = false;  ///< the Contact Direction was checked for edges it points out of
+  bool directionChecked = false;  ///< the Contact Direction was checked against the contact edges
 
   std::unique_ptr<fem::Assembler> makeAssembler(const mesh::Q1Mesh& m) const {
     if (problem->components() == 1) return std::make_unique<fem::Q1Assembler>(m, m.nodesOnSegments(problem->dirichletMask));
@@ -279,10 +279,6 @@ struct Simulation::Impl {
   bool lumpsMass() const {
     return problem->hasObstacle && deck.sublist("Contact").get<std::string>("Boundary Mass") == "lumped";
   }
-  /// Throws a user error naming the Problem key and the segment if a segment that a boundary
-  /// condition uses contains no boundary edge of \p mesh (e.g. "top, x >= 3" on a unit square).
-  /// For the deck's mesh: edges belong to segments by their midpoints, so a segment narrower than
-  /// an edge may have edges on some refinements and none on others.
   /// On the deck's mesh: a Neumann edge where every component is held (under segment names of their
   /// own; the same name in both lists is refused with the deck) is a user error, the Dirichlet
   /// condition would drop the load; a traction component that is not 0 at t = 0 on an edge whose
@@ -296,9 +292,10 @@ struct Simulation::Impl {
       if (problem->components() == 2)
         for (int c = 0; c < 2; ++c)
           if (be.segments & problem->componentDirichletMask[c])
-            for (double w : {0.0, 0.5, 1.0})
-              flags[1 + c] |= problem->neumannData[c]((1 - w) * be.x[0][0] + w * be.x[1][0],
-                                                      (1 - w) * be.x[0][1] + w * be.x[1][1], 0.0) != 0.0;
+            for (double w : {0.0, 0.5, 1.0}) {
+              const auto x = be.at(w);
+              flags[1 + c] |= problem->neumannData[c](x[0], x[1], 0.0) != 0.0;
+            }
     }
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, 3, flags, any);
     if (any[0])
@@ -313,6 +310,10 @@ struct Simulation::Impl {
                   << std::endl;
   }
 
+  /// Throws a user error naming the Problem key and the segment if a segment that a boundary
+  /// condition uses contains no boundary edge of \p mesh (e.g. "top, x >= 3" on a unit square).
+  /// For the deck's mesh: edges belong to segments by their midpoints, so a segment narrower than
+  /// an edge may have edges on some refinements and none on others.
   void checkSegmentsHaveEdges(const mesh::Q1Mesh& mesh) const {
     const std::pair<const char*, unsigned> uses[] = {{"Dirichlet Segments", problem->dirichletMask},
                                                      {"Dirichlet X Segments", problem->componentDirichletMask[0]},
@@ -409,7 +410,7 @@ struct Simulation::Impl {
         if (be.segments & problem->contactMask) {
           if (be.segments & fixed) overlapLocal |= 1;
           if (be.segments & problem->neumannMask) overlapLocal |= 2;
-          if (problem->components() == 2) {
+          if (problem->components() == 2 && !directionChecked) {
             // d = Contact Direction points into the body (d . n < 0, n the outward normal from the
             // edge and its cell's centre), so that d . u >= g keeps the body off an obstacle outside it.
             const double tx = be.x[1][0] - be.x[0][0], ty = be.x[1][1] - be.x[0][1];
@@ -428,15 +429,18 @@ struct Simulation::Impl {
                              "that fixes the constrained component (Problem/Contact Segments against Dirichlet Segments"
                              << (problem->components() == 2 ? ", Dirichlet X Segments, Dirichlet Y Segments" : "") << ")");
       // Along an edge (d . n = 0) the constraint is a valid one; pointing out of the body on every
-      // contact edge, or along them all, the obstacle could never be touched from outside.
-      if (problem->components() == 2 && !(overlapGlobal & 4))
-        SIGNORINI_USER_ERROR("Problem/Contact Direction: on no contact edge does it point into the body (d is "
-                             "minus the outward normal, e.g. +y on a bottom edge; otherwise d . u >= g puts the "
-                             "obstacle inside the body or along its boundary)");
-      if ((overlapGlobal & 8) && !directionWarned && comm->getRank() == 0)
-        std::cerr << "signorini: warning: " << deckPath << ": Problem/Contact Direction points out of the body on "
-                  << "some contact edges (d . u >= g puts the obstacle inside the body there)" << std::endl;
-      directionWarned = true;
+      // contact edge, or along them all, the obstacle could never be touched from outside. The
+      // edges' directions do not change under refinement: checked on the deck's mesh.
+      if (problem->components() == 2 && !directionChecked) {
+        if (!(overlapGlobal & 4))
+          SIGNORINI_USER_ERROR("Problem/Contact Direction: on no contact edge does it point into the body (d is "
+                               "minus the outward normal, e.g. +y on a bottom edge; otherwise d . u >= g puts the "
+                               "obstacle inside the body or along its boundary)");
+        if ((overlapGlobal & 8) && comm->getRank() == 0)
+          std::cerr << "signorini: warning: " << deckPath << ": Problem/Contact Direction points out of the body on "
+                    << "some contact edges (d . u >= g puts the obstacle inside the body there)" << std::endl;
+        directionChecked = true;
+      }
       if (overlapGlobal & 2)
         SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a contact segment and a Neumann segment "
                              "(Problem/Contact Segments against Neumann Segments; on Gamma_C the traction is the multiplier)");
@@ -730,9 +734,6 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     I.initialState(*d, u, v, a);
     // The exact solution where the errors are measured, at t = 0 (so that --check finds it too).
     if (I.problem->exactSolution) d->assembler->errorNorms(u, *I.problem->exactSolution, 0.0);
-    // The KKT tolerance is absolute (Contact/KKT Tolerance times the domain diameter): a warning when
-    // even the largest initial gap is within 1000 tolerances, so that the contact would be resolved
-    // to fewer than three digits (a problem whose motion is tiny against the domain).
     // Initial data that is not 0 where the body is held (homogeneous Dirichlet conditions): the held
     // unknowns stay 0, and the L2 projection of the rest oscillates next to them.
     const auto& held = d->assembler->dirichletFlags();
@@ -764,9 +765,9 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
       for (const auto& be : d->mesh->boundaryEdges())
         if (be.segments & I.problem->contactMask)
           for (double w : {0.0, 0.5, 1.0}) {
-            const double x = (1 - w) * be.x[0][0] + w * be.x[1][0], y = (1 - w) * be.x[0][1] + w * be.x[1][1];
-            const double penetration = I.problem->obstacle(x, y, 0.0) - sign * u0(x, y, 0.0);
-            if (penetration > worst[0]) worst[0] = penetration, worst[1] = x, worst[2] = y;
+            const auto x = be.at(w);
+            const double penetration = I.problem->obstacle(x[0], x[1], 0.0) - sign * u0(x[0], x[1], 0.0);
+            if (penetration > worst[0]) worst[0] = penetration, worst[1] = x[0], worst[2] = x[1];
           }
       struct {
         double value;
@@ -784,6 +785,9 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
                     << std::endl;
       }
     }
+    // The KKT tolerance is absolute (Contact/KKT Tolerance times the domain diameter): a warning when
+    // even the largest initial gap is within 1000 tolerances, so that the contact would be resolved
+    // to fewer than three digits (a problem whose motion is tiny against the domain).
     const double largest = I.checkInitialGap(*d, u);
     if (d->qp && largest > 0 && largest < 1000 * d->qp->gapTolerance() && comm->getRank() == 0)
       std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": the largest initial gap, " << largest

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "Error.hpp"
+#include "StringTools.hpp"
 
 namespace signorini::fem {
 
@@ -46,28 +47,20 @@ core::ParameterList ProblemData::getValidParameters() {
 }
 
 namespace {
-std::string trimmed(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\n\r"), e = s.find_last_not_of(" \t\n\r");
-  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
-}
-
 /// The segments the comma-separated \p list names, as a bit mask; a blank list names none. An
 /// empty item ("a,,b", "a,") or a name given twice is a user error naming \p key.
 unsigned maskOf(const std::string& list, const mesh::BoundarySegments& segments, const std::string& key) {
-  if (trimmed(list).empty()) return 0;
+  if (core::trim(list).empty()) return 0;
   unsigned mask = 0;
-  for (size_t start = 0;;) {
-    const auto comma = list.find(',', start);
-    const std::string name = trimmed(list.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+  for (const auto& name : core::splitTrimmed(list, ',')) {
     if (name.empty())
       SIGNORINI_USER_ERROR(key << ": empty item in the list '" << list
                                << "' (a comma at the start or the end, or two commas in a row)");
     const unsigned bit = 1u << segments.index(name, key);
     if (mask & bit) SIGNORINI_USER_ERROR(key << ": the segment '" << name << "' is named twice in '" << list << "'");
     mask |= bit;
-    if (comma == std::string::npos) return mask;
-    start = comma + 1;
   }
+  return mask;
 }
 
 /// The name of the first segment in \p mask.
@@ -158,7 +151,7 @@ ProblemData::ProblemData(const core::ParameterList& p, const mesh::BoundarySegme
 }
 
 std::string ProblemData::checkParameters(const core::ParameterList& p) {
-  if (!trimmed(p.get<std::string>("Neumann Segments")).empty()) return "";
+  if (!core::trim(p.get<std::string>("Neumann Segments")).empty()) return "";
   const std::string keys = core::keysSetOtherThanDefaults(p, getValidParameters(), "Problem",
                                                           [](const std::string& k) { return k == "Neumann Data"; });
   return keys.empty() ? "" : "no Problem/Neumann Segments; without effect: " + keys;

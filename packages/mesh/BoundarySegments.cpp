@@ -5,15 +5,11 @@
 #include <sstream>
 
 #include "Error.hpp"
+#include "StringTools.hpp"
 
 namespace signorini::mesh {
 namespace {
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\n");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\n");
-  return s.substr(b, e - b + 1);
-}
+using core::trim;
 }  // namespace
 
 BoundarySegments::BoundarySegments(const core::ParameterList& specs, const CoarseMesh& coarse) {
@@ -36,13 +32,7 @@ void BoundarySegments::add(const std::string& name, const std::string& spec, con
   if (segments_.size() >= 32) SIGNORINI_USER_ERROR(key << ": at most 32 boundary segments are supported");
   Segment seg;
   seg.name = name;
-  std::vector<std::string> parts;  // every item, the empty ones too ("left," has two)
-  for (size_t start = 0;;) {
-    const auto comma = spec.find(',', start);
-    parts.push_back(trim(spec.substr(start, comma == std::string::npos ? std::string::npos : comma - start)));
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
+  const std::vector<std::string> parts = core::splitTrimmed(spec, ',');  // "left," has two, the second empty
   if (parts[0].empty()) SIGNORINI_USER_ERROR(key << ": empty segment; expected \"<side set>[, x >= value]...\"");
   seg.set = parts[0];
   if (!coarse.hasSet(seg.set)) {

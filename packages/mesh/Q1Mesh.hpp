@@ -30,6 +30,10 @@ struct BoundaryEdge {
   int quadrantLevel;
   long long faceIndex;
   double length() const;
+  /// The point (1 - w) x[0] + w x[1] of the edge.
+  std::array<double, 2> at(double w) const {
+    return {(1 - w) * x[0][0] + w * x[1][0], (1 - w) * x[0][1] + w * x[1][1]};
+  }
 };
 
 class Q1Mesh {

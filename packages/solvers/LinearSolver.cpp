@@ -23,6 +23,12 @@ using BelosSolver = Belos::SolverManager<Scalar, MultiVector, Operator>;
 
 namespace {
 
+std::string upperCase(const std::string& text) {
+  std::string upper;
+  for (char c : text) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return upper;
+}
+
 /// Teuchos' message about an invalid parameter without its source location and without the list of
 /// valid parameters that follows (hundreds of lines for MueLu).
 std::string firstLines(const std::string& message) {
@@ -110,8 +116,7 @@ const std::vector<std::string>& LinearSolver::supportedMethods() {
 }
 
 std::string LinearSolver::canonicalMethod(const std::string& method) {
-  std::string name;
-  for (char c : method) name += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  std::string name = upperCase(method);
   static const std::map<std::string, std::string> aliases = {
       {"PSEUDO BLOCK CG", "PSEUDOBLOCK CG"},
       {"PSEUDOBLOCKCG", "PSEUDOBLOCK CG"},
@@ -136,9 +141,7 @@ std::string LinearSolver::checkParameters(const core::ParameterList& params, boo
     for (const auto& name : supportedMethods()) names << (names.tellp() > 0 ? ", " : "") << name;
     // Recycling CG is a Belos method for SPD systems, but Trilinos 13.2's solver factory does not
     // register it for Tpetra ("has not been registered" at run time).
-    std::string upper;
-    for (char c : method) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    const bool rcg = upper == "RCG" || upper == "RECYCLING CG";
+    const bool rcg = upperCase(method) == "RCG" || upperCase(method) == "RECYCLING CG";
     SIGNORINI_USER_ERROR("Linear Solver/Method: \"" << method << "\" is not one of the Krylov methods for these "
                          "symmetric positive definite systems: " << names.str() << " (any case)"
                          << (rcg ? "; RCG (recycling CG) is not registered in this Trilinos's Belos solver factory "
@@ -153,13 +156,12 @@ std::string LinearSolver::checkParameters(const core::ParameterList& params, boo
       SIGNORINI_USER_ERROR("Linear Solver/Belos/" << key << ": set by signorini from Linear Solver/" << ours
                                                   << "; set that instead");
   // The MueLu keys that signorini sets from the problem (the rigid body modes of elasticity).
-  const auto& mueluGiven = params.sublist("MueLu");
+  const auto& muelu = params.sublist("MueLu");
   for (const auto& [key, from] : {std::pair<const char*, const char*>{"number of equations", "the unknowns per node of Problem/Type"},
                                   {"user data", "the rigid body modes of Problem/Type"}})
-    if (mueluGiven.isParameter(key) || mueluGiven.isSublist(key))
+    if (muelu.isParameter(key))  // a sublist too
       SIGNORINI_USER_ERROR("Linear Solver/MueLu/" << key << ": set by signorini from " << from);
   // MueLu's own validation prints its whole parameter table (hundreds of lines) before it throws.
-  const auto& muelu = params.sublist("MueLu");
   const auto valid = MueLu::MasterList::List();
   for (auto it = muelu.begin(); it != muelu.end(); ++it)
     if (!muelu.entry(it).isList() && !valid->isParameter(muelu.name(it)))
