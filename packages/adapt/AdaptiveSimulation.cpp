@@ -188,7 +188,8 @@ dynamics::RunSummary AdaptiveSimulation::locatingFailures(int cycle, Pass pass) 
   try {
     return pass();
   } catch (const core::SolverError& e) {
-    throw core::SolverError(whereInRun(cycle) + e.what());
+    const std::string note = sim_->problem().nearIncompressibility();
+    throw core::SolverError(whereInRun(cycle) + e.what() + (note.empty() ? "" : "; " + note));
   } catch (const core::UserError& e) {
     throw core::UserError(whereInRun(cycle) + e.what());
   }

@@ -681,6 +681,8 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
                       std::to_string(level));
   I.segments = std::make_unique<mesh::BoundarySegments>(meshParams.sublist("Boundary Segments"), *I.coarse);
   I.problem = std::make_unique<fem::ProblemData>(deck.sublist("Problem"), *I.segments);
+  if (const auto note = I.problem->nearIncompressibility(); !note.empty() && comm->getRank() == 0)
+    std::cerr << "signorini: warning: " << deckPath << ": " << note << std::endl;
   if (!I.problem->hasObstacle && I.problem->contactMask != 0 && comm->getRank() == 0)
     std::cerr << "signorini: warning: " << deckPath << ": Problem/Contact Segments without Problem/Obstacle: no contact"
               << std::endl;
@@ -854,6 +856,7 @@ std::string Simulation::coarseCorrectionMesh() const {
 int Simulation::currentStep() const { return impl_->currentStep; }
 double Simulation::timeStep() const { return impl_->newmark->timeStep; }
 RCP<const Comm> Simulation::comm() const { return impl_->comm; }
+const fem::ProblemData& Simulation::problem() const { return *impl_->problem; }
 const std::string& Simulation::outputBase() const { return impl_->outputBase; }
 
 void Simulation::checkMeshFits(double globalCells, const std::string& cause, double storedCells) const {

@@ -42,6 +42,12 @@ struct ProblemData {
   int components() const { return model == Model::ScalarWave ? 1 : 2; }
   /// Fastest wave speed: sqrt(kappa / rho), or the P-wave speed sqrt((lambda + 2 mu) / rho).
   double waveSpeed() const;
+  /// For elasticity with Poisson's ratio near 1/2 (lambda / mu >= 100, nu >= 0.495): why the
+  /// results lock and the linear solves slow down or fail, naming Problem/Poisson's Ratio; empty
+  /// otherwise. Printed as a warning at set-up and appended to a failing solve's message.
+  std::string nearIncompressibility() const;
+  /// The same for the Lame parameters \p lameLambda and \p lameMu [force / area].
+  static std::string nearIncompressibility(double lameLambda, double lameMu);
 };
 
 }  // namespace signorini::fem

@@ -107,3 +107,21 @@ signorini_add_driver_test(rectangle_cells_below_resolution EXIT 1
 signorini_add_driver_test(rectangle_beyond_1e100 EXIT 1
   ARGS --check --output-dir {OUT} --set "Mesh/X1=1e200" ${decks}/good.xml
   REGEX "Mesh/X1 = 1e[+]200: beyond 1e100 in magnitude")
+
+# Poisson's ratio near 1/2: a warning at set-up, and a solve that stops short names the cause.
+# On 578 unknowns CG + Jacobi needs 16 iterations per step at nu = 0.3 and 34-36 at nu = 0.4999, the
+# initial projection fewer than 25.
+signorini_add_driver_test(poisson_ratio_near_half_warns EXIT 0
+  ARGS --check --output-dir {OUT} ${elasticity} --set "Problem/Dirichlet X Segments=clamped"
+       --set "Problem/Poisson's Ratio=0.4999" ${decks}/good.xml
+  REGEX "warning: .*Problem/Poisson's Ratio = 0[.]4999 is close to 1/2 [(]lambda / mu = 5e[+]03[)]: bilinear elements lock")
+signorini_add_driver_test(poisson_ratio_near_half_names_the_cause_of_a_failing_solve EXIT 1
+  ARGS --output-dir {OUT} ${elasticity} --set "Problem/Dirichlet X Segments=clamped" --set "Mesh/Refinement Level=2"
+       --set "Problem/Initial Velocity=x*y, -x*y" --set "Problem/Poisson's Ratio=0.4999"
+       --set "Linear Solver/Preconditioner=Jacobi" --set "Linear Solver/Maximum Iterations=25" ${decks}/good.xml
+  REGEX "solver failure: step 1 [(]t = 0[.]0025[)]: linear solver CG [+] Jacobi did not reach the relative tolerance 1e-10 in 25 iterations [(]Linear Solver/Maximum Iterations[)]; Problem/Poisson's Ratio = 0[.]4999 is close to 1/2")
+signorini_add_driver_test(poisson_ratio_0_3_solves_within_25_iterations EXIT 0
+  ARGS --output-dir {OUT} ${elasticity} --set "Problem/Dirichlet X Segments=clamped" --set "Mesh/Refinement Level=2"
+       --set "Problem/Initial Velocity=x*y, -x*y" --set "Problem/Poisson's Ratio=0.3"
+       --set "Linear Solver/Preconditioner=Jacobi" --set "Linear Solver/Maximum Iterations=25" ${decks}/good.xml
+  REGEX "good[.]xml done: 4 steps" FILES good.e good.steps.csv)

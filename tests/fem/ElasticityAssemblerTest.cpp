@@ -199,3 +199,19 @@ TEST_P(ElasticityAssembly, ErrorNormsOfAKnownErrorAreExact) {
 INSTANTIATE_TEST_SUITE_P(Meshes, ElasticityAssembly, ::testing::Values(false, true));
 
 }  // namespace
+
+// Poisson's ratio near 1/2: a note naming the key from lambda / mu = 100 (nu = 100/202) on
+// (the solves' iterations grow with lambda / mu; the bar's CG + MueLu fails from
+// nu = 0.4999997 on with the default Maximum Iterations).
+TEST(ElasticityMaterial, NearIncompressibilityIsNamedFromLambdaOverMu100On) {
+  auto material = [](double nu) {
+    const double E = 7.3e10;
+    return fem::ProblemData::nearIncompressibility(E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu)));
+  };
+  EXPECT_EQ(material(0.33), "");
+  EXPECT_EQ(material(0.495), "");  // lambda / mu = 99
+  const std::string note = material(0.4951);
+  EXPECT_NE(note.find("Problem/Poisson's Ratio = 0.4951 is close to 1/2 (lambda / mu = 101)"), std::string::npos)
+      << note;
+  EXPECT_NE(material(0.4999999).find("lambda / mu = 5e+06"), std::string::npos);
+}
