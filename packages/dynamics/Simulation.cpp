@@ -787,6 +787,8 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
                     << std::endl;
       }
     }
+    // Data that turn into NaN or inf later in the run stop it at set-up rather than in that step.
+    I.problem->checkFiniteOverTime(*d->mesh, I.newmark->timeStep, I.newmark->numSteps());
     // The KKT tolerance is absolute (Contact/KKT Tolerance times the domain diameter): a warning when
     // even the largest initial gap is within 1000 tolerances, so that the contact would be resolved
     // to fewer than three digits (a problem whose motion is tiny against the domain).

@@ -1,10 +1,16 @@
 #include "ProblemData.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 
+#include <Teuchos_CommHelpers.hpp>
+
 #include "Error.hpp"
+#include "MpiComm.hpp"
+#include "Q1Kernels.hpp"
 #include "StringTools.hpp"
 
 namespace signorini::fem {
@@ -166,6 +172,70 @@ std::string ProblemData::checkParameters(const core::ParameterList& p) {
 double ProblemData::waveSpeed() const {
   return model == Model::ScalarWave ? std::sqrt(stiffness / density)
                                     : std::sqrt((lameLambda + 2 * lameMu) / density);
+}
+
+void ProblemData::checkFiniteOverTime(const mesh::Q1Mesh& mesh, double timeStep, int steps) const {
+  using Points = std::vector<std::array<double, 2>>;
+  Points cellPoints, neumannPoints, contactPoints;
+  struct Sampled {
+    const core::Expression* f;
+    const Points* points;
+    const char* where;  // appended to the message, as the step's sampler does
+  };
+  std::vector<Sampled> work;
+  auto add = [&](const core::ExpressionList& list, Points& points, const char* where) {
+    for (int c = 0; c < list.size(); ++c)
+      if (!list[c].isTimeIndependent()) work.push_back({&list[c], &points, where});
+  };
+  add(bodyForce, cellPoints, "");
+  if (exactSolution) add(*exactSolution, cellPoints, "");
+  if (neumannMask) add(neumannData, neumannPoints, "");
+  if (hasObstacle && contactMask && !obstacle.isTimeIndependent())
+    work.push_back({&obstacle, &contactPoints, " on the contact boundary"});
+  int any = work.empty() ? 0 : 1, anywhere = 0;  // the expressions are the same on every rank
+  Teuchos::reduceAll(*mesh.comm(), Teuchos::REDUCE_MAX, any, Teuchos::outArg(anywhere));
+  if (!anywhere) return;
+
+  const auto& X = mesh.cornerCoordsHost;
+  for (LO e = 0; e < mesh.numLocalCells(); ++e)
+    for (int q = 0; q < 4; ++q) {
+      double N[4], ds[4], dr[4];
+      q1Shape(gauss2Point(q & 1), gauss2Point(q >> 1), N, ds, dr);
+      std::array<double, 2> x{0, 0};
+      for (int c = 0; c < 4; ++c) x[0] += N[c] * X(e, c, 0), x[1] += N[c] * X(e, c, 1);
+      cellPoints.push_back(x);
+    }
+  constexpr double gauss3[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
+  for (const auto& be : mesh.boundaryEdges()) {
+    if (be.segments & neumannMask)
+      for (int g = 0; g < 2; ++g) neumannPoints.push_back(be.at(gauss2Point(g)));
+    if (be.segments & contactMask)
+      for (double w : gauss3) contactPoints.push_back(be.at(w));
+  }
+
+  long long local = 0, largest = 0;  // samples per time on this rank, and on the busiest
+  for (const auto& w : work) local += static_cast<long long>(w.points->size());
+  Teuchos::reduceAll(*mesh.comm(), Teuchos::REDUCE_MAX, local, Teuchos::outArg(largest));
+  const int stride = static_cast<int>(std::max(1LL, (steps * largest + 19999999) / 20000000));
+  std::string bad;
+  int firstBad = steps + 1;
+  for (int n = 1; n <= steps && bad.empty(); n = (n < steps && n + stride > steps) ? steps : n + stride)
+    for (const auto& w : work) {
+      for (const auto& x : *w.points) {
+        w.f->sample(x[0], x[1], n * timeStep, bad);
+        if (!bad.empty()) break;
+      }
+      if (!bad.empty()) {
+        bad += w.where;
+        firstBad = n;
+        break;
+      }
+    }
+  int earliest = firstBad;
+  Teuchos::reduceAll(*mesh.comm(), Teuchos::REDUCE_MIN, firstBad, Teuchos::outArg(earliest));
+  if (earliest > steps) return;
+  core::throwFirstUserError(*mesh.comm(),
+                            firstBad == earliest ? bad + " (step " + std::to_string(earliest) + " of the run)" : "");
 }
 
 std::string ProblemData::nearIncompressibility() const {

@@ -125,3 +125,14 @@ signorini_add_driver_test(poisson_ratio_0_3_solves_within_25_iterations EXIT 0
        --set "Problem/Initial Velocity=x*y, -x*y" --set "Problem/Poisson's Ratio=0.3"
        --set "Linear Solver/Preconditioner=Jacobi" --set "Linear Solver/Maximum Iterations=25" ${decks}/good.xml
   REGEX "good[.]xml done: 4 steps" FILES good.e good.steps.csv)
+
+# Data that stop being finite numbers later in the run are found at set-up, so by --check too (it
+# sampled them at t = 0 only, and the run stopped in that step). The earliest time wins, here in the
+# upper half of the mesh (the other rank's cells on 2 ranks) before the lower half turns NaN.
+signorini_add_driver_test(check_finds_body_force_infinite_later_in_the_run EXIT 1
+  ARGS --check --output-dir {OUT} --set "Problem/Body Force=y > 0.6 && t > 0.004 ? 1/(x-x) : (t > 0.008 ? sqrt(-1) : 0)"
+       ${decks}/good.xml
+  REGEX "Problem/Body Force: .* evaluates to inf at [(][0-9.]+, 0[.][6-9][0-9]*[)], t = 0[.]005 [(]step 2 of the run[)]")
+signorini_add_driver_test(check_finds_obstacle_not_a_number_later_in_the_run EXIT 1
+  ARGS --check --output-dir {OUT} --set "Problem/Obstacle=t > 0.006 ? sqrt(-1) : sin(pi*y) - 1.05" ${decks}/good.xml
+  REGEX "Problem/Obstacle: .* evaluates to -?nan at [(]1, [0-9.]+[)], t = 0[.]0075 on the contact boundary [(]step 3 of the run[)]")
