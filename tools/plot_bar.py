@@ -22,6 +22,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.collections import LineCollection  # noqa: E402
 import netCDF4  # noqa: E402
 import numpy as np  # noqa: E402
 
@@ -145,8 +146,12 @@ def plot_meshes(base, panels, k, out, scale=5.0):
         time, f, i, step = nearest_frame(frames, step, k)
         x, y, conn, ux, uy, _ = frame_data(f, i)
         X, Y = x + scale * ux, y + scale * uy
-        for q in conn:
-            ax.plot(X[np.append(q, q[0])], Y[np.append(q, q[0])], "k-", lw=0.15)
+        # Each edge once (neighbours share theirs), one collection per panel: the file stays small.
+        edges = np.sort(np.stack([conn, np.roll(conn, -1, axis=1)], axis=2).reshape(-1, 2), axis=1)
+        edges = np.unique(edges, axis=0)
+        ax.add_collection(LineCollection(np.stack([np.c_[X[edges[:, 0]], Y[edges[:, 0]]],
+                                                   np.c_[X[edges[:, 1]], Y[edges[:, 1]]]], axis=1),
+                                         colors="k", linewidths=0.15, antialiased=False))
         ax.plot([FOUNDATION_X, 0.2], [scale * FOUNDATION_Y] * 2, "r-", lw=1.5)  # the gap scales with u
         ax.set_aspect("equal")
         ax.set_title(f"({chr(ord('a') + j)}) n = {step}, t = {time * 1e3:.2f} ms{': ' + caption if caption else ''}\n"
