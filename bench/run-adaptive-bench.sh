@@ -5,12 +5,14 @@
 # The same run without the transfer-energy columns, and in ordinary arithmetic (the deck switches on
 # Parallel/Reproducible Arithmetic).
 # Usage: bash bench/run-adaptive-bench.sh [-np N]
+# (SIGNORINI_NO_BUILD=1: use the existing build/src/signorini instead of building it first)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash tools/build.sh > /dev/null
-np=1
-if [ "${1:-}" = "-np" ]; then np=$2; fi
+source bench/bench_args.sh
+parse_ranks "usage: bash bench/run-adaptive-bench.sh [-np N]" "$@"
+build_and_describe
 mkdir -p out/bench
+rm -f out/bench/adaptive*.np"$np".*  # nothing of an earlier run can be summarised as this one's
 mpirun --allow-run-as-root --oversubscribe -np "$np" ./build/src/signorini --output-dir out/bench \
   --set "Output/Basename=adaptive.np$np" --set "Output/Measure Contact Overhead=true" inputs/membrane.xml \
   | grep -E "cycle|done"
@@ -21,14 +23,14 @@ echo "without Adaptivity/Report Transfer Energy:"
 mpirun --allow-run-as-root --oversubscribe -np "$np" ./build/src/signorini --output-dir out/bench \
   --set "Output/Basename=adaptive-noenergy.np$np" --set "Output/Measure Contact Overhead=true" \
   --set "Adaptivity/Report Transfer Energy=false" inputs/membrane.xml > /dev/null
-/usr/bin/python3 bench/summarize_adaptive.py out/bench/adaptive-noenergy.np$np | tail -2
+/usr/bin/python3 bench/summarize_adaptive.py out/bench/adaptive-noenergy.np$np | tail -3
 # What reproducible arithmetic costs (the same bits on any number of ranks, docs/reproducibility.md):
 # the run again in ordinary arithmetic, the first run's wall time against its.
 echo "in ordinary arithmetic (Parallel/Reproducible Arithmetic=false):"
 mpirun --allow-run-as-root --oversubscribe -np "$np" ./build/src/signorini --output-dir out/bench \
   --set "Output/Basename=adaptive-ordinary.np$np" --set "Output/Measure Contact Overhead=true" \
   --set "Parallel/Reproducible Arithmetic=false" inputs/membrane.xml > /dev/null
-/usr/bin/python3 bench/summarize_adaptive.py out/bench/adaptive-ordinary.np$np | tail -2
+/usr/bin/python3 bench/summarize_adaptive.py out/bench/adaptive-ordinary.np$np | tail -3
 /usr/bin/python3 - "out/bench/adaptive-ordinary.np$np.cycles.csv" "out/bench/adaptive.np$np.cycles.csv" <<'PY2'
 import csv, sys
 wall = [sum(float(r["wall_seconds"]) for r in csv.DictReader(open(f))) for f in sys.argv[1:]]

@@ -1,16 +1,39 @@
 #!/usr/bin/python3
 """Summarises an adaptive run: phase split per cycle (cycles.csv) and, for the last cycle, the cost
-of a whole adaptive step (remesh + transfer, assembly, contact, estimate + mark, output) in units of
-one unconstrained solve of the same size (time_unconstrained). Usage: summarize_adaptive.py BASE"""
+of a whole adaptive step (new mesh and transfer, assembly, contact, estimate + mark, output) in units
+of one unconstrained solve of the same size (time_unconstrained: the step's own solver on its
+matrix, right-hand side and start, timed right after the contact solve; needs Output/Measure Contact
+Overhead = true). Usage: summarize_adaptive.py BASE"""
+import os
 import sys
+import time
 
 import numpy as np
 
+if len(sys.argv) != 2:
+    sys.exit(__doc__)
 base = sys.argv[1]
-c = np.atleast_1d(np.genfromtxt(base + ".cycles.csv", delimiter=",", names=True))
+
+
+def table(name):
+    try:
+        return np.atleast_1d(np.genfromtxt(name, delimiter=",", names=True))
+    except OSError as e:
+        sys.exit(f"{name}: {e.strerror or e}")
+
+
+c = table(base + ".cycles.csv")
+print(f"{base}.cycles.csv, written {time.strftime('%Y-%m-%d %H:%M', time.localtime(os.path.getmtime(base + '.cycles.csv')))}")
+# The phases are exclusive; "other" is what none covers (predictors, the Newmark update, the
+# transfer energies, the step table's rows). "unconstrained" is the measurement itself.
 phases = ["time_remesh_transfer", "time_assembly", "time_preconditioner", "time_contact", "time_estimate_mark",
-          "time_output", "time_regularise"]
-print(f"total wall time over {len(c)} cycles: {c['wall_seconds'].sum():.1f} s")
+          "time_output", "time_regularise", "time_unconstrained", "time_other"]
+missing = [p for p in phases if p not in (c.dtype.names or ())]
+if missing:
+    sys.exit(f"{base}.cycles.csv: no column {', '.join(missing)} (written by an older signorini?)")
+print(f"total wall time over {len(c)} cycles: {c['wall_seconds'].sum():.1f} s "
+      "(phases: remesh_transfer = the Q1 numbering and the transfer; assembly = matrices, loads, B; preconditioner ="
+      " the solver and contact Schur preconditioner set-up; estimate_mark = estimator, marking, refinement)")
 for row in c:
     split = ", ".join(f"{p[5:]} {row[p]:.2f}" for p in phases)
     print(f"cycle {int(row['cycle'])}: {int(row['total_dofs'])} unknowns, eta {row['eta']:.4g}, "
@@ -18,15 +41,20 @@ for row in c:
 
 
 def step_cost(name, label):
-    s = np.genfromtxt(name, delimiter=",", names=True)[1:]
+    s = table(name)[1:]
+    if "time_unconstrained" not in (s.dtype.names or ()) or not (s["time_unconstrained"] > 0).all():
+        sys.exit(f"{name}: no unconstrained solve timed in every step: run with Output/Measure Contact Overhead = true")
     step = s["time_remesh"] + s["time_assembly"] + s["time_contact"] + s["time_estimate"] + s["time_output"]
     free = s["time_unconstrained"]
-    ok = free > 0
-    ratio = step[ok].sum() / free[ok].sum()
-    print(f"{label}: mean unknowns per step {s['dofs'].mean():.0f}; per step: remesh+transfer "
-          f"{s['time_remesh'].mean() * 1e3:.2f} ms, assembly {s['time_assembly'].mean() * 1e3:.2f} ms, contact "
-          f"{s['time_contact'].mean() * 1e3:.2f} ms, estimate+mark {s['time_estimate'].mean() * 1e3:.2f} ms, output "
-          f"{s['time_output'].mean() * 1e3:.2f} ms; unconstrained solve {free[ok].mean() * 1e3:.2f} ms")
+    ratio = step.sum() / free.sum()
+    spread = np.percentile(free, 90) / np.median(free)
+    print(f"{label}: mean unknowns per step {s['dofs'].mean():.0f}; mean per step: new mesh (numbering, matrices, "
+          f"solver set-up) + transfer {s['time_remesh'].mean() * 1e3:.2f} ms, loads {s['time_assembly'].mean() * 1e3:.2f}"
+          f" ms, contact {s['time_contact'].mean() * 1e3:.2f} ms, estimate+mark {s['time_estimate'].mean() * 1e3:.2f} ms,"
+          f" output {s['time_output'].mean() * 1e3:.2f} ms; unconstrained solve {free.mean() * 1e3:.2f} ms (median "
+          f"{np.median(free) * 1e3:.2f} ms, 90th percentile {spread:.2f} times the median"
+          + ("; a busy machine? the ratio is less reliable" if spread > 1.3 else "") + ")")
+    print(f"  median over the steps of step / unconstrained solve: {np.median(step / free):.1f}")
     return ratio
 
 
@@ -36,4 +64,6 @@ if len(c) > 1:
     before = step_cost(f"{base}.cycle{len(c) - 2}.steps.csv", f"cycle {len(c) - 2}")
     print(f"  a step of cycle {len(c) - 2} (with marking and refinement) costs {before:.1f} unconstrained solves")
 ratio = step_cost(base + ".steps.csv", "last cycle")
-print(f"a whole adaptive step costs {ratio:.1f} unconstrained solves of the same size (target <= 6)")
+whole = (c["wall_seconds"] - c["time_unconstrained"]).sum() / table(base + ".steps.csv")[1:]["time_unconstrained"].sum()
+print(f"a whole adaptive step costs {ratio:.1f} unconstrained solves of the same size (target <= 6); "
+      f"the whole run (every cycle) costs {whole:.1f} unconstrained solves of the last cycle per step of it")

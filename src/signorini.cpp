@@ -181,8 +181,13 @@ int main(int argc, char** argv) {
         }
         const auto summary = sim.run();
         lastWritten = path;  // the files have their final names
-        out << "signorini: " << path << " done: " << summary.steps << " steps, " << summary.dofsPerStep
-            << " unknowns per step, " << summary.wallSeconds << " s" << std::endl;
+        // An adaptive run's meshes differ from step to step: the mean over its last pass.
+        const long long mean = summary.steps > 0 ? (summary.totalDofs + summary.steps / 2) / summary.steps : 0;
+        out << "signorini: " << path << " done: " << summary.steps << " steps, "
+            << (mean == summary.dofsPerStep ? std::to_string(mean) + " unknowns per step"
+                                            : "mean " + std::to_string(mean) + " unknowns per step (" +
+                                                  std::to_string(summary.dofsPerStep) + " in the last)")
+            << ", " << summary.wallSeconds << " s" << std::endl;
         out << "  phase seconds:";
         for (const auto& [phase, seconds] : summary.phaseSeconds)
           out << " " << phase << " " << std::fixed << std::setprecision(3) << seconds;

@@ -9,20 +9,33 @@
 
 namespace signorini::core {
 
+/// Phases are exclusive: a scope opened inside another one pauses it, so that every second is
+/// booked to one phase only (the innermost), and the phases of a run add up to at most its wall time.
 class PhaseTimers {
  public:
   using Clock = std::chrono::steady_clock;
-  /// RAII: adds the time of its lifetime to the phase.
+  /// RAII: adds the time of its lifetime, less that of scopes opened inside it, to the phase.
   class Scope {
    public:
-    Scope(PhaseTimers& t, std::string phase) : t_(t), phase_(std::move(phase)), start_(Clock::now()) {}
-    ~Scope() { t_.add(phase_, std::chrono::duration<double>(Clock::now() - start_).count()); }
+    Scope(PhaseTimers& t, std::string phase) : t_(t), phase_(std::move(phase)), enclosing_(t.innermost_) {
+      start_ = Clock::now();
+      if (enclosing_) enclosing_->book(start_);
+      t_.innermost_ = this;
+    }
+    ~Scope() {
+      const auto now = Clock::now();
+      book(now);
+      t_.innermost_ = enclosing_;
+      if (enclosing_) enclosing_->start_ = now;
+    }
     Scope(const Scope&) = delete;
     Scope& operator=(const Scope&) = delete;
 
    private:
+    void book(Clock::time_point now) { t_.add(phase_, std::chrono::duration<double>(now - start_).count()); }
     PhaseTimers& t_;
     std::string phase_;
+    Scope* enclosing_;
     Clock::time_point start_;
   };
 
@@ -37,6 +50,7 @@ class PhaseTimers {
 
  private:
   std::map<std::string, double> seconds_;
+  Scope* innermost_ = nullptr;
 };
 
 /// A stream that prints on rank 0 only.

@@ -262,6 +262,7 @@ struct Simulation::Impl {
   std::unique_ptr<Discretisation> initialDiscretisation;  ///< built for the set-up checks; used by the first pass
   std::vector<std::pair<std::string, std::array<double, 2>>> probes;
   core::PhaseTimers timers;
+  std::map<std::string, double> setupSeconds;  // the phases of the constructor's set-up
   std::unique_ptr<CoarseProblem> coarseProblem;
   long discretisations = 0;  ///< built so far (their ids)
   int currentStep = 0;       ///< the step runPass is at (0: the initial state)
@@ -450,8 +451,11 @@ struct Simulation::Impl {
       fem::ContactUnknowns unknowns{d->assembler->ownedMap(), d->assembler->overlapMap(), problem->components(),
                                     problem->components() == 1 ? 0 : problem->contactComponent,
                                     problem->components() == 1 ? 1.0 : problem->contactSign};
-      d->coupling = std::make_unique<fem::ContactCoupling>(*d->mesh, problem->contactMask, size,
-                                                           d->assembler->dirichletFlags(), unknowns);
+      {  // B and the segments are assembled; the QP's set-up below is the Schur preconditioner's
+        auto assembly = timers.scope("assembly");
+        d->coupling = std::make_unique<fem::ContactCoupling>(*d->mesh, problem->contactMask, size,
+                                                             d->assembler->dirichletFlags(), unknowns);
+      }
       if (d->coupling->numSegments() == 0)
         SIGNORINI_USER_ERROR("Problem/Contact Segments: the named segments contain no boundary edge of the mesh");
       d->qp = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), coarse->diameter());
@@ -801,6 +805,7 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
                 << std::endl;
   }
   I.initialDiscretisation = std::move(d);
+  I.setupSeconds = I.timers.all();  // the deck's mesh, its matrices and solvers: run() reports them
   I.outDir = outputDir.empty() ? out.get<std::string>("Directory") : outputDir;
   if (I.outDir.empty()) SIGNORINI_USER_ERROR("Output/Directory: empty (\".\" is the working directory)");
   while (I.outDir.size() > 1 && I.outDir.back() == '/') I.outDir.pop_back();  // "out/" writes "out/x", not "out//x"
@@ -897,6 +902,7 @@ RunSummary Simulation::run() {
   io::retireOnCommit(outputBase(), io::isRunOutputSuffix);
   std::vector<std::shared_ptr<mesh::Forest>> meshes(numSteps(), impl_->initialForest);
   auto summary = runPass(meshes, StepHook(), PassOptions());
+  for (const auto& [phase, seconds] : impl_->setupSeconds) summary.phaseSeconds[phase] += seconds;
   core::throwIfInterrupted(*impl_->comm);  // a signal during the last step: the files go
   core::onRootCollectively(*impl_->comm, [&] { staging.commit(); });
   return summary;
@@ -1103,18 +1109,22 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       summary.totalDofs += static_cast<long long>(owned->getGlobalNumElements());
       Vector& pred = *predictors[0];
       Vector F(owned), load(owned);
+      double projectionSeconds = 0;  // contact work, booked as such
+      if (d->projection) {  // the predictor projected onto the admissible set in the mass norm
+        const auto tP0 = std::chrono::steady_clock::now();
+        auto scope = I.timers.scope("contact");
+        Vector Mpred(owned);
+        core::apply(*d->M, pred, Mpred);
+        d->assembler->zeroDirichlet(Mpred);
+        std::vector<double> mu(d->coupling->numSegments(), 0.0), gapPred;
+        d->projection->solve(I.massSolver(*d), *d->coupling, Mpred, d->coupling->weightedObstacle(I.problem->obstacle, t),
+                             mu, pred, gapPred);
+        projectionSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tP0).count();
+      }
       const auto tA0 = std::chrono::steady_clock::now();
       {
         auto scope = I.timers.scope("assembly");
         // F^n = beta k^2 (f(t_n) + Neumann) + M (u + k v + (1/2 - beta) k^2 a)
-        if (d->projection) {  // the predictor projected onto the admissible set in the mass norm
-          Vector Mpred(owned);
-          core::apply(*d->M, pred, Mpred);
-          d->assembler->zeroDirichlet(Mpred);
-          std::vector<double> mu(d->coupling->numSegments(), 0.0), gapPred;
-          d->projection->solve(I.massSolver(*d), *d->coupling, Mpred, d->coupling->weightedObstacle(I.problem->obstacle, t),
-                               mu, pred, gapPred);
-        }
         core::apply(*d->M, pred, F);
         d->assembler->assembleLoad(I.problem->bodyForce, t, beta * k * k, load);
         d->assembler->addBoundaryLoad(I.problem->neumannData, t, I.problem->neumannMask, beta * k * k, load);
@@ -1144,6 +1154,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         x.assign(pred);
         d->assembler->zeroDirichlet(x);
         const auto t0 = std::chrono::steady_clock::now();
+        auto scope = I.timers.scope("unconstrained");  // the measurement's own time, in no other phase
         d->solver->solve(F, x);
         tFree = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       }
@@ -1159,7 +1170,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();
       I.newmark->update(pred, *predictors[1], *u, *v, *a);
       writeOutputs(n, t, qr, std::chrono::duration<double>(tA1 - tA0).count(),
-                   std::chrono::duration<double>(tA2 - tA1).count(), tFree, extras);
+                   std::chrono::duration<double>(tA2 - tA1).count() + projectionSeconds, tFree, extras);
       if (n % progress == 0 || n == nSteps) {
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         core::rootOut(rank) << std::defaultfloat << std::setprecision(6) << "  step " << n << "/" << nSteps

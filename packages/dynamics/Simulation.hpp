@@ -27,7 +27,9 @@ struct RunSummary {
   long meshChanges = 0;        ///< steps whose mesh differed from the previous step's
   double wallSeconds = 0;      ///< the whole run (an adaptive run: all cycles)
   std::vector<std::string> files;  ///< every file the run wrote (an adaptive run: also the earlier cycles')
-  /// Wall seconds per phase (mesh, assembly, preconditioner, contact, output) over the whole run (all cycles).
+  /// Wall seconds per phase (mesh, assembly, preconditioner, contact, output, ...) over the whole run
+  /// (all cycles); the phases are exclusive (core::PhaseTimers). A one-pass run (run()) includes
+  /// the set-up on the deck's mesh before it (its solver, set up once), which wallSeconds does not.
   std::map<std::string, double> phaseSeconds;
 };
 

@@ -1,7 +1,7 @@
 # Unit tests of the deck machinery in signorini::core: ParameterTools (validation, --set
-# overrides, --print-parameters) and Expression (muParser expressions of x, y, t).
+# overrides, --print-parameters), Expression (muParser expressions of x, y, t) and PhaseTimers.
 signorini_add_gtest(core_tests
-  SOURCES core/ParameterToolsTest.cpp core/ExpressionTest.cpp
+  SOURCES core/ParameterToolsTest.cpp core/ExpressionTest.cpp core/PhaseTimersTest.cpp
   LIBS signorini::core
   NPS 1
   TIMEOUT 60

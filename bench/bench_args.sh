@@ -1,0 +1,22 @@
+# Shared by the bench scripts (sourced): the rank count and the build, with a record of what ran.
+
+# Sets np from "[-np N]" (N a positive integer); anything else stops with $1 (the usage line).
+parse_ranks() {
+  local usage=$1
+  shift
+  np=1
+  if [ $# -eq 2 ] && [ "$1" = "-np" ] && [[ "$2" =~ ^[1-9][0-9]*$ ]]; then
+    np=$2
+  elif [ $# -ne 0 ]; then
+    echo "$usage (got: $*)" >&2
+    exit 2
+  fi
+}
+
+# Builds build/src/signorini (unless SIGNORINI_NO_BUILD=1) and says which code and how many ranks.
+build_and_describe() {
+  [ -n "${SIGNORINI_NO_BUILD:-}" ] || bash tools/build.sh > /dev/null
+  [ -x build/src/signorini ] || { echo "no build/src/signorini: build first (bash tools/build.sh)" >&2; exit 2; }
+  echo "benchmark of $(git describe --always --dirty 2>/dev/null || echo 'an unknown commit'), build/src/signorini of" \
+    "$(date -r build/src/signorini '+%Y-%m-%d %H:%M'), $np rank(s), on $(nproc) core(s), $(date '+%Y-%m-%d %H:%M')"
+}
