@@ -10,7 +10,7 @@ write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/signorini-config-ve
 install(FILES
   ${CMAKE_CURRENT_BINARY_DIR}/signorini-config.cmake
   ${CMAKE_CURRENT_BINARY_DIR}/signorini-config-version.cmake
-  ${CMAKE_CURRENT_LIST_DIR}/SignoriniDependencies.cmake
+  ${CMAKE_CURRENT_LIST_DIR}/SignoriniTrilinos.cmake
   ${CMAKE_CURRENT_LIST_DIR}/FindP4est.cmake
   ${CMAKE_CURRENT_LIST_DIR}/FindExodusII.cmake
   ${CMAKE_CURRENT_LIST_DIR}/FindMuParser.cmake

@@ -77,17 +77,19 @@ class Q1Assembler : public Assembler {
 
   const std::vector<char>& dirichletFlags() const override { return dirichlet_; }
 
- private:
-  const mesh::Q1Mesh& mesh_;
-  std::vector<char> dirichlet_;
-  Kokkos::View<int*, DeviceType> dirichletView_;
-  std::unique_ptr<Q1Pattern> pattern_;  ///< the matrices' sparsity; creates and finishes them
+  // Public only because nvcc refuses a KOKKOS_LAMBDA in a private or protected member function.
   using LocalMatrix = CrsMatrix::local_matrix_device_type;
   /// Cell kernel shared by assembleOperator and assembleMassAndStiffness: mass part times cm summed
   /// into \p first, stiffness part times ck into \p second (the same matrix for a combined
   /// operator); both opened by pattern_. Dirichlet rows and columns stay empty.
   void assembleInto(const LocalMatrix& first, const LocalMatrix& second, double cm, double ck,
                     const std::vector<char>& lumpMassAt) const;
+
+ private:
+  const mesh::Q1Mesh& mesh_;
+  std::vector<char> dirichlet_;
+  Kokkos::View<int*, DeviceType> dirichletView_;
+  std::unique_ptr<Q1Pattern> pattern_;  ///< the matrices' sparsity; creates and finishes them
   /// Reproducible arithmetic (core::reproducibleArithmetic()): the cells' contributions to M
   /// (times cm, lumped at \p lumpMassAt) and K (times ck), one per pair of corner unknowns of each
   /// cell (several per entry and cell at hanging corners), in the kernel's order, Dirichlet rows

@@ -99,12 +99,12 @@ void expectCycleTotalsMatchSteps(const Result& r) {
     const double rebuilds = c[r.cycles.column("mesh_rebuilds")], stored = c[r.cycles.column("stored_meshes")];
     EXPECT_GE(rebuilds, dofChanges) << "cycle " << l;
     EXPECT_LE(rebuilds, stored - 1) << "cycle " << l;
-    if (l == 0) EXPECT_EQ(rebuilds, 0.0);
-    if (l == 0) EXPECT_EQ(stored, 1.0);
+    if (l == 0) { EXPECT_EQ(rebuilds, 0.0); }
+    if (l == 0) { EXPECT_EQ(stored, 1.0); }
     // Every stored cell holds at least its level; after cycle 0 the meshes are stored compact
     // (Adaptivity/Compact Meshes), below the 24 bytes of one p4est quadrant.
     EXPECT_GE(c[r.cycles.column("bytes_per_cell")], 1.0) << "cycle " << l;
-    if (l > 0) EXPECT_LT(c[r.cycles.column("bytes_per_cell")], 24.0) << "cycle " << l;
+    if (l > 0) { EXPECT_LT(c[r.cycles.column("bytes_per_cell")], 24.0) << "cycle " << l; }
   }
   EXPECT_EQ(row, r.steps.rows.size());
 }
@@ -374,13 +374,13 @@ TEST(AdaptiveTransfer, TheL2ProjectionNeverRaisesTheKineticEnergyWhileInterpolat
       graded += rows[n][dofs] != rows[n - steps][dofs];
       const double change = rows[n][kineticMoved] - rows[n - 1][kinetic];
       // measured: the projection's largest rise 2.3e-11 of E0 in 5 cycles (solver tolerance 1e-10)
-      if (l2) EXPECT_LE(change, 1e-10 * e0) << "step " << n - steps;
+      if (l2) { EXPECT_LE(change, 1e-10 * e0) << "step " << n - steps; }
       raised += change > 1e-6 * e0;
       lowered += change < -1e-6 * e0;
     }
     EXPECT_GT(graded, static_cast<long>(steps / 2));  // cycle 1's meshes change from step to step
     EXPECT_GT(lowered, 0) << "the transfer's effect is visible";
-    if (!l2) EXPECT_GT(raised, 0) << "interpolation raises the kinetic energy (measured: in 119 of 400 steps)";
+    if (!l2) { EXPECT_GT(raised, 0) << "interpolation raises the kinetic energy (measured: in 119 of 400 steps)"; }
   }
 }
 

@@ -58,11 +58,11 @@ TEST(Marking, FixedFractionMarksTheLargestFractionOfCells) {
     const long long marked = std::count(flags.begin(), flags.end(), 1);
     EXPECT_GE(marked, wanted);
     for (size_t i = 0; i < all.size(); ++i)
-      if (all[i] == 0) EXPECT_FALSE(flags[i]) << "cell " << i << " has nothing to refine";
+      if (all[i] == 0) { EXPECT_FALSE(flags[i]) << "cell " << i << " has nothing to refine"; }
     double minMarked = 1e300, maxUnmarked = -1;
     for (size_t i = 0; i < all.size(); ++i)
       (flags[i] ? minMarked = std::min(minMarked, all[i]) : maxUnmarked = std::max(maxUnmarked, all[i]));
-    if (marked > 0 && marked < static_cast<long long>(all.size())) EXPECT_GT(minMarked, maxUnmarked);
+    if (marked > 0 && marked < static_cast<long long>(all.size())) { EXPECT_GT(minMarked, maxUnmarked); }
     if (marked > wanted) {  // only ties at the threshold may exceed the count
       long long atThreshold = std::count(all.begin(), all.end(), minMarked);
       EXPECT_LE(marked - wanted, atThreshold - 1);
@@ -155,7 +155,7 @@ TEST(Marking, SmallestAboveFlagsOnlyCellsAboveTheLevelAndCountsOnlyThem) {
   EXPECT_LE(marked, above / 2);
   double maxMarked = -1, minUnmarked = 1e300;
   for (size_t i = 0; i < all.size(); ++i) {
-    if (flags[i]) EXPECT_EQ(allLevels[i], 3) << "cell " << i << " is at the deck's level";
+    if (flags[i]) { EXPECT_EQ(allLevels[i], 3) << "cell " << i << " is at the deck's level"; }
     if (allLevels[i] == 3) (flags[i] ? maxMarked = std::max(maxMarked, all[i]) : minUnmarked = std::min(minUnmarked, all[i]));
   }
   EXPECT_LT(maxMarked, minUnmarked);  // the smallest of them

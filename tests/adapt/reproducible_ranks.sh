@@ -5,13 +5,20 @@
 # the wall-clock times). Control: with the option switched off the 3-rank run differs from the
 # 1-rank run.
 # Usage: reproducible_ranks.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
+# MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (FindMPI's MPIEXEC_EXECUTABLE,
+# MPIEXEC_NUMPROC_FLAG, MPIEXEC_PREFLAGS; see cmake/SignoriniTesting.cmake); a bare executable gets -n.
 set -euo pipefail
-signorini=$1 mpiexec=$2 src=$3 work=$4
+signorini=$1 src=$3 work=$4
+IFS='|' read -r -a launcher <<< "$2"
+mpirun_np() {  # the command prefix that runs a program on $1 ranks, into the array mpirun
+  mpirun=("${launcher[0]}" "${launcher[1]:--n}" "$1" "${launcher[@]:2}")
+}
 rm -rf "$work" && mkdir -p "$work"
 run() {  # ranks, basename, [--set ...]
   local np=$1 base=$2
   shift 2
-  "$mpiexec" --oversubscribe --allow-run-as-root -np "$np" "$signorini" --output-dir "$work" \
+  mpirun_np "$np"
+  "${mpirun[@]}" "$signorini" --output-dir "$work" \
     --set "Output/Basename=$base" --set 'Adaptivity/Cycles=3' --set 'Time Integration/Final Time=0.3' \
     --set 'Output/Write Exodus=false' "$@" "$src/inputs/membrane.xml" \
     > "$work/$base.log" 2>&1 || { cat "$work/$base.log"; exit 1; }

@@ -1,10 +1,13 @@
-// Uses an installed signorini library: evaluates a deck expression.
+// Uses an installed signorini library: evaluates a deck expression. Types.hpp (Tpetra, Kokkos and
+// MPI headers; C++17) checks that the package passes on the include paths, flags and standard.
 #include <cmath>
 #include <cstdio>
 
 #include <Expression.hpp>
+#include <Types.hpp>
 
 int main() {
+  static_assert(std::is_same_v<signorini::Scalar, double>);
   signorini::core::Expression g("sin(pi*y) - 1.05", "consumer");
   const double v = g(1.0, 0.5, 0.0);
   std::printf("g(1, 0.5) = %g\n", v);

@@ -251,6 +251,6 @@ TEST(ReproducibleSum, TwoPartWidthKeepsTheFoldSumsExact) {
     // One bit wider halves the room, 2^(52 - width): the parts' sum (about 0.9995 n) passes it for
     // every n here but the smallest and 65537 (which sits just above 2^16).
     if (n >= 1000 && 0.999 * static_cast<double>(n) > std::ldexp(1.0, 52 - width))
-      EXPECT_FALSE(exact(n, width + 1)) << n << " terms";
+      { EXPECT_FALSE(exact(n, width + 1)) << n << " terms"; }
   }
 }

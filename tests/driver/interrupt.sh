@@ -5,8 +5,14 @@
 # 128 + the signal. A later successful run
 # removes the '.part' files that a run killed outright (SIGKILL) left.
 # Usage: interrupt.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
+# MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (FindMPI's MPIEXEC_EXECUTABLE,
+# MPIEXEC_NUMPROC_FLAG, MPIEXEC_PREFLAGS; see cmake/SignoriniTesting.cmake); a bare executable gets -n.
 set -uo pipefail
-signorini=$1 mpiexec=$2 src=$3 work=$4
+signorini=$1 src=$3 work=$4
+IFS='|' read -r -a launcher <<< "$2"
+mpirun_np() {  # the command prefix that runs a program on $1 ranks, into the array mpirun
+  mpirun=("${launcher[0]}" "${launcher[1]:--n}" "$1" "${launcher[@]:2}")
+}
 rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL: $*"; exit 1; }
 
@@ -43,7 +49,8 @@ status=$(interrupt one INT "$signorini")
 grep -q "interrupted by signal 2" "$work/one.log" || fail "1 rank: no 'interrupted' message"
 [ -z "$(ls -A "$work/one")" ] || fail "1 rank: files left: $(ls -A "$work/one")"
 
-status=$(interrupt two TERM "$mpiexec" --allow-run-as-root --oversubscribe -np 2 "$signorini")
+mpirun_np 2
+status=$(interrupt two TERM "${mpirun[@]}" "$signorini")
 [ "$status" != 0 ] && [ "$status" != 255 ] || fail "2 ranks: exit status $status after SIGTERM"
 grep -q "interrupted by signal 15" "$work/two.log" || { cat "$work/two.log"; fail "2 ranks: no 'interrupted' message"; }
 [ -z "$(ls -A "$work/two")" ] || fail "2 ranks: files left: $(ls -A "$work/two")"

@@ -1,5 +1,5 @@
 # run_bad_deck.cmake: runs the signorini driver on NP MPI ranks and checks how it ends.
-#   cmake -DSIGNORINI=... -DMPIEXEC=... -DNP=2 -DWORK_DIR=... -DWRAPPER=.../rank_status.sh
+#   cmake -DSIGNORINI=... -DMPIEXEC='mpiexec|-n|--oversubscribe' -DNP=2 -DWORK_DIR=... -DWRAPPER=.../rank_status.sh
 #         -DARGS='--output-dir|{OUT}|deck.xml' -DEXPECT_EXIT=1 -DEXPECT_REGEX='re1<AND>re2'
 #         [-DEXPECT_FILES='a.steps.csv|a.e'] [-DBLOCK='a.e|a.cycles.csv'] [-DSEED='a.e|a.e-s.0003']
 #         [-DUNCHANGED='a.e'] [-DTIMEOUT=50] -P run_bad_deck.cmake
@@ -10,8 +10,10 @@
 #    SEED names files made in it first, as an earlier run would have left them (each holds
 #    "seeded <name>"); UNCHANGED names those of them that must still hold exactly that afterwards;
 #    the others that EXPECT_FILES lists must have been replaced by the run's own.
-# 2. Runs `MPIEXEC --oversubscribe --allow-run-as-root -np NP rank_status.sh STATUS_DIR SIGNORINI ARGS`
-#    (ARGS separated by "|"); rank_status.sh records the exit status of every rank.
+# 2. Runs `EXECUTABLE NUMPROC_FLAG NP PREFLAGS... rank_status.sh STATUS_DIR SIGNORINI ARGS`, MPIEXEC
+#    being "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (FindMPI's MPIEXEC_EXECUTABLE, MPIEXEC_NUMPROC_FLAG,
+#    MPIEXEC_PREFLAGS; a bare executable gets -n) and ARGS separated by "|"; rank_status.sh
+#    records the exit status of every rank.
 # 3. Checks that EVERY rank exited with EXPECT_EXIT (a crash gives 134/139, a killed or hung
 #    rank gives no status at all), that stdout + stderr match each regular expression in
 #    EXPECT_REGEX (separated by "<AND>") and show no crash, and that the output directory then
@@ -57,7 +59,13 @@ if(NOT "${ARGS}" STREQUAL "")
   string(REPLACE "|" ";" args "${args}")
 endif()
 
-set(command ${MPIEXEC} --oversubscribe --allow-run-as-root -np ${NP} /bin/sh ${WRAPPER} ${status_dir} ${SIGNORINI} ${args})
+string(REPLACE "|" ";" launcher "${MPIEXEC}")
+list(POP_FRONT launcher mpiexec_executable)
+list(POP_FRONT launcher numproc_flag)
+if("${numproc_flag}" STREQUAL "")
+  set(numproc_flag -n)
+endif()
+set(command ${mpiexec_executable} ${numproc_flag} ${NP} ${launcher} /bin/sh ${WRAPPER} ${status_dir} ${SIGNORINI} ${args})
 string(REPLACE ";" "' '" shown "'${command}'")
 message(STATUS "running: ${shown}")
 message(STATUS "in: ${out_dir}")

@@ -3,13 +3,20 @@
 # the other ranks' stdin is empty, and they used to fail alone while rank 0 waited forever), a deck
 # from a process substitution (/dev/fd/N needs Output/Basename), and a batch whose second deck reaches the first one's output base through a symbolic link.
 # Usage: shell_cases.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
+# MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (FindMPI's MPIEXEC_EXECUTABLE,
+# MPIEXEC_NUMPROC_FLAG, MPIEXEC_PREFLAGS; see cmake/SignoriniTesting.cmake); a bare executable gets -n.
 set -uo pipefail
-signorini=$1 mpiexec=$2 src=$3 work=$4
+signorini=$1 src=$3 work=$4
+IFS='|' read -r -a launcher <<< "$2"
+mpirun_np() {  # the command prefix that runs a program on $1 ranks, into the array mpirun
+  mpirun=("${launcher[0]}" "${launcher[1]:--n}" "$1" "${launcher[@]:2}")
+}
 rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL: $*"; exit 1; }
 good="$src/tests/driver/decks/good.xml"
 
-timeout 20 "$mpiexec" --allow-run-as-root --oversubscribe -np 2 "$signorini" --check --output-dir "$work/stdin" \
+mpirun_np 2
+timeout 20 "${mpirun[@]}" "$signorini" --check --output-dir "$work/stdin" \
   /dev/stdin < "$good" > "$work/stdin.log" 2>&1
 status=$?
 [ "$status" = 0 ] || { cat "$work/stdin.log"; fail "a deck on stdin on 2 ranks: exit status $status"; }

@@ -186,7 +186,7 @@ TEST(Membrane, StabilisedSchemeKeepsContactAndDoesNotGainEnergy) {
     const double e0 = t.rows.front()[t.column("energy")];
     for (const auto& r : t.rows) {
       EXPECT_LE(r[t.column("energy")], e0 * (1 + 1e-9));
-      if (r[t.column("t")] > t1 + 0.1) EXPECT_NEAR(r[t.column("probe:end")], g, 1e-4);
+      if (r[t.column("t")] > t1 + 0.1) { EXPECT_NEAR(r[t.column("probe:end")], g, 1e-4); }
     }
     l2.push_back(columnMax(t, "error_l2"));
   }

@@ -55,7 +55,7 @@ TEST_P(ParallelAgreement, MembraneOnTwoRanksMatchesOneRank) {
   auto self = world->split(world->getRank() == 0 ? 0 : 1, 0);
   if (world->getRank() == 0) {
     const auto one = runMembrane(self, tag + "-np1", stabilised);
-    if (stabilised) EXPECT_EQ(one.rows.size(), 401u);  // the whole deck
+    if (stabilised) { EXPECT_EQ(one.rows.size(), 401u); }  // the whole deck
     ASSERT_EQ(one.rows.size(), two.rows.size());
     int contactSteps = 0;
     for (size_t i = 0; i < one.rows.size(); ++i) {

@@ -374,8 +374,8 @@ TEST_P(ElasticityKink, JumpIndicatorsAreLocalisedAndExact) {
   //   side 1/8; on the right 8 of side 1/16 (balance), 2 of side 1/16 (the cell at the corner
   //   (1/2, 1/2), corner balance) and 3 of side 1/8: sqrt 2 (16/1024 + 2/256 + 3/64 + 10/256 + 3/64)
   //   = sqrt 2 * 5/32; 34 cells.
-  if (p.mesh == 0) EXPECT_NEAR(total, std::sqrt(2.0) / 4 * c2, 1e-14 * c2);
-  if (p.mesh == 1) EXPECT_NEAR(total, std::sqrt(2.0) * 5 / 32 * c2, 1e-14 * c2);
+  if (p.mesh == 0) { EXPECT_NEAR(total, std::sqrt(2.0) / 4 * c2, 1e-14 * c2); }
+  if (p.mesh == 1) { EXPECT_NEAR(total, std::sqrt(2.0) * 5 / 32 * c2, 1e-14 * c2); }
   const double count = sumOverRanks(*s, touching);
   EXPECT_EQ(count, p.mesh == 0 ? 16 : p.mesh == 1 ? 34 : 10);
 }
@@ -461,8 +461,8 @@ TEST_P(ElasticityBilinear, DivSigmaEntersTheCellResidualExactly) {
     // Uniform meshes: the square's 64 cells have h^2 = 2/64, |K| = 1/64: sum = 1/32. The parallelogram
     // at level 2 has 16 copies of itself scaled by 1/4: diagonals^2 (1 + a)^2 + (1 + b)^2 = 3.8125 and
     // (1 - a)^2 + (1 - b)^2 = 0.8125, area 1 - a b = 0.875: sum = 16 * 3.8125/16 * 0.875/16.
-    if (!p.hanging) EXPECT_NEAR(sumH2K, p.parallelogram ? 3.8125 * 0.875 / 16 : 1.0 / 32, 1e-15);
-    if (sign < 0) EXPECT_NEAR(r.etaStar * r.etaStar, sumH2K * r2, 1e-12 * sumH2K * r2);
+    if (!p.hanging) { EXPECT_NEAR(sumH2K, p.parallelogram ? 3.8125 * 0.875 / 16 : 1.0 / 32, 1e-15); }
+    if (sign < 0) { EXPECT_NEAR(r.etaStar * r.etaStar, sumH2K * r2, 1e-12 * sumH2K * r2); }
   }
   EXPECT_LT(etaStar[0], 1e-11 * etaStar[1]);
 }

@@ -354,7 +354,7 @@ TEST(ResidualEstimatorLaplacian, TrapezoidMatchesHandComputation) {
       local += h * h * c2 * integral;
     }
     Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(expected));
-    if (level == 0) EXPECT_NEAR(expected, 10 * c2, 1e-14 * c2);
+    if (level == 0) { EXPECT_NEAR(expected, 10 * c2, 1e-14 * c2); }
     // 3x3 Gauss on the rational integrand 1/(2-r)^3: relative error 1e-3 on one cell, 7e-7 on 4 x 4.
     const double tol = level == 0 ? 2e-3 : 2e-6;
     EXPECT_NEAR(r.etaStar * r.etaStar, expected, tol * expected) << "level " << level;
@@ -696,7 +696,7 @@ TEST(FaceWalk, DirectWalkOfOneTreeGivesP4estsFacePairs) {
     estimate::forEachInteriorFace<std::array<long long, 2>>(
         *tm.forest, payload, [](const std::vector<std::array<long long, 2>>&) {},
         [&](const estimate::FaceSide<std::array<long long, 2>>& a, const estimate::FaceSide<std::array<long long, 2>>& b) {
-          if (walk == estimate::FaceWalk::automatic) EXPECT_TRUE(a.local >= 0 || b.local >= 0);
+          if (walk == estimate::FaceWalk::automatic) { EXPECT_TRUE(a.local >= 0 || b.local >= 0); }
           if (a.local < 0 && b.local < 0) return;  // p4est_iterate's other half of a 2:1 face (ignored by the callers)
           EXPECT_GE((*a.data)[1], (*b.data)[1]);  // A is the fine side
           std::array<long long, 4> p{(*a.data)[0], a.face, (*b.data)[0], b.face};
@@ -720,7 +720,7 @@ TEST(FaceWalk, DirectWalkOfOneTreeGivesP4estsFacePairs) {
   Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_SUM, 1, &hangingHalves, &halves);
   Teuchos::reduceAll(*Tpetra::getDefaultComm(), Teuchos::REDUCE_SUM, 1, &withGhost, &ghosts);
   EXPECT_GT(halves, 16);
-  if (Tpetra::getDefaultComm()->getSize() > 1) EXPECT_GT(ghosts, 0);
+  if (Tpetra::getDefaultComm()->getSize() > 1) { EXPECT_GT(ghosts, 0); }
 }
 
 TEST(ResidualEstimatorParameters, ValidListIsDocumentedAndChecked) {

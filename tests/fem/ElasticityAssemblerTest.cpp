@@ -147,7 +147,7 @@ TEST_P(ElasticityAssembly, DirichletUnknownsPerComponent) {
   EXPECT_NEAR(Ax.dot(z), Ay.dot(x), 1e-12 * Ax.norm2() * z.norm2());  // x^T A z = z^T A x
   auto h = Ax.getLocalViewHost(Tpetra::Access::ReadOnly);
   for (size_t i = 0; i < h.extent(0); ++i)
-    if (flags[i]) EXPECT_EQ(h(i, 0), 0.0);
+    if (flags[i]) { EXPECT_EQ(h(i, 0), 0.0); }
   // Row by row: each flagged unknown's row is the identity row; every other row (the rollers' free
   // u_y among them) keeps its coupling to the neighbours.
   const auto local = A->getLocalMatrixHost();

@@ -253,6 +253,6 @@ TEST(StepMatrices, EqualSeparateAssembly) {
       auto xh = x.getLocalViewHost(Tpetra::Access::ReadOnly);
       auto yh = y.getLocalViewHost(Tpetra::Access::ReadOnly);
       for (size_t i = 0; i < xh.extent(0); ++i)
-        if (asmb->dirichletFlags()[i]) EXPECT_EQ(yh(i, 0), xh(i, 0));
+        if (asmb->dirichletFlags()[i]) { EXPECT_EQ(yh(i, 0), xh(i, 0)); }
     }
 }

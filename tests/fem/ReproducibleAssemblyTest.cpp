@@ -184,7 +184,7 @@ TEST(ReproducibleAssembly, OrdinaryAssemblyDiffersOnSeveralRanks) {  // the cont
   const Assembled d = assemble(distributed), s = assemble(serial);
   const int differ = sumOverRanks(differing(d.M, s.M) + differing(d.K, s.K) + differing(d.A, s.A) + differing(d.load, s.load));
   if (world->getRank() == 0) std::cout << "ordinary assembly: " << differ << " entries differ from one rank's\n";
-  if (world->getSize() > 1) EXPECT_GT(differ, 0);
+  if (world->getSize() > 1) { EXPECT_GT(differ, 0); }
 }
 
 namespace {
@@ -241,7 +241,7 @@ TEST(ReproducibleAssembly, RegisteredRowOrderAppliesWithTheBitsOfOneRank) {
   // The control: the same matrices summed in their local column order differ in some rows.
   const int ordinary = sumOverRanks(ordinaryDiffer);
   if (world->getRank() == 0) std::cout << "ordinary apply: " << ordinary << " rows differ from one rank's\n";
-  if (world->getSize() > 1) EXPECT_GT(ordinary, 0);
+  if (world->getSize() > 1) { EXPECT_GT(ordinary, 0); }
 }
 
 namespace {
@@ -284,5 +284,5 @@ TEST(ReproducibleAssembly, ProjectionLoadsHaveTheBitsOfOneRank) {
   }
   const int ordinary = sumOverRanks(differing(projectionLoads(world), projectionLoads(self)));
   if (world->getRank() == 0) std::cout << "ordinary projection loads: " << ordinary << " rows differ from one rank's\n";
-  if (world->getSize() > 1) EXPECT_GT(ordinary, 0);
+  if (world->getSize() > 1) { EXPECT_GT(ordinary, 0); }
 }

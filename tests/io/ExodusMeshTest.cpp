@@ -326,7 +326,7 @@ Records recordsOf(const std::string& file) {
   std::vector<std::vector<char>> buffers(n, std::vector<char>(MAX_LINE_LENGTH + 1, '\0'));
   std::vector<char*> pointers;
   for (auto& b : buffers) pointers.push_back(b.data());
-  if (n > 0) EXPECT_GE(ex_get_info(exoid, pointers.data()), 0);
+  if (n > 0) { EXPECT_GE(ex_get_info(exoid, pointers.data()), 0); }
   for (auto& b : buffers) r.info.emplace_back(b.data());
   ex_close(exoid);
   return r;
@@ -356,7 +356,7 @@ TEST_F(ExodusMeshTest, EveryFileOfASeriesCarriesTitleRecordsAndGlobals) {
     EXPECT_THROW(writer.write(2, b, 0.3, {filled(8, 0.0), filled(8, 0.0)}, {filled(3, 0.0)}, {filled(3, 0.0)}, {1.0}),
                  std::logic_error);
   }
-  for (const std::string file : {path("out.e"), path("out.e-s.0001")}) {
+  for (const std::string& file : {path("out.e"), path("out.e-s.0001")}) {
     const Records r = recordsOf(file);
     EXPECT_EQ(r.title, "signorini: membrane") << file;
     ASSERT_EQ(r.qa.size(), 4u);

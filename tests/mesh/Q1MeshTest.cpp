@@ -66,7 +66,7 @@ void expectDirectNumberingEqualsLnodes(const test::TestMesh& tm, bool acrossRank
   int totals[2] = {hanging, hangingOnOthers}, global[2];
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 2, totals, global);
   EXPECT_GT(global[0], 16);
-  if (acrossRanks) EXPECT_GT(global[1], 0) << "no hanging corner depends on another rank's node";
+  if (acrossRanks) { EXPECT_GT(global[1], 0) << "no hanging corner depends on another rank's node"; }
   ASSERT_EQ(direct.boundaryEdges().size(), lnodes.boundaryEdges().size());
   for (size_t i = 0; i < direct.boundaryEdges().size(); ++i) {
     const auto &p = direct.boundaryEdges()[i], &q = lnodes.boundaryEdges()[i];
@@ -80,7 +80,7 @@ void expectDirectNumberingEqualsLnodes(const test::TestMesh& tm, bool acrossRank
   const GO firstOwned = direct.ownedMap()->getMinGlobalIndex();
   std::vector<double> mine(3 * overlap.getNodeNumElements());
   for (LO i = 0; i < static_cast<LO>(overlap.getNodeNumElements()); ++i) {
-    if (i < owned) EXPECT_EQ(overlap.getGlobalElement(i), firstOwned + i);
+    if (i < owned) { EXPECT_EQ(overlap.getGlobalElement(i), firstOwned + i); }
     mine[3 * i] = static_cast<double>(overlap.getGlobalElement(i));
     mine[3 * i + 1] = direct.nodeCoords()[i][0];
     mine[3 * i + 2] = direct.nodeCoords()[i][1];

@@ -131,8 +131,8 @@ TEST(TemporalRegularisation, MovingRefinementOverSixStepsIsRegularisedBothWays) 
     // Each step was coarse where a neighbour was fine, so regularising had to refine it.
     EXPECT_FALSE(test::containsRefinement(*before[n], *steps[n])) << "step " << n;
     EXPECT_LE(test::maxHangingNodesPerEdge(*steps[n]), 1) << "step " << n;
-    if (n > 0) EXPECT_LE(test::maxCoarserThanOverlapping(*steps[n], *steps[n - 1]), 1) << "against step " << n - 1;
-    if (n + 1 < numSteps) EXPECT_LE(test::maxCoarserThanOverlapping(*steps[n], *steps[n + 1]), 1) << "against step " << n + 1;
+    if (n > 0) { EXPECT_LE(test::maxCoarserThanOverlapping(*steps[n], *steps[n - 1]), 1) << "against step " << n - 1; }
+    if (n + 1 < numSteps) { EXPECT_LE(test::maxCoarserThanOverlapping(*steps[n], *steps[n + 1]), 1) << "against step " << n + 1; }
   }
 }
 
@@ -184,7 +184,7 @@ TEST(TemporalRegularisation, SkippingCheckedPairsGivesThePlainAlgorithmsMeshes) 
       }
     }
     EXPECT_GE(forward, 1) << numSteps << " steps";
-    if (numSteps == 8) EXPECT_GE(backward, 3);
+    if (numSteps == 8) { EXPECT_GE(backward, 3); }
     std::vector<mesh::Forest*> seq;
     for (auto& f : skipping) seq.push_back(f.get());
     const int checks = mesh::regulariseSequence(seq);
@@ -229,8 +229,8 @@ TEST(TemporalRegularisation, LevelExcessByMergeEqualsTheOverlap) {
       positive += merged[e] > 0;
       negative += merged[e] < 0;
     }
-    if (from != to) EXPECT_GT(positive, 0);
-    if (from != to) EXPECT_GT(negative, 0);
+    if (from != to) { EXPECT_GT(positive, 0); }
+    if (from != to) { EXPECT_GT(negative, 0); }
   }
 }
 

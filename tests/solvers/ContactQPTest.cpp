@@ -181,7 +181,7 @@ TEST(ContactCoupling, LoneAndOddUnrefinedFacesJoinASegment) {
     EXPECT_TRUE(intervals == c.up || intervals == c.down) << c.trees << " trees, segments in units of 1/2:" << got.str();
     for (size_t i = 0; i < m.boundaryEdges().size(); ++i)
       if (m.boundaryEdges()[i].x[0][0] == 1.0 && m.boundaryEdges()[i].x[1][0] == 1.0)
-        EXPECT_GE(B.localEdgeSegment()[i], 0) << "a contact edge without a segment";
+        { EXPECT_GE(B.localEdgeSegment()[i], 0) << "a contact edge without a segment"; }
     Vector one(m.ownedMap());
     one.putScalar(1.0);
     const auto colSums = B.applyTranspose(one);
@@ -462,7 +462,6 @@ TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
   const double obstacleHeight = std::get<0>(GetParam());
   const PushedSquare square;
   const auto& m = square.m;
-  const auto& asmb = square.asmb;
   const auto& A = square.A;
   const auto& B = square.B;
   const auto& F = square.F;
@@ -514,7 +513,7 @@ TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
     for (double l : reference) scale = std::max(scale, std::abs(l));
     for (int j = 0; j < ns; ++j) EXPECT_NEAR(lambda[j], reference[j], 1e-7 * std::max(scale, 1e-300)) << "segment " << j;
     EXPECT_EQ(res.active, activeRef);
-    if (warm) EXPECT_EQ(res.activeSetIterations, 1);
+    if (warm) { EXPECT_EQ(res.activeSetIterations, 1); }
     // Independent KKT check.
     Vector u2(m.ownedMap());
     const auto G2 = square.gaps(solver, gbar, lambda, u2);
@@ -529,9 +528,9 @@ TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
     EXPECT_LT(u2.normInf(), 1e-8);
   }
   // The cases cover no contact, partial contact and full contact.
-  if (obstacleHeight < -10) EXPECT_EQ(activeRef, 0);
-  if (obstacleHeight == -1.6) EXPECT_TRUE(activeRef > 0 && activeRef < ns);
-  if (obstacleHeight > -1) EXPECT_EQ(activeRef, ns);
+  if (obstacleHeight < -10) { EXPECT_EQ(activeRef, 0); }
+  if (obstacleHeight == -1.6) { EXPECT_TRUE(activeRef > 0 && activeRef < ns); }
+  if (obstacleHeight > -1) { EXPECT_EQ(activeRef, ns); }
 }
 
 // Whatever the KKT tolerance, down to the smallest allowed, a result that is returned satisfies the
@@ -574,7 +573,7 @@ TEST(ContactQP, ReturnsOnlyResultsWithinItsTolerance) {
           const double gap = G2[j] / B.segmentLength()[j];
           EXPECT_LE(lambda[j], 0.0) << what.str() << ", segment " << j;
           EXPECT_GE(gap, -gapTolerance) << what.str() << ", segment " << j;
-          if (lambda[j] < 0) EXPECT_LE(std::abs(gap), gapTolerance) << what.str() << ", segment " << j;
+          if (lambda[j] < 0) { EXPECT_LE(std::abs(gap), gapTolerance) << what.str() << ", segment " << j; }
         }
       }
     }

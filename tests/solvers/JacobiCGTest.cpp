@@ -85,7 +85,7 @@ void expectFieldsTogetherEqualTheirOwnSolves(Arithmetic arithmetic) {
     s = std::make_unique<System>();
   }
   const test::ReproducibleScope scope(reproducible);
-  if (reproducible) ASSERT_EQ(core::hasCanonicalRowOrder(*s->A), arithmetic == Arithmetic::registeredOrder);
+  if (reproducible) { ASSERT_EQ(core::hasCanonicalRowOrder(*s->A), arithmetic == Arithmetic::registeredOrder); }
   const auto map = s->A->getRangeMap();
   constexpr int kFields = 5;
   std::vector<RCP<Vector>> b, x, single;
@@ -122,7 +122,7 @@ void expectFieldsTogetherEqualTheirOwnSolves(Arithmetic arithmetic) {
   EXPECT_EQ(iterations, singleIterations);
   for (int f = 0; f < kFields; ++f) {
     const auto together = x[f]->getData(), alone = single[f]->getData();
-    for (size_t i = 0; i < together.size(); ++i) ASSERT_EQ(together[i], alone[i]) << "field " << f << ", entry " << i;
+    for (long i = 0; i < together.size(); ++i) ASSERT_EQ(together[i], alone[i]) << "field " << f << ", entry " << i;
   }
   // Too few iterations: the group throws as each solve alone does; a nan in a right-hand side
   // iterates and throws too (it is not taken as converged).
