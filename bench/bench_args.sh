@@ -20,3 +20,22 @@ build_and_describe() {
   echo "benchmark of $(git describe --always --dirty 2>/dev/null || echo 'an unknown commit'), build/src/signorini of" \
     "$(date -r build/src/signorini '+%Y-%m-%d %H:%M'), $np rank(s), on $(nproc) core(s), $(date '+%Y-%m-%d %H:%M')"
 }
+
+# Sets np and repeats from "[-np N] [-r R]" (positive integers); anything else stops with $1.
+parse_ranks_and_repeats() {
+  local usage=$1
+  shift
+  np=1
+  repeats=1
+  while [ $# -gt 0 ]; do
+    if [ $# -ge 2 ] && [ "$1" = "-np" ] && [[ "$2" =~ ^[1-9][0-9]*$ ]]; then
+      np=$2
+    elif [ $# -ge 2 ] && [ "$1" = "-r" ] && [[ "$2" =~ ^[1-9][0-9]*$ ]]; then
+      repeats=$2
+    else
+      echo "$usage (got: $*)" >&2
+      exit 2
+    fi
+    shift 2
+  done
+}

@@ -3,14 +3,15 @@
 of a whole adaptive step (new mesh and transfer, assembly, contact, estimate + mark, output) in units
 of one unconstrained solve of the same size (time_unconstrained: the step's own solver on its
 matrix, right-hand side and start, timed right after the contact solve; needs Output/Measure Contact
-Overhead = true). Usage: summarize_adaptive.py BASE"""
+Overhead = true). Usage: summarize_adaptive.py BASE, or summarize_adaptive.py --ratios BASE... (the
+last cycle's cost of each run, their median and range, and the whole runs' wall times)"""
 import os
 import sys
 import time
 
 import numpy as np
 
-if len(sys.argv) != 2:
+if len(sys.argv) < 2 or (sys.argv[1] != "--ratios" and len(sys.argv) != 2) or sys.argv[1:] == ["--ratios"]:
     sys.exit(__doc__)
 base = sys.argv[1]
 
@@ -21,6 +22,28 @@ def table(name):
     except OSError as e:
         sys.exit(f"{name}: {e.strerror or e}")
 
+
+def steps_and_units(name):
+    """The step table's rows after step 0, each step's cost and its unconstrained solve [s]."""
+    s = table(name)[1:]
+    if "time_unconstrained" not in (s.dtype.names or ()) or not (s["time_unconstrained"] > 0).all():
+        sys.exit(f"{name}: no unconstrained solve timed in every step: run with Output/Measure Contact Overhead = true")
+    step = s["time_remesh"] + s["time_assembly"] + s["time_contact"] + s["time_estimate"] + s["time_output"]
+    return s, step, s["time_unconstrained"]
+
+
+def last_cycle_ratio(base):
+    _, step, free = steps_and_units(base + ".steps.csv")
+    return step.sum() / free.sum()
+
+
+if sys.argv[1] == "--ratios":
+    ratios = [last_cycle_ratio(b) for b in sys.argv[2:]]
+    walls = [table(b + ".cycles.csv")["wall_seconds"].sum() for b in sys.argv[2:]]
+    print(f"a whole adaptive step costs {np.median(ratios):.1f} unconstrained solves (median of {len(ratios)} runs; "
+          f"{min(ratios):.1f}-{max(ratios):.1f}: " + ", ".join(f"{r:.1f}" for r in ratios) + f"); whole run "
+          f"{np.median(walls):.1f} s ({min(walls):.1f}-{max(walls):.1f} s)")
+    sys.exit(0)
 
 c = table(base + ".cycles.csv")
 print(f"{base}.cycles.csv, written {time.strftime('%Y-%m-%d %H:%M', time.localtime(os.path.getmtime(base + '.cycles.csv')))}")
@@ -41,11 +64,7 @@ for row in c:
 
 
 def step_cost(name, label):
-    s = table(name)[1:]
-    if "time_unconstrained" not in (s.dtype.names or ()) or not (s["time_unconstrained"] > 0).all():
-        sys.exit(f"{name}: no unconstrained solve timed in every step: run with Output/Measure Contact Overhead = true")
-    step = s["time_remesh"] + s["time_assembly"] + s["time_contact"] + s["time_estimate"] + s["time_output"]
-    free = s["time_unconstrained"]
+    s, step, free = steps_and_units(name)
     ratio = step.sum() / free.sum()
     spread = np.percentile(free, 90) / np.median(free)
     print(f"{label}: mean unknowns per step {s['dofs'].mean():.0f}; mean per step: new mesh (numbering, matrices, "
