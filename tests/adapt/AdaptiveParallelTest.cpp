@@ -105,6 +105,16 @@ void expectCycleTotalsMatchSteps(const Result& r) {
     // (Adaptivity/Compact Meshes), below the 24 bytes of one p4est quadrant.
     EXPECT_GE(c[r.cycles.column("bytes_per_cell")], 1.0) << "cycle " << l;
     if (l > 0) { EXPECT_LT(c[r.cycles.column("bytes_per_cell")], 24.0) << "cycle " << l; }
+    // The phases are exclusive (core::PhaseTimers): with "other" they make up the cycle's wall
+    // time (up to the rounding of the CSV's sums), and none is negative.
+    double phases = 0;
+    for (const char* name : {"time_remesh_transfer", "time_assembly", "time_preconditioner", "time_contact",
+                             "time_estimate_mark", "time_output", "time_regularise", "time_unconstrained",
+                             "time_other"}) {
+      EXPECT_GE(c[r.cycles.column(name)], 0.0) << name << ", cycle " << l;
+      phases += c[r.cycles.column(name)];
+    }
+    EXPECT_NEAR(phases, c[r.cycles.column("wall_seconds")], 1e-9 + 1e-12 * phases) << "cycle " << l;
   }
   EXPECT_EQ(row, r.steps.rows.size());
 }
