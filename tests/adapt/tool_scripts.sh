@@ -8,7 +8,8 @@
 # its last number), a bad argument and a run of the wrong kind (compare_runs.py: runs of other
 # final times; plot_bar.py: a scalar membrane run) with one line naming the problem, a non-zero exit
 # status and no traceback; tools/deck_from_exodus.py gives back the deck of a run from its Exodus
-# file, and that deck runs to the same step tables, bit for bit.
+# file, and that deck runs to the same step tables, bit for bit; tools/transfer_vs_coarsening.py
+# finds the energy kept to rounding wherever a step's mesh only refines its predecessor's.
 # Usage: tool_scripts.sh SIGNORINI SOURCE_DIR WORK_DIR
 set -uo pipefail
 signorini=$1 src=$2 work=$3
@@ -147,6 +148,18 @@ refuses first_bad_level "check_first_contact.py: error: argument initial_level: 
   "$py" "$tools/check_first_contact.py" "$work/membrane" x
 refuses first_cut "check_first_contact.py: error: $work/cut.steps.csv: not a complete table" \
   "$py" "$tools/check_first_contact.py" "$work/cut"
+# transfer_vs_coarsening.py: the transfer keeps the energy to rounding in the steps whose mesh only
+# refines its predecessor's (the L2 projection is exact there), on a run written in every step.
+refuses transfer_no_argument "transfer_vs_coarsening.py: error: the following arguments are required: base" \
+  "$py" "$tools/transfer_vs_coarsening.py"
+refuses transfer_cut "transfer_vs_coarsening.py: error: $work/cut.steps.csv: not a complete table" \
+  "$py" "$tools/transfer_vs_coarsening.py" "$work/cut"
+refuses transfer_not_every_step "transfer_vs_coarsening.py: error: $work/membrane: no mesh written at t = " \
+  "$py" "$tools/transfer_vs_coarsening.py" "$work/membrane"
+"$signorini" "${short[@]}" --set 'Adaptivity/Cycles=3' --set 'Output/Exodus Interval=1' --set 'Output/Basename=every' \
+  "$src/inputs/membrane.xml" > "$work/every.log" 2>&1 || { cat "$work/every.log"; fail "the run written in every step failed"; }
+"$py" "$tools/transfer_vs_coarsening.py" --check "$work/every" > "$work/transfer.log" 2>&1 ||
+  { cat "$work/transfer.log"; fail "a transfer onto a refinement of the mesh changed the energy"; }
 # compare_step_tables.py
 refuses tables_missing "compare_step_tables.py: error: $work/nothing.steps.csv: no such file" \
   "$py" "$tools/compare_step_tables.py" "$work/nothing" "$work/membrane"
