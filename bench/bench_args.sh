@@ -17,8 +17,14 @@ parse_ranks() {
 build_and_describe() {
   [ -n "${SIGNORINI_NO_BUILD:-}" ] || bash tools/build.sh > /dev/null
   [ -x build/src/signorini ] || { echo "no build/src/signorini: build first (bash tools/build.sh)" >&2; exit 2; }
-  echo "benchmark of $(git describe --always --dirty 2>/dev/null || echo 'an unknown commit'), build/src/signorini of" \
-    "$(date -r build/src/signorini '+%Y-%m-%d %H:%M'), $np rank(s), on $(nproc) core(s), $(date '+%Y-%m-%d %H:%M')"
+  echo "benchmark in the working tree of $(git describe --always --dirty 2>/dev/null || echo 'an unknown commit')," \
+    "build/src/signorini of $(date -r build/src/signorini '+%Y-%m-%d %H:%M'), $np rank(s), on $(nproc) core(s)," \
+    "$(date '+%Y-%m-%d %H:%M')"
+  local committed
+  committed=$(git log -1 --format=%ct 2>/dev/null || echo 0)
+  if [ "$(date -r build/src/signorini +%s)" -lt "$committed" ]; then
+    echo "note: build/src/signorini is older than the last commit (SIGNORINI_NO_BUILD): it may not be that code"
+  fi
 }
 
 # Sets np and repeats from "[-np N] [-r R]" (positive integers); anything else stops with $1.

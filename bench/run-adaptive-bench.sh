@@ -21,7 +21,7 @@ run() {  # basename, extra --set arguments
   mpirun --allow-run-as-root --oversubscribe -np "$np" ./build/src/signorini --output-dir out/bench \
     --set "Output/Basename=$name" --set "Output/Measure Contact Overhead=true" "$@" inputs/membrane.xml
 }
-run "adaptive.np$np" | grep -E "cycle|done"
+run "adaptive.np$np" | grep -E "^signorini: (cycle|.* done)"
 /usr/bin/python3 bench/summarize_adaptive.py out/bench/adaptive.np$np
 # What the step tables' transfer-energy columns cost (one more projected field per mesh change):
 # the same run without them.

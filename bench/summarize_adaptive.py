@@ -48,7 +48,7 @@ if sys.argv[1] == "--ratios":
 c = table(base + ".cycles.csv")
 print(f"{base}.cycles.csv, written {time.strftime('%Y-%m-%d %H:%M', time.localtime(os.path.getmtime(base + '.cycles.csv')))}")
 # The phases are exclusive; "other" is what none covers (predictors, the Newmark update, the
-# transfer energies, the step table's rows). "unconstrained" is the measurement itself.
+# transfer energies, a later cycle's initial state). "unconstrained" is the measurement itself.
 phases = ["time_remesh_transfer", "time_assembly", "time_preconditioner", "time_contact", "time_estimate_mark",
           "time_output", "time_regularise", "time_unconstrained", "time_other"]
 missing = [p for p in phases if p not in (c.dtype.names or ())]

@@ -7,7 +7,8 @@ if(NOT MPIEXEC_EXECUTABLE)
   message(FATAL_ERROR "No MPI launcher found (MPIEXEC_EXECUTABLE): set -DMPIEXEC_EXECUTABLE=/path/to/mpiexec, "
     "or -DSIGNORINI_ENABLE_TESTS=OFF.")
 endif()
-# Decided once per launcher: a user's MPIEXEC_PREFLAGS (even empty) is kept afterwards.
+# Decided once per launcher: a user's MPIEXEC_PREFLAGS (even empty) is kept afterwards; on the first
+# configure an empty one counts as unset (FindMPI leaves it empty), so with Open MPI it gets the flags.
 if(NOT "${SIGNORINI_MPIEXEC_CHECKED}" STREQUAL "${MPIEXEC_EXECUTABLE}")
   execute_process(COMMAND ${MPIEXEC_EXECUTABLE} --version OUTPUT_VARIABLE _signorini_version
     ERROR_VARIABLE _signorini_version RESULT_VARIABLE _signorini_rc TIMEOUT 20)
@@ -33,7 +34,7 @@ message(STATUS "Tests run MPI as: ${_signorini_shown}")
 # The launcher for the test scripts (tests/driver/*.sh and run_bad_deck.cmake, tests/adapt/*.sh),
 # one argument: executable|numproc flag|preflags..., separated by "|".
 unset(SIGNORINI_MPIEXEC CACHE)  # the find_program result of earlier versions
-string(JOIN "|" SIGNORINI_MPIEXEC ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${SIGNORINI_MPIEXEC_PREFLAGS})
+string(JOIN "|" SIGNORINI_MPIEXEC "${MPIEXEC_EXECUTABLE}" "${MPIEXEC_NUMPROC_FLAG}" ${SIGNORINI_MPIEXEC_PREFLAGS})
 
 # signorini_add_gtest(NAME SOURCES ... LIBS ... [NP n] [LABELS ...]): a GoogleTest executable
 # registered with ctest, run on n MPI ranks (default 1).

@@ -21,7 +21,8 @@ function(signorini_kokkos_flags out flags)
     elseif(w MATCHES "^(-x|-Xcompiler|-Xcudafe|-Xopenmp-target|-Xsycl-target-backend|-arch)$")
       set(pending "${w}")
     elseif(w MATCHES "^-f?openmp|^-[qQ]openmp|^-mp(=.*)?$|^-pthreads?$"                  # OpenMP, threads
-           OR w MATCHES "^-m(arch|tune|cpu)=|^-mavx|^-x(AVX|CORE-|MIC-|SSE|HOST$)|^-tp="    # architecture
+           OR w MATCHES "^-m(arch|tune|cpu)=|^-mavx|^-x(AVX|CORE-|MIC-|SSE|HOST$|Host$)|^-tp=" # architecture
+           OR w MATCHES "^-Xcompiler=|^-Xcudafe="                                           # nvcc, one word
            OR w MATCHES "^-arch=|^--?cuda-gpu-arch=|^--?(amdgpu-target|offload-arch)="      # GPU architecture
            OR w MATCHES "^--?expt-|^--?extended-lambda$|^-Wext-lambda|^--cuda-path="        # CUDA
            OR w MATCHES "^--?relocatable-device-code|^-rdc=|^-f(no-)?(cuda|gpu)-rdc$"       # CUDA/HIP rdc

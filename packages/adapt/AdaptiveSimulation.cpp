@@ -188,8 +188,7 @@ dynamics::RunSummary AdaptiveSimulation::locatingFailures(int cycle, Pass pass) 
   try {
     return pass();
   } catch (const core::SolverError& e) {
-    const std::string note = sim_->problem().nearIncompressibility();
-    throw core::SolverError(whereInRun(cycle) + e.what() + (note.empty() ? "" : "; " + note));
+    throw core::SolverError(whereInRun(cycle) + e.what());
   } catch (const core::UserError& e) {
     throw core::UserError(whereInRun(cycle) + e.what());
   }
@@ -456,8 +455,8 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       }
       const double regularise = std::chrono::duration<double>(std::chrono::steady_clock::now() - tr0).count();
       phaseSeconds["regularise"] += regularise;
-      // The phases are exclusive (core::PhaseTimers); what none of them covers (predictors, the
-      // Newmark update, the transfer energies, the step table's row, storing the meshes) is "other".
+      // The phases are exclusive (core::PhaseTimers); what none of them covers (the predictors, the
+      // Newmark update, the transfer energies, a later cycle's initial state) is "other".
       double phases = 0;
       for (const auto& entry : last.phaseSeconds) phases += entry.second;
       if (cyclesCsv)

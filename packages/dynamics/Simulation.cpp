@@ -863,7 +863,6 @@ std::string Simulation::coarseCorrectionMesh() const {
 int Simulation::currentStep() const { return impl_->currentStep; }
 double Simulation::timeStep() const { return impl_->newmark->timeStep; }
 RCP<const Comm> Simulation::comm() const { return impl_->comm; }
-const fem::ProblemData& Simulation::problem() const { return *impl_->problem; }
 const std::string& Simulation::outputBase() const { return impl_->outputBase; }
 
 void Simulation::checkMeshFits(double globalCells, const std::string& cause, double storedCells) const {
@@ -1111,13 +1110,14 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       Vector F(owned), load(owned);
       double projectionSeconds = 0;  // contact work, booked as such
       if (d->projection) {  // the predictor projected onto the admissible set in the mass norm
+        auto& massSolver = I.massSolver(*d);  // its set-up on a new mesh is the preconditioner's phase
         const auto tP0 = std::chrono::steady_clock::now();
         auto scope = I.timers.scope("contact");
         Vector Mpred(owned);
         core::apply(*d->M, pred, Mpred);
         d->assembler->zeroDirichlet(Mpred);
         std::vector<double> mu(d->coupling->numSegments(), 0.0), gapPred;
-        d->projection->solve(I.massSolver(*d), *d->coupling, Mpred, d->coupling->weightedObstacle(I.problem->obstacle, t),
+        d->projection->solve(massSolver, *d->coupling, Mpred, d->coupling->weightedObstacle(I.problem->obstacle, t),
                              mu, pred, gapPred);
         projectionSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tP0).count();
       }
@@ -1133,7 +1133,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       }
       const auto tA1 = std::chrono::steady_clock::now();
       solvers::ContactQPResult qr;
-      {
+      try {
         auto scope = I.timers.scope("contact");
         u->assign(pred);
         d->assembler->zeroDirichlet(*u);
@@ -1146,6 +1146,10 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
           qr.linearSolves = 1;
           qr.linearIterations = static_cast<int>(d->solver->totalIterations() - its0);
         }
+      } catch (const core::SolverError& e) {  // the step's system A: near incompressibility is a likely cause
+        const std::string note = I.problem->nearIncompressibility();
+        if (note.empty() || std::string(e.what()).rfind("linear solver ", 0) != 0) throw;
+        throw core::SolverError(e.what() + ("; " + note));
       }
       const auto tA2 = std::chrono::steady_clock::now();
       double tFree = 0;

@@ -114,7 +114,6 @@ class Simulation {
   /// preconditioner's coarse correction, if the initial mesh uses it (else empty).
   std::string coarseCorrectionMesh() const;
   RCP<const Comm> comm() const;
-  const fem::ProblemData& problem() const;  ///< the deck's "Problem" sublist, read
   const std::string& outputBase() const;  ///< output folder + "/" + basename
   /// Creates the output folder (and its parents) if it is missing; run() does this first, in its
   /// staging scope, so that a failed run removes them again (io::removeOnFailure). The

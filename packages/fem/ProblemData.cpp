@@ -176,10 +176,10 @@ double ProblemData::waveSpeed() const {
 
 void ProblemData::checkFiniteOverTime(const mesh::Q1Mesh& mesh, double timeStep, int steps) const {
   using Points = std::vector<std::array<double, 2>>;
-  Points cellPoints, neumannPoints, contactPoints;
+  Points loadPoints, errorPoints, neumannPoints, contactPoints;
   struct Sampled {
     const core::Expression* f;
-    const Points* points;
+    Points* points;
     const char* where;  // appended to the message, as the step's sampler does
   };
   std::vector<Sampled> work;
@@ -187,49 +187,74 @@ void ProblemData::checkFiniteOverTime(const mesh::Q1Mesh& mesh, double timeStep,
     for (int c = 0; c < list.size(); ++c)
       if (!list[c].isTimeIndependent()) work.push_back({&list[c], &points, where});
   };
-  add(bodyForce, cellPoints, "");
-  if (exactSolution) add(*exactSolution, cellPoints, "");
+  add(bodyForce, loadPoints, "");
+  if (exactSolution) add(*exactSolution, errorPoints, "");
   if (neumannMask) add(neumannData, neumannPoints, "");
   if (hasObstacle && contactMask && !obstacle.isTimeIndependent())
     work.push_back({&obstacle, &contactPoints, " on the contact boundary"});
-  int any = work.empty() ? 0 : 1, anywhere = 0;  // the expressions are the same on every rank
-  Teuchos::reduceAll(*mesh.comm(), Teuchos::REDUCE_MAX, any, Teuchos::outArg(anywhere));
-  if (!anywhere) return;
+  if (work.empty()) return;  // the expressions are the same on every rank
+  auto needed = [&](const Points& points) {
+    return std::any_of(work.begin(), work.end(), [&](const Sampled& w) { return w.points == &points; });
+  };
 
+  // The points of the step's samplers on this mesh: the loads at the cells' 2x2 Gauss points,
+  // the error norms at their 3x3 ones with the central differences' neighbours
+  // (Assembler::errorNorms), the boundary data at their edges' Gauss points.
   const auto& X = mesh.cornerCoordsHost;
-  for (LO e = 0; e < mesh.numLocalCells(); ++e)
-    for (int q = 0; q < 4; ++q) {
-      double N[4], ds[4], dr[4];
-      q1Shape(gauss2Point(q & 1), gauss2Point(q >> 1), N, ds, dr);
-      std::array<double, 2> x{0, 0};
-      for (int c = 0; c < 4; ++c) x[0] += N[c] * X(e, c, 0), x[1] += N[c] * X(e, c, 1);
-      cellPoints.push_back(x);
-    }
   constexpr double gauss3[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
+  const double eps = 1e-6 * mesh.hMin();
+  auto pointOf = [&](LO e, double s, double r) {
+    double N[4], ds[4], dr[4];
+    q1Shape(s, r, N, ds, dr);
+    std::array<double, 2> x{0, 0};
+    for (int c = 0; c < 4; ++c) x[0] += N[c] * X(e, c, 0), x[1] += N[c] * X(e, c, 1);
+    return x;
+  };
+  for (LO e = 0; e < mesh.numLocalCells(); ++e) {
+    if (needed(loadPoints))
+      for (int q = 0; q < 4; ++q) loadPoints.push_back(pointOf(e, gauss2Point(q & 1), gauss2Point(q >> 1)));
+    if (needed(errorPoints))
+      for (double s : gauss3)
+        for (double r : gauss3) {
+          const auto x = pointOf(e, s, r);
+          for (const auto& d : {std::array<double, 2>{0, 0}, {eps, 0}, {-eps, 0}, {0, eps}, {0, -eps}})
+            errorPoints.push_back({x[0] + d[0], x[1] + d[1]});
+        }
+  }
   for (const auto& be : mesh.boundaryEdges()) {
-    if (be.segments & neumannMask)
+    if ((be.segments & neumannMask) && needed(neumannPoints))
       for (int g = 0; g < 2; ++g) neumannPoints.push_back(be.at(gauss2Point(g)));
-    if (be.segments & contactMask)
+    if ((be.segments & contactMask) && needed(contactPoints))
       for (double w : gauss3) contactPoints.push_back(be.at(w));
   }
 
+  // The first sample at step n that is not a finite number, with its key and place ("" if none).
+  auto firstBadAt = [&](int n) {
+    std::string bad;
+    for (const auto& w : work)
+      for (const auto& x : *w.points) {
+        w.f->sample(x[0], x[1], n * timeStep, bad);
+        if (!bad.empty()) return bad + w.where;
+      }
+    return bad;
+  };
   long long local = 0, largest = 0;  // samples per time on this rank, and on the busiest
   for (const auto& w : work) local += static_cast<long long>(w.points->size());
   Teuchos::reduceAll(*mesh.comm(), Teuchos::REDUCE_MAX, local, Teuchos::outArg(largest));
-  const int stride = static_cast<int>(std::max(1LL, (steps * largest + 19999999) / 20000000));
+  // Every stride-th step (and the last); after a hit, the steps skipped before it, so that the
+  // step named is this rank's earliest.
+  const long long budget = 20000000;
+  const int stride = static_cast<int>(std::min<long long>(steps, std::max(1LL, (steps * largest + budget - 1) / budget)));
   std::string bad;
   int firstBad = steps + 1;
-  for (int n = 1; n <= steps && bad.empty(); n = (n < steps && n + stride > steps) ? steps : n + stride)
-    for (const auto& w : work) {
-      for (const auto& x : *w.points) {
-        w.f->sample(x[0], x[1], n * timeStep, bad);
-        if (!bad.empty()) break;
-      }
-      if (!bad.empty()) {
-        bad += w.where;
-        firstBad = n;
-        break;
-      }
+  for (int n = 1, previous = 0; n <= steps && bad.empty(); previous = n, n = n < steps ? std::min(n + stride, steps) : n + 1)
+    if (!(bad = firstBadAt(n)).empty()) {
+      firstBad = n;
+      for (int m = previous + 1; m < n; ++m)
+        if (auto earlier = firstBadAt(m); !earlier.empty()) {
+          bad = earlier, firstBad = m;
+          break;
+        }
     }
   int earliest = firstBad;
   Teuchos::reduceAll(*mesh.comm(), Teuchos::REDUCE_MIN, firstBad, Teuchos::outArg(earliest));
@@ -247,7 +272,7 @@ std::string ProblemData::nearIncompressibility(double lameLambda, double lameMu)
   const double nu = lameLambda / (2 * (lameLambda + lameMu));
   std::ostringstream os;
   os << std::setprecision(8) << "Problem/Poisson's Ratio = " << nu << " is close to 1/2 (lambda / mu = "
-     << std::setprecision(3) << lameLambda / lameMu
+     << std::fixed << std::setprecision(0) << lameLambda / lameMu << std::defaultfloat
      << "): bilinear elements lock (the displacement comes out too small), and the condition number of the "
         "systems grows with lambda / mu, so that the linear solves need more iterations and may reach Linear "
         "Solver/Maximum Iterations";

@@ -44,13 +44,14 @@ struct ProblemData {
   /// Fastest wave speed: sqrt(kappa / rho), or the P-wave speed sqrt((lambda + 2 mu) / rho).
   double waveSpeed() const;
   /// Samples the data that depend on t at the times n k, n = 1..\p steps (\p timeStep k), at the
-  /// points where a step on \p mesh samples them (body force and exact solution at the cells' 2x2
-  /// Gauss points, Neumann data and the obstacle at their edges' Gauss points), so that a value
-  /// that is not a finite number later in the run is found at set-up (and by --check). Throws
-  /// core::UserError with the message a step would give at the earliest such time (every rank
-  /// alike). Beyond 2e7 samples per rank, every m-th step is sampled (and the last). Collective.
+  /// points where a step on \p mesh samples them (body force at the cells' 2x2 Gauss points, the
+  /// exact solution where Assembler::errorNorms does, Neumann data and the obstacle at their
+  /// edges' Gauss points), so that a value that is not a finite number later in the run is found
+  /// at set-up (and by --check). Throws core::UserError with the message a step would give at the
+  /// earliest such step (every rank alike). Beyond 2e7 samples per rank, every m-th step is sampled
+  /// (and the last), and after a hit the steps skipped before it. Collective.
   void checkFiniteOverTime(const mesh::Q1Mesh& mesh, double timeStep, int steps) const;
-  /// For elasticity with Poisson's ratio near 1/2 (lambda / mu >= 100, nu >= 0.495): why the
+  /// For elasticity with Poisson's ratio near 1/2 (lambda / mu >= 100, nu >= 100/202 = 0.49505): why the
   /// results lock and the linear solves slow down or fail, naming Problem/Poisson's Ratio; empty
   /// otherwise. Printed as a warning at set-up and appended to a failing solve's message.
   std::string nearIncompressibility() const;

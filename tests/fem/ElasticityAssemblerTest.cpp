@@ -213,5 +213,5 @@ TEST(ElasticityMaterial, NearIncompressibilityIsNamedFromLambdaOverMu100On) {
   const std::string note = material(0.4951);
   EXPECT_NE(note.find("Problem/Poisson's Ratio = 0.4951 is close to 1/2 (lambda / mu = 101)"), std::string::npos)
       << note;
-  EXPECT_NE(material(0.4999999).find("lambda / mu = 5e+06"), std::string::npos);
+  EXPECT_NE(material(0.4999999).find("lambda / mu = 4999999)"), std::string::npos);
 }
