@@ -1,4 +1,5 @@
-# ctest script: installs the build into a scratch prefix and builds/runs the consumer against it.
+# ctest script: installs the build into a scratch prefix, builds and runs the consumer against it, and
+# checks the installed paper deck with the installed executable.
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD} --prefix ${WORK}/prefix RESULT_VARIABLE rc OUTPUT_QUIET)
 if(rc)
   message(FATAL_ERROR "install failed")
@@ -15,4 +16,12 @@ endif()
 execute_process(COMMAND ${WORK}/build/consumer RESULT_VARIABLE rc)
 if(rc)
   message(FATAL_ERROR "the consumer failed")
+endif()
+# The installed executable checks the installed paper deck from another folder (its libraries
+# through the RUNPATH, the deck from share/signorini/inputs).
+execute_process(COMMAND ${WORK}/prefix/bin/signorini --check --output-dir ${WORK}/out
+                        ${WORK}/prefix/share/signorini/inputs/membrane.xml
+                WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE out)
+if(rc OR NOT out MATCHES "membrane[.]xml is valid")
+  message(FATAL_ERROR "the installed signorini does not check the installed membrane.xml:\n${out}")
 endif()
