@@ -2,6 +2,12 @@
 # Installs every Debian 12 package signorini needs to build, test and plot.
 # Idempotent and non-interactive; run as root (or with sudo available).
 set -euo pipefail
+if ! command -v dpkg-query > /dev/null || ! command -v apt-get > /dev/null; then
+  echo "install-deps: this script installs Debian packages (dpkg and apt-get); on another system install" \
+    "Trilinos 13.2, p4est, ExodusII, muParser, GoogleTest and MPI yourself and configure with cmake" \
+    "(README: \"Building against another Trilinos\")" >&2
+  exit 1
+fi
 packages=(
   build-essential cmake git pkg-config
   trilinos-all-dev libptscotch-dev
