@@ -56,6 +56,7 @@ function(signorini_add_gtest name)
     set(test_name ${name}_np${np})
     add_test(NAME ${test_name}
       COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} ${SIGNORINI_MPIEXEC_PREFLAGS} $<TARGET_FILE:${name}>)
-    set_tests_properties(${test_name} PROPERTIES TIMEOUT ${T_TIMEOUT} PROCESSORS ${np} LABELS "${T_LABELS}")
+    # Every GoogleTest executable is also labelled "unit" (ctest -L unit: the library tests alone).
+    set_tests_properties(${test_name} PROPERTIES TIMEOUT ${T_TIMEOUT} PROCESSORS ${np} LABELS "unit;${T_LABELS}")
   endforeach()
 endfunction()
