@@ -18,7 +18,7 @@ rm -f out/bench/adaptive*.np"$np".* out/bench/adaptive*.np"$np"-r*.*  # nothing 
 run() {  # basename, extra --set arguments
   local name=$1
   shift
-  mpirun --allow-run-as-root --oversubscribe -np "$np" ./build/src/signorini --output-dir out/bench \
+  "${mpirun[@]}" ./build/src/signorini --output-dir out/bench \
     --set "Output/Basename=$name" --set "Output/Measure Contact Overhead=true" "$@" inputs/membrane.xml
 }
 run "adaptive.np$np" | grep -E "^signorini: (cycle|.* done)"

@@ -16,6 +16,6 @@ name=$(basename "$deck" .xml).np$np
 mkdir -p out/bench
 log=out/bench/$name.log
 rm -f "out/bench/$name".*  # nothing of an earlier run can be summarised as this one's
-mpirun --allow-run-as-root --oversubscribe -np "$np" ./build/src/signorini --output-dir out/bench \
+"${mpirun[@]}" ./build/src/signorini --output-dir out/bench \
   --set "Output/Basename=$name" --set "Output/Measure Contact Overhead=true" "$deck" | tee "$log"
 /usr/bin/python3 bench/summarize.py "out/bench/$name.steps.csv" "$log"
