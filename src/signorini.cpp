@@ -15,7 +15,11 @@
 #include <string>
 #include <vector>
 
+#include <Kokkos_Macros.hpp>
 #include <Tpetra_Core.hpp>
+#include <Trilinos_version.h>
+#include <mpi.h>
+#include <p4est_config.h>
 
 #include "Allocator.hpp"
 #include "DeckReader.hpp"
@@ -36,7 +40,37 @@ const char* kUsage =
     "                            print what the run would do, and write no results\n"
     "  --output-dir DIR          write all output to DIR (overrides Output/Directory)\n"
     "  --set 'Sublist/key=value' override a deck entry (repeatable; validated like the deck)\n"
+    "  --version                 the versions of signorini and of the libraries it was built with\n"
     "  --help                    this text\n";
+
+/// "signorini 0.1.0" and the libraries this executable was built with (--version).
+std::string versions() {
+  std::ostringstream os;
+  os << "signorini " << SIGNORINI_VERSION << "\nTrilinos " << TRILINOS_VERSION_STRING << " (Kokkos devices:";
+#ifdef KOKKOS_ENABLE_SERIAL
+  os << " Serial";
+#endif
+#ifdef KOKKOS_ENABLE_OPENMP
+  os << " OpenMP";
+#endif
+#ifdef KOKKOS_ENABLE_THREADS
+  os << " Threads";
+#endif
+#ifdef KOKKOS_ENABLE_CUDA
+  os << " Cuda";
+#endif
+#ifdef KOKKOS_ENABLE_HIP
+  os << " HIP";
+#endif
+  os << "), p4est " << P4EST_VERSION;
+  char mpi[MPI_MAX_LIBRARY_VERSION_STRING];
+  int length = 0;
+  MPI_Get_library_version(mpi, &length);
+  std::string library(mpi, static_cast<size_t>(length));
+  library = library.substr(0, library.find_first_of(",\n"));  // "Open MPI v4.1.4"
+  os << ", MPI: " << library << "\n";
+  return os.str();
+}
 
 using signorini::core::ParameterList;
 
@@ -88,6 +122,12 @@ int main(int argc, char** argv) {
     out << kUsage;
     return 0;
   }
+  for (int i = 1; i < argc; ++i)
+    if (std::string(argv[i]) == "--version" && std::string(argv[i - 1]) != "--set" &&
+        std::string(argv[i - 1]) != "--output-dir") {
+      out << versions();
+      return 0;
+    }
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--print-parameters") {

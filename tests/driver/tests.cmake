@@ -247,6 +247,11 @@ signorini_add_driver_test(usage_kokkos_help EXIT 0
 signorini_add_driver_test(usage_help_short_with_kokkos_option EXIT 0
   ARGS --kokkos-disable-warnings -h
   REGEX "^usage: signorini [[]options[]]")
+# --version: signorini's version and the libraries it was built with, before any
+# deck is read (also with other options around it).
+signorini_add_driver_test(version EXIT 0
+  ARGS --set "Output/Basename=x" --version ${decks}/good.xml
+  REGEX "^signorini [0-9]+[.][0-9]+[.][0-9]+\nTrilinos [0-9.]+ [(]Kokkos devices:[ A-Za-z]+[)], p4est [0-9.]+, MPI: [A-Za-z]")
 
 # Batches: a failing deck does not stop the others, but the exit status says something failed.
 signorini_add_driver_test(batch_bad_then_good EXIT 1
