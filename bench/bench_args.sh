@@ -1,18 +1,5 @@
 # Shared by the bench scripts (sourced): the rank count and the build, with a record of what ran.
 
-# Sets np from "[-np N]" (N a positive integer); anything else stops with $1 (the usage line).
-parse_ranks() {
-  local usage=$1
-  shift
-  np=1
-  if [ $# -eq 2 ] && [ "$1" = "-np" ] && [[ "$2" =~ ^[1-9][0-9]*$ ]]; then
-    np=$2
-  elif [ $# -ne 0 ]; then
-    echo "$usage (got: $*)" >&2
-    exit 2
-  fi
-}
-
 # Builds build/src/signorini (unless SIGNORINI_NO_BUILD=1), sets mpirun (the launcher the build's
 # tests use: CMake's MPIEXEC_* cache entries, e.g. Open MPI's mpiexec -n N --oversubscribe
 # --allow-run-as-root) and says which code and how many ranks.
@@ -52,4 +39,13 @@ parse_ranks_and_repeats() {
     fi
     shift 2
   done
+}
+
+# Sets np from "[-np N]" (N a positive integer); anything else, -r too, stops with $1.
+parse_ranks() {
+  parse_ranks_and_repeats "$@"
+  if [ "$repeats" -ne 1 ]; then
+    echo "$1 (-r is for bench/run-adaptive-bench.sh)" >&2
+    exit 2
+  fi
 }
