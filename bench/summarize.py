@@ -28,7 +28,9 @@ print("mean seconds per step (all steps): assembly %.4f  contact solve %.4f  out
 free = s["time_unconstrained"]
 spread = np.percentile(free, 90) / np.median(free)
 print(f"unconstrained solve: median {np.median(free):.4f} s, 90th percentile {spread:.2f} times the median"
-      + (" (a busy machine? the ratios below are less reliable)" if spread > 1.3 else ""))
+      + (" (a busy machine? the ratios below are less reliable)" if spread > 1.3 else "")
+      + (f"; Krylov iterations: median {np.median(s['unconstrained_iterations']):.0f}"
+         if "unconstrained_iterations" in names else ""))
 if contact.any():
     c = s[contact]
     R = c["time_contact"].sum() / c["time_unconstrained"].sum()

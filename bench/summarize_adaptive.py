@@ -46,6 +46,7 @@ if sys.argv[1] == "--ratios":
     sys.exit(0)
 
 c = table(base + ".cycles.csv")
+steps_and_units(base + ".steps.csv")  # refuses a run without the measurement before anything is printed
 print(f"{base}.cycles.csv, written {time.strftime('%Y-%m-%d %H:%M', time.localtime(os.path.getmtime(base + '.cycles.csv')))}")
 # The phases are exclusive; "other" is what none covers (predictors, the Newmark update, the
 # transfer energies, a later cycle's initial state). "unconstrained" is the measurement itself.
@@ -72,7 +73,10 @@ def step_cost(name, label):
           f" ms, contact {s['time_contact'].mean() * 1e3:.2f} ms, estimate+mark {s['time_estimate'].mean() * 1e3:.2f} ms,"
           f" output {s['time_output'].mean() * 1e3:.2f} ms; unconstrained solve {free.mean() * 1e3:.2f} ms (median "
           f"{np.median(free) * 1e3:.2f} ms, 90th percentile {spread:.2f} times the median"
-          + ("; a busy machine? the ratio is less reliable" if spread > 1.3 else "") + ")")
+          + ("; a busy machine? the ratio is less reliable" if spread > 1.3 else "") + ")"
+          + (f"; its CG iterations: median {np.median(s['unconstrained_iterations']):.0f}"
+             f" ({s['unconstrained_iterations'].min():.0f}-{s['unconstrained_iterations'].max():.0f})"
+             if "unconstrained_iterations" in s.dtype.names else ""))
     print(f"  median over the steps of step / unconstrained solve: {np.median(step / free):.1f}")
     return ratio
 

@@ -927,6 +927,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                       "contact_force", "max_lambda", "min_lambda", "min_gap", "max_complementarity",
                                       "time_assembly", "time_contact", "time_output", "time_unconstrained",
                                       "time_remesh", "time_estimate", "cells"};
+  const bool measureOverhead = outParams.get<bool>("Measure Contact Overhead");
+  if (measureOverhead) columns.push_back("unconstrained_iterations");  // the benchmark unit's iterations
   const size_t timeOutputColumn = std::find(columns.begin(), columns.end(), "time_output") - columns.begin();
   const int nc = I.problem->components();
   for (const auto& p : I.probes)
@@ -964,7 +966,6 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
 
   RunSummary summary;
   const auto start = std::chrono::steady_clock::now();
-  const bool measureOverhead = outParams.get<bool>("Measure Contact Overhead");
   // The QP multiplier is beta k^2 times the physical one (kappa du/dn = -lambda on Gamma_C).
   const double toPhysical = 1.0 / (beta * k * k);
 
@@ -995,7 +996,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   std::shared_ptr<mesh::Forest> writtenForest;  // the mesh of the Exodus file being written, and its id
   long writtenId = 0;
   auto writeOutputs = [&](int step, double t, const solvers::ContactQPResult& qr, double tAssembly, double tContact,
-                          double tFree, const StepExtras& extras) {
+                          double tFree, int freeIterations, const StepExtras& extras) {
     auto scope = I.timers.scope("output");
     const auto t0 = std::chrono::steady_clock::now();
     const auto dofs = static_cast<double>(d->assembler->ownedMap()->getGlobalNumElements());
@@ -1014,6 +1015,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                toPhysical * qr.maxLambda, toPhysical * qr.minLambda, qr.minGap,
                                toPhysical * qr.maxComplementarity, tAssembly,
                                tContact, 0.0, tFree, tRemesh, tEstimate, double(d->forest->numGlobalCells())};
+    if (measureOverhead) row.push_back(freeIterations);
     for (const auto& p : I.probes)
       for (int c = 0; c < nc; ++c) row.push_back(d->assembler->evaluateComponent(uOverlap, p.second[0], p.second[1], c));
     if (I.problem->exactSolution) {
@@ -1071,7 +1073,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       initial.minGap = gap.empty() ? 0.0 : 1e300;
       for (size_t j = 0; j < gap.size(); ++j) initial.minGap = std::min(initial.minGap, gap[j] / d->coupling->segmentLength()[j]);
     }
-    writeOutputs(0, 0.0, initial, 0.0, 0.0, 0.0, StepExtras());
+    writeOutputs(0, 0.0, initial, 0.0, 0.0, 0.0, 0, StepExtras());
     for (int n = 1; n <= nSteps; ++n) {
       core::throwIfInterrupted(*I.comm);
       I.currentStep = n;
@@ -1153,14 +1155,17 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       }
       const auto tA2 = std::chrono::steady_clock::now();
       double tFree = 0;
+      int freeIterations = 0;
       if (measureOverhead) {  // the same solve without contact, for the ratio time_contact / time_unconstrained
         Vector x(owned);
         x.assign(pred);
         d->assembler->zeroDirichlet(x);
         const auto t0 = std::chrono::steady_clock::now();
         auto scope = I.timers.scope("unconstrained");  // the measurement's own time, in no other phase
+        const long its0 = d->solver->totalIterations();
         d->solver->solve(F, x);
         tFree = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        freeIterations = static_cast<int>(d->solver->totalIterations() - its0);
       }
       StepExtras extras;
       const auto tE0 = std::chrono::steady_clock::now();
@@ -1174,7 +1179,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();
       I.newmark->update(pred, *predictors[1], *u, *v, *a);
       writeOutputs(n, t, qr, std::chrono::duration<double>(tA1 - tA0).count(),
-                   std::chrono::duration<double>(tA2 - tA1).count() + projectionSeconds, tFree, extras);
+                   std::chrono::duration<double>(tA2 - tA1).count() + projectionSeconds, tFree, freeIterations, extras);
       if (n % progress == 0 || n == nSteps) {
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         core::rootOut(rank) << std::defaultfloat << std::setprecision(6) << "  step " << n << "/" << nSteps
