@@ -25,7 +25,6 @@ import math
 import os
 import sys
 
-import netCDF4
 import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -85,7 +84,7 @@ def written_steps():
 
 def gamma_c_cells(f, i):
     """Levels of the mesh, and (y-range, level, lambda) of the cells along the side set, sorted in y."""
-    with netCDF4.Dataset(f) as d:
+    with exodus(f) as d:
         names = exodus_names(d["name_elem_var"])
         level = np.asarray(d[f"vals_elem_var{names.index('level') + 1}eb1"][i])
         side_names = exodus_names(d["name_sset_var"])

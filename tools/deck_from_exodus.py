@@ -12,15 +12,14 @@ Uses Debian's python3 with netCDF4.
 import os
 import sys
 
-import netCDF4
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from exodus_text import record_bytes  # noqa: E402
-from tool_errors import ArgumentParser, fail  # noqa: E402
+from tool_errors import ArgumentParser, InputError, exodus, fail  # noqa: E402
 
 
 def info_lines(path):
-    with netCDF4.Dataset(path) as d:
+    with exodus(path) as d:
         if "info_records" not in d.variables:
             return []
         records = [record_bytes(row) for row in d.variables["info_records"][:]]
@@ -40,6 +39,8 @@ def main():
     path = ap.parse_args().exodus_file
     try:
         lines = info_lines(path)
+    except InputError as e:
+        fail(e)
     except OSError as e:
         fail(f"{path}: {e.strerror or e}")
     start = next((i for i, l in enumerate(lines) if l.startswith("<ParameterList")), None)

@@ -23,7 +23,6 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
-import netCDF4  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -124,7 +123,7 @@ def require_bar_variables(base):
 
 
 def frame_data(f, i):
-    with netCDF4.Dataset(f) as d:
+    with exodus(f) as d:
         x, y = d.variables["coordx"][:], d.variables["coordy"][:]
         conn = d.variables["connect1"][:] - 1
         nodal = names(d.variables["name_nod_var"])
@@ -170,7 +169,7 @@ def plot_meshes(base, panels, k, out, scale=5.0):
 def gamma_c_frame(f, i):
     """Per contact edge of a frame: its length, the level of its cell and whether its multiplier
     is non-zero (active)."""
-    with netCDF4.Dataset(f) as d:
+    with exodus(f) as d:
         x, y = d.variables["coordx"][:], d.variables["coordy"][:]
         conn = d.variables["connect1"][:] - 1
         cell = names(d.variables["name_elem_var"])

@@ -26,13 +26,12 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-import netCDF4  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from deck_from_exodus import info_lines  # noqa: E402
 from exodus_text import names as exodus_names  # noqa: E402
-from tool_errors import ArgumentParser, InputError, fail, read_table  # noqa: E402
+from tool_errors import ArgumentParser, InputError, exodus, fail, read_table, require_complete_exodus  # noqa: E402
 
 
 read_csv = read_table  # the name plot_bar.py imports
@@ -40,9 +39,11 @@ PAPER_LABEL = "adaptive, fixed fraction 50% (paper)"  # what inputs/membrane.xml
 
 
 def require_exodus(base):
-    """InputError unless the run at base wrote Exodus output."""
+    """InputError unless the run at base wrote Exodus output and no file of its series is cut short."""
     if not os.path.isfile(base + ".e"):
         raise InputError(f"{base}.e: no such file (the run wrote no Exodus output? Output/Write Exodus)")
+    for f in exodus_files(base):
+        require_complete_exodus(f)
 
 
 def parse_steps(text):
@@ -81,7 +82,7 @@ def exodus_files(base):
 def exodus_frames(base):
     """Yields (time, file, index) for every output time of a series."""
     for f in exodus_files(base):
-        with netCDF4.Dataset(f) as d:
+        with exodus(f) as d:
             for i, t in enumerate(d.variables["time_whole"][:]):
                 yield float(t), f, i
 
@@ -178,7 +179,7 @@ def h_text(h, unit=""):
 
 def cell_sizes(f, i=0):
     """The edge lengths along x of the cells of frame i of an Exodus file."""
-    with netCDF4.Dataset(f) as d:
+    with exodus(f) as d:
         x = d.variables["coordx"][:]
         conn = d.variables["connect1"][:] - 1
     return np.ptp(x[conn], axis=1)
@@ -296,7 +297,7 @@ def plot_meshes(adaptive, steps, k, out):
     fig, axes = plt.subplots(rows, cols, figsize=(4 * cols, 4 * rows), squeeze=False)
     for ax, step in zip(axes.flat, steps):
         time, f, i, step = nearest_frame(frames, step, k)
-        with netCDF4.Dataset(f) as d:
+        with exodus(f) as d:
             x, y = d.variables["coordx"][:], d.variables["coordy"][:]
             conn = d.variables["connect1"][:] - 1
             for q in conn:
@@ -318,7 +319,7 @@ def plot_meshes(adaptive, steps, k, out):
 def multiplier_frame(f, i):
     """Multiplier per contact edge of frame i of an Exodus file: (edge starts, edge ends along
     Gamma_C, values, axis along Gamma_C (0: x1, 1: x2), the other coordinate of Gamma_C)."""
-    with netCDF4.Dataset(f) as d:
+    with exodus(f) as d:
         xy = np.column_stack([d.variables["coordx"][:], d.variables["coordy"][:]])
         conn = d.variables["connect1"][:] - 1
         elems = d.variables["elem_ss1"][:] - 1

@@ -9,7 +9,8 @@ traceback.
   reporting(main)     runs main(); an InputError ends it with the one line
   ArgumentParser      argparse, its usage errors in one line (message, then the usage)
   read_table(path)    a CSV table of signorini (numpy structured array), checked complete
-  exodus(path)        an Exodus file opened with netCDF4
+  require_complete_exodus(path)  an Exodus file as long as its header says (not cut short)
+  exodus(path)        an Exodus file opened with netCDF4, checked complete
 """
 import argparse
 import os
@@ -84,12 +85,88 @@ def read_table(path, columns=(), min_rows=1):
     return data
 
 
+def classic_netcdf_size(path):
+    """The bytes a netCDF classic file (CDF-1, CDF-2 or CDF-5, as Exodus writes it) needs by its
+    header: the end of its last variable's data for the number of records the header declares; None
+    for other formats (netCDF-4/HDF5) or a header that cannot be parsed (netCDF4 then decides)."""
+    import struct
+
+    with open(path, "rb") as f:
+        head = f.read(1 << 20)
+    if head[:3] != b"CDF" or head[3] not in (1, 2, 5):
+        return None
+    version, pos = head[3], 4
+    wide = version == 5  # 8-byte counts and dimension lengths
+
+    def take(fmt):
+        nonlocal pos
+        value = struct.unpack_from(">" + fmt, head, pos)
+        pos += struct.calcsize(">" + fmt)
+        return value[0]
+
+    def count():
+        return take("q" if wide else "i")
+
+    def name():
+        nonlocal pos
+        n = count()
+        pos += (n + 3) // 4 * 4
+
+    type_size = {1: 1, 2: 1, 3: 2, 4: 4, 5: 4, 6: 8, 7: 1, 8: 2, 9: 4, 10: 8, 11: 8}
+
+    def attributes():
+        nonlocal pos
+        take("i")  # NC_ATTRIBUTE or ABSENT
+        for _ in range(count()):
+            name()
+            size = type_size[take("i")] * count()
+            pos += (size + 3) // 4 * 4
+
+    try:
+        records = count()
+        take("i")  # NC_DIMENSION or ABSENT
+        lengths = []
+        for _ in range(count()):
+            name()
+            lengths.append(count())
+        attributes()
+        take("i")  # NC_VARIABLE or ABSENT
+        fixed_end, record_vars = 0, []
+        for _ in range(count()):
+            name()
+            dims = [count() for _ in range(count())]
+            attributes()
+            take("i")  # nc_type
+            vsize = count() if wide else take("I")
+            begin = take("q" if version != 1 else "i")
+            if dims and lengths[dims[0]] == 0:  # the unlimited dimension: a record variable
+                record_vars.append((begin, vsize))
+            else:
+                fixed_end = max(fixed_end, begin + vsize)
+    except (struct.error, KeyError, IndexError):
+        return None
+    if records in (-1, 0xFFFFFFFF) or not record_vars:
+        return fixed_end
+    record_size = sum(v for _, v in record_vars) if len(record_vars) > 1 else record_vars[0][1]
+    return max(fixed_end, max(b + (records - 1) * record_size + v for b, v in record_vars))
+
+
+def require_complete_exodus(path):
+    """InputError unless path is a file at least as long as its netCDF header says (netCDF reads
+    zeros for the part of a file cut short)."""
+    require_file(path)
+    needed = classic_netcdf_size(path)
+    if needed is not None and os.path.getsize(path) < needed - 3:  # the last value's padding may be missing
+        raise InputError(f"{path}: cut short: {os.path.getsize(path)} bytes, its header needs {needed}")
+
+
 def exodus(path):
     """The Exodus file at path opened with netCDF4 (a context manager); InputError if it is
-    missing or not readable as netCDF."""
+    missing, not readable as netCDF or shorter than its header says (a file cut short: netCDF
+    would read zeros for the missing part)."""
     import netCDF4
 
-    require_file(path)
+    require_complete_exodus(path)
     try:
         return netCDF4.Dataset(path)
     except OSError as e:
