@@ -392,6 +392,7 @@ struct Simulation::Impl {
     d->courant = problem->waveSpeed() * newmark->timeStep / d->mesh->hMin();
     auto scope = timers.scope("preconditioner");
     d->solver = std::make_unique<solvers::LinearSolver>(deck.sublist("Linear Solver"), comm);
+    d->solver->setSystemName("the step matrix A = M + beta k^2 K");
     if (auto* elasticity = dynamic_cast<const fem::ElasticityAssembler*>(d->assembler.get()))
       d->solver->setNearNullspace(elasticity->rigidBodyModes(), 2);
     d->solver->setOperator(d->A, d->courant);
@@ -479,6 +480,7 @@ struct Simulation::Impl {
     auto massParams = deck.sublist("Linear Solver");
     massParams.set("Preconditioner", "Jacobi");
     auto solver = std::make_unique<solvers::LinearSolver>(massParams, comm);
+    solver->setSystemName("the mass matrix M (initial data, contact stabilisation; always with Jacobi)");
     solver->setOperator(M, 0.0);
     return solver;
   }

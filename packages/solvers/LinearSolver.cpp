@@ -80,6 +80,12 @@ struct LinearSolver::Impl {
   RCP<BelosSolver> solver;
   RCP<Belos::LinearProblem<Scalar, MultiVector, Operator>> problem;
   std::string precName = "none";
+  std::string systemName;  ///< for failure messages; empty: none
+  /// "linear solver <method> + <preconditioner>[ for <system>]"
+  std::string solverText() const {
+    return "linear solver " + params.get<std::string>("Method") + " + " + precName +
+           (systemName.empty() ? "" : " for " + systemName);
+  }
   long solves = 0, iterations = 0;
   RCP<MultiVector> nullspace;
   int equationsPerNode = 1;
@@ -285,7 +291,8 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
                                       I.params.get<int>("Maximum Iterations"));
     } catch (const core::SolverError&) {
       std::ostringstream os;
-      os << "linear solver CG + Jacobi (reproducible) did not reach the relative tolerance "
+      os << "linear solver CG + Jacobi (reproducible)" << (I.systemName.empty() ? "" : " for " + I.systemName)
+         << " did not reach the relative tolerance "
          << I.params.get<double>("Relative Tolerance") << " in " << I.params.get<int>("Maximum Iterations")
          << " iterations (Linear Solver/Maximum Iterations)";
       throw core::SolverError(os.str());
@@ -306,7 +313,7 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
     ret = I.solver->solve();
   } catch (const Belos::StatusTestError& e) {  // Belos 13.2 throws it for a residual norm that is NaN
     std::ostringstream os;
-    os << "linear solver " << I.params.get<std::string>("Method") << " + " << I.precName << " stopped: "
+    os << I.solverText() << " stopped: "
        << (std::string(e.what()).find("NaN") != std::string::npos
                ? "a residual is not a number, so the system or its right-hand side is not finite (are the "
                  "problem's data within the range of doubles?)"
@@ -321,7 +328,7 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
   I.iterations += its;
   if (ret != Belos::Converged) {
     std::ostringstream os;
-    os << "linear solver " << I.params.get<std::string>("Method") << " + " << I.precName << " did not reach "
+    os << I.solverText() << " did not reach "
        << "the relative tolerance " << I.params.get<double>("Relative Tolerance") << " in " << its
        << " iterations (Linear Solver/Maximum Iterations)";
     throw core::SolverError(os.str());
@@ -329,6 +336,7 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
   return its;
 }
 
+void LinearSolver::setSystemName(const std::string& name) { impl_->systemName = name; }
 const std::string& LinearSolver::preconditioner() const { return impl_->precName; }
 double LinearSolver::relativeTolerance() const { return impl_->params.get<double>("Relative Tolerance"); }
 long LinearSolver::numSolves() const { return impl_->solves; }

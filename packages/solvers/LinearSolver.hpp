@@ -43,6 +43,9 @@ class LinearSolver {
   /// Solves A x = b to the relative tolerance ||b - A x|| <= tol ||b||, starting from x.
   /// Returns the number of iterations; throws core::SolverError if not converged.
   int solve(const Vector& b, Vector& x);
+  /// Names the system in failure messages ("linear solver CG + Jacobi for <name> did not reach ..."),
+  /// e.g. "the mass matrix M"; empty (the default): no name.
+  void setSystemName(const std::string& name);
   /// Name of the preconditioner in use ("MueLu", "Jacobi" or "none").
   const std::string& preconditioner() const;
   double relativeTolerance() const;
