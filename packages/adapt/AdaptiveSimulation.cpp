@@ -87,6 +87,15 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
                   "and is coarsened first along the space-filling curve when more tie with 0 than the coarsening "
                   "fraction allows; 0: exact comparison",
                   0.0, 0.01);
+  core::addDouble(a, "Zero Tolerance", 1e-12,
+                  "Cell indicators (Estimator/Scaling = physical: in units of the displacement) at or below this "
+                  "times the step's rounding scale count as 0 when marking (never refined, coarsened first): the "
+                  "scale is max |u_h| over the step's solution and predictor, times 1 / (beta C^2) when the Courant "
+                  "number C = c k / h_min is below beta^(-1/2) (the rounding of a_h = (u_h - u~) / (beta k^2)); "
+                  "in the step scaling also times min(beta k^2 kappa, (beta k^2 kappa)^(1/2)). So a step whose "
+                  "indicators are rounding, e.g. of a rigid motion, which bilinear elements represent exactly, "
+                  "refines nothing, on any number of ranks; 0: off",
+                  0.0, 1e-3);
   core::addInt(a, "Cycles", 5, "Number of passes over [0, T] (each pass is one cycle of Algorithm 5.1)", 1, 100);
   core::addDouble(a, "Maximum Total Unknowns", 0.0,
                   "Stop after the cycle whose total unknowns (sum over steps) reach this number; 0: no limit", 0.0);
@@ -261,7 +270,8 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   const int baseLevel = deck_.sublist("Mesh").get<int>("Refinement Level");
   const double fraction = ap.get<double>("Refinement Fraction");
   const double coarsen = ap.get<double>("Coarsening Fraction");
-  const double ties = ap.get<double>("Tie Tolerance");
+  const double ties = ap.get<double>("Tie Tolerance"), zeroTolerance = ap.get<double>("Zero Tolerance");
+  const bool stepScaling = deck_.sublist("Estimator").get<std::string>("Scaling") == "step";
   const bool compactMeshes = ap.get<bool>("Compact Meshes");
   estimate::ResidualEstimator estimator(deck_.sublist("Estimator"));
   estimate::ElasticityEstimator elasticityEstimator(deck_.sublist("Estimator"));
@@ -356,7 +366,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         // The previous step's continuation (interpolated by the time stepper) starts s1 on a new mesh.
         const Vector* guess = s.carried.empty() ? nullptr : s.carried[0].get();
         const auto* scalar = dynamic_cast<const fem::Q1Assembler*>(&s.assembler);
-        const auto r = scalar ? estimator.estimate(estimate::EstimatorInput{s.forest, s.mesh, *scalar, s.problem,
+        auto r = scalar ? estimator.estimate(estimate::EstimatorInput{s.forest, s.mesh, *scalar, s.problem,
                                                                             s.coupling, s.time, s.timeStep, s.beta,
                                                                             s.u, s.predictor, s.lambda, solveSPD, s.meshId,
                                                                             guess, s.consistentMass, s.stiffness})
@@ -384,6 +394,16 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         dynamics::StepExtras extras{{r.etaStar, r.s0, r.s1, r.eta}, indicator, {}};
         if (!continuation.is_null()) extras.carry.push_back(continuation);
         if (lastPlanned) return extras;
+        if (zeroTolerance > 0) {  // indicators at rounding level count as 0 (Adaptivity/Zero Tolerance)
+          const double courant = s.problem.waveSpeed() * s.timeStep / s.mesh.hMin();
+          const double motion = std::max(s.u.normInf(), s.predictor.normInf());
+          double floor = zeroTolerance * motion * std::max(1.0, 1.0 / (s.beta * courant * courant));
+          if (stepScaling) {
+            const double c = s.beta * s.timeStep * s.timeStep * s.problem.density * s.problem.waveSpeed() * s.problem.waveSpeed();
+            floor *= std::min(c, std::sqrt(c));
+          }
+          for (double& x : r.cellIndicator) x = x <= floor * floor ? 0.0 : x;
+        }
         // T^n_{l+1}: T^n_l refined by the strategy, 2:1 balanced (Algorithm 5.2).
         // Marking among the cells below the Maximum Level: the fraction goes to cells that can be
         // refined (spent on cells at the level, it refined nothing, and the cycles repeated).
