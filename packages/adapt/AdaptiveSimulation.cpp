@@ -8,6 +8,7 @@
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <numeric>
 #include <set>
 #include <sstream>
@@ -96,6 +97,13 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
                   "indicators are rounding, e.g. of a rigid motion, which bilinear elements represent exactly, "
                   "refines nothing, on any number of ranks; 0: off",
                   0.0, 1e-3);
+  core::addDouble(a, "Contact Zone Gap", 0.0,
+                  "Length [units of the mesh]: cells with a contact edge whose multiplier segment's mean gap to the "
+                  "obstacle is at most this are refined as well as those the strategy marks (below the Maximum "
+                  "Level), so that the contact zone is resolved before the first contact also where the estimate "
+                  "cannot foresee it (e.g. a body in rigid motion, whose estimate is 0); about the distance the body "
+                  "moves towards the obstacle in a few steps. 0: off (the paper's method)",
+                  0.0, std::numeric_limits<double>::infinity());
   core::addInt(a, "Cycles", 5, "Number of passes over [0, T] (each pass is one cycle of Algorithm 5.1)", 1, 100);
   core::addDouble(a, "Maximum Total Unknowns", 0.0,
                   "Stop after the cycle whose total unknowns (sum over steps) reach this number; 0: no limit", 0.0);
@@ -271,6 +279,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   const double fraction = ap.get<double>("Refinement Fraction");
   const double coarsen = ap.get<double>("Coarsening Fraction");
   const double ties = ap.get<double>("Tie Tolerance"), zeroTolerance = ap.get<double>("Zero Tolerance");
+  const double contactZoneGap = ap.get<double>("Contact Zone Gap");
   const bool stepScaling = deck_.sublist("Estimator").get<std::string>("Scaling") == "step";
   const bool compactMeshes = ap.get<bool>("Compact Meshes");
   estimate::ResidualEstimator estimator(deck_.sublist("Estimator"));
@@ -409,10 +418,22 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         // refined (spent on cells at the level, it refined nothing, and the cycles repeated).
         std::vector<char> refinable(r.cellIndicator.size());
         for (size_t e = 0; e < refinable.size(); ++e) refinable[e] = s.mesh.cellLevel()[e] < maxLevel;
-        const std::vector<char> flags = markAmong(r.cellIndicator, refinable, [&](const std::vector<double>& v) {
+        std::vector<char> flags = markAmong(r.cellIndicator, refinable, [&](const std::vector<double>& v) {
           if (strategy == "uniform") return std::vector<char>(v.size(), 1);
           return strategy == "bulk" ? markBulk(v, fraction, ties, raw) : markFixedFraction(v, fraction, ties, raw);
         });
+        if (contactZoneGap > 0 && s.coupling) {  // Adaptivity/Contact Zone Gap: the cells along segments near contact
+          const std::vector<double> Bu = s.coupling->applyTranspose(s.u);
+          const std::vector<double> gbar = s.coupling->weightedObstacle(s.problem.obstacle, s.time);
+          const std::vector<int>& segment = s.coupling->localEdgeSegment();
+          const std::vector<double>& length = s.coupling->segmentLength();
+          const auto& edges = s.mesh.boundaryEdges();
+          for (size_t e = 0; e < edges.size(); ++e) {
+            const int j = segment[e];
+            if (j >= 0 && (Bu[j] - gbar[j]) <= contactZoneGap * length[j] && refinable[edges[e].cell])
+              flags[edges[e].cell] = 1;
+          }
+        }
         auto refined = std::make_shared<mesh::Forest>(s.forest);
         if (coarsen > 0 && strategy != "uniform") {
           // Among the cells above the deck's level, as refinement among those below the Maximum
