@@ -159,8 +159,12 @@ void checkAdaptivitySettings(const core::ParameterList& deck, const std::string&
   if (strategy == "uniform")
     warn("Adaptivity/Strategy = uniform refines every cell", keysSetWithoutEffect(deck, "Adaptivity", [](const std::string& k) {
            // (every step of a cycle has the same mesh: nothing is transferred)
-           return k == "Refinement Fraction" || k == "Coarsening Fraction" || k == "Tie Tolerance" || k == "Transfer";
+           return k == "Refinement Fraction" || k == "Coarsening Fraction" || k == "Tie Tolerance" || k == "Transfer" ||
+                  k == "Zero Tolerance" || k == "Contact Zone Gap";
          }));
+  if (a.get<double>("Contact Zone Gap") > 0 && deck.sublist("Problem").get<std::string>("Obstacle").empty())
+    warn("the deck has no obstacle (Problem/Obstacle)",
+         keysSetWithoutEffect(deck, "Adaptivity", [](const std::string& k) { return k == "Contact Zone Gap"; }));
   const int cycles = a.get<int>("Cycles");
   const double fraction = a.get<double>("Refinement Fraction"), coarsen = a.get<double>("Coarsening Fraction");
   const int maxLevel = a.get<int>("Maximum Level"), baseLevel = deck.sublist("Mesh").get<int>("Refinement Level");

@@ -425,6 +425,14 @@ signorini_add_driver_test(s1_tolerance_without_s1 EXIT 0
   ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=fixed fraction" --set "Estimator/Compute S1=false"
        --set "Estimator/S1 Relative Tolerance=1e-4" ${decks}/good.xml
   REGEX "warning: .*Estimator/Compute S1 = false; without effect: Estimator/S1 Relative Tolerance\n")
+# Contact Zone Gap needs an obstacle and a strategy that chooses cells: a warning otherwise.
+signorini_add_driver_test(contact_zone_gap_without_obstacle EXIT 0
+  ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=fixed fraction" --set "Adaptivity/Contact Zone Gap=0.1"
+       --set "Problem/Obstacle=" --set "Problem/Contact Segments=" ${decks}/good.xml
+  REGEX "warning: .*the deck has no obstacle [(]Problem/Obstacle[)]; without effect: Adaptivity/Contact Zone Gap\n")
+signorini_add_driver_test(contact_zone_gap_with_uniform EXIT 0
+  ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Contact Zone Gap=0.1" ${decks}/good.xml
+  REGEX "warning: .*Strategy = uniform refines every cell; without effect: Adaptivity/Contact Zone Gap\n")
 signorini_add_driver_test(adaptive_keys_without_strategy EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Cycles=3" --set "Adaptivity/Refinement Fraction=0.2" ${decks}/good.xml
   REGEX "warning: .*Strategy = none .*without effect: Adaptivity/(Cycles, Adaptivity/Refinement Fraction|Refinement Fraction, Adaptivity/Cycles)\n"
