@@ -4,6 +4,8 @@
 //    quadrilaterals;
 //  - a kink gives jump indicators only next to the kink, with the exact value
 //    h_K (beta k^2 kappa)^2 |dK on the kink|;
+//  - a bilinear cell residual, a linearly varying jump and a boundary residual are integrated
+//    exactly (closed-form integrals per cell);
 //  - eta_* decreases like h under uniform refinement of a smooth problem;
 //  - the Laplacian of a bilinear field on non-rectangular cells matches hand computations;
 //  - s0 matches a hand-integrated complementarity term, s1 the exact H1 norm of the discrete
@@ -275,6 +277,119 @@ INSTANTIATE_TEST_SUITE_P(Meshes, KinkTest, ::testing::Values(false, true),
                          [](const auto& info) { return std::string(info.param ? "hanging" : "uniform"); });
 
 // ---------------------------------------------------------------------------------------------
+// 2b. Residuals that vary over a cell or along an edge are integrated exactly (closed-form
+//     integrals): a bilinear cell residual, a linear jump, a boundary residual. On 4 x 4 and 8 x 8
+//     squares, with hanging faces (the cells x < 0.5, y < 0.5 refined) or without.
+
+class VaryingResidualTest : public ::testing::TestWithParam<bool> {};
+
+/// Sum over all ranks.
+double globalSum(const Comm& comm, double local) {
+  double global = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  return global;
+}
+
+TEST_P(VaryingResidualTest, BilinearCellResidualIsIntegratedExactly) {
+  // u_h = 0.4 + x - 2 y (no jumps, Laplace 0) and predictor u_h + c x y, f = 0, Dirichlet all round:
+  // r = rho (predictor - u_h) = rho c x y, so each cell [x0,x1] x [y0,y1] gets
+  // h_K^2 rho^2 c^2 (x1^3 - x0^3)(y1^3 - y0^3) / 9 (a lumped or one-point rule would not).
+  EstimatorCase s(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 2);
+  if (GetParam()) s.refineWhere([](double x, double y) { return x < 0.5 && y < 0.5; });
+  const double rho = 2.5, c = 1.7;
+  s.finish({{"Dirichlet Segments", "left, right, bottom, top"}}, rho, 1.0);
+  auto linear = [](double x, double y) { return 0.4 + x - 2 * y; };
+  s.interpolate(linear, *s.u);
+  s.interpolate([&](double x, double y) { return linear(x, y) + c * x * y; }, *s.pred);
+  const auto r = s.run();
+  const auto& X = s.mesh->cornerCoordsHost;
+  double local = 0;
+  for (LO e = 0; e < s.mesh->numLocalCells(); ++e) {
+    const double x0 = X(e, 0, 0), x1 = X(e, 3, 0), y0 = X(e, 0, 1), y1 = X(e, 3, 1);
+    const double h2 = (x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0);
+    const double expected = h2 * rho * rho * c * c * (std::pow(x1, 3) - std::pow(x0, 3)) *
+                            (std::pow(y1, 3) - std::pow(y0, 3)) / 9;
+    EXPECT_NEAR(r.cellIndicator[e], expected, 1e-12 * expected) << "cell " << e;
+    local += expected;
+  }
+  const double expected = globalSum(*s.comm, local);
+  EXPECT_NEAR(r.etaStar * r.etaStar, expected, 1e-12 * expected);
+}
+
+TEST_P(VaryingResidualTest, LinearJumpIsIntegratedExactly) {
+  // u = |x - 1/2| (1 + y), bilinear on every cell (Laplace 0, continuous normal derivatives but
+  // on x = 1/2, where [kappa du/dn] = -2 kappa (1 + y)), predictor = u_h, f = 0, Dirichlet all
+  // round: R = beta k^2 kappa (1 + y), so each cell with a face [y0,y1] on the line gets
+  // h_K (beta k^2 kappa)^2 ((1 + y1)^3 - (1 + y0)^3) / 3 (a rule with equal end weights would not).
+  EstimatorCase s(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 3);
+  if (GetParam()) s.refineWhere([](double x, double y) { return x < 0.5 && y < 0.5; });
+  const double kappa = 1.5;
+  s.finish({{"Dirichlet Segments", "left, right, bottom, top"}}, 2.0, kappa);
+  auto kink = [](double x, double y) { return std::abs(x - 0.5) * (1 + y); };
+  s.interpolate(kink, *s.u);
+  s.interpolate(kink, *s.pred);
+  const auto r = s.run();
+  const double c2 = std::pow(s.bk2() * kappa, 2);
+  const auto& X = s.mesh->cornerCoordsHost;
+  double local = 0;
+  for (LO e = 0; e < s.mesh->numLocalCells(); ++e) {
+    double integral = 0;  // of (1 + y)^2 over the cell's faces on the line
+    for (int f = 0; f < 4; ++f) {
+      const int a = p4est_face_corners[f][0], b = p4est_face_corners[f][1];
+      if (std::abs(X(e, a, 0) - 0.5) < 1e-12 && std::abs(X(e, b, 0) - 0.5) < 1e-12) {
+        const double y0 = std::min(X(e, a, 1), X(e, b, 1)), y1 = std::max(X(e, a, 1), X(e, b, 1));
+        integral += (std::pow(1 + y1, 3) - std::pow(1 + y0, 3)) / 3;
+      }
+    }
+    const double h = std::hypot(X(e, 3, 0) - X(e, 0, 0), X(e, 3, 1) - X(e, 0, 1));
+    const double expected = h * c2 * integral;
+    if (integral > 0)
+      EXPECT_NEAR(r.cellIndicator[e], expected, 1e-12 * expected) << "cell " << e;
+    else
+      EXPECT_LT(r.cellIndicator[e], 1e-14 * c2) << "cell " << e << " away from the kink";
+    local += expected;
+  }
+  const double expected = globalSum(*s.comm, local);
+  EXPECT_NEAR(r.etaStar * r.etaStar, expected, 1e-12 * expected);
+  if (!GetParam()) {  // 16 cells of diameter sqrt(2)/8 along the line: 2 h c2 int_0^1 (1 + y)^2 dy
+    EXPECT_NEAR(expected, 2 * std::sqrt(2.0) / 8 * c2 * 7.0 / 3, 1e-14);
+  }
+}
+
+TEST_P(VaryingResidualTest, BoundaryResidualIsIntegratedExactly) {
+  // u_h = 0.7 + 3 x - 2 y with its exact flux on the left, bottom and top sides and none given on
+  // the right one (q = 0 there): R = -beta k^2 (0 - kappa du/dx) = 3 beta k^2 kappa on the right
+  // edges, so each cell there gets h_K (3 beta k^2 kappa)^2 |edge|, every other cell nothing.
+  EstimatorCase s(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 3);
+  if (GetParam()) s.refineWhere([](double x, double y) { return x < 0.5 && y < 0.5; });
+  const double kappa = 2.0, b = 3.0, c = -2.0;
+  const std::string q = num(kappa) + " * (x < 0.001 ? -" + num(b) + " : (y < 0.001 ? -(" + num(c) + ") : " + num(c) + "))";
+  s.finish({{"Neumann Segments", "left, bottom, top"}, {"Neumann Data", q}}, 3.0, kappa);
+  auto field = [&](double x, double y) { return 0.7 + b * x + c * y; };
+  s.interpolate(field, *s.u);
+  s.interpolate(field, *s.pred);
+  const auto r = s.run();
+  const double R2 = std::pow(s.bk2() * kappa * b, 2);
+  const auto& X = s.mesh->cornerCoordsHost;
+  double local = 0;
+  for (LO e = 0; e < s.mesh->numLocalCells(); ++e) {
+    const double x1 = X(e, 3, 0), h = std::hypot(X(e, 3, 0) - X(e, 0, 0), X(e, 3, 1) - X(e, 0, 1));
+    const double expected = std::abs(x1 - 1) < 1e-12 ? h * R2 * (X(e, 3, 1) - X(e, 0, 1)) : 0.0;
+    if (expected > 0)
+      EXPECT_NEAR(r.cellIndicator[e], expected, 1e-12 * expected) << "cell " << e;
+    else
+      EXPECT_LT(r.cellIndicator[e], 1e-14 * R2) << "cell " << e << " away from the right side";
+    local += expected;
+  }
+  const double expected = globalSum(*s.comm, local);
+  EXPECT_NEAR(r.etaStar * r.etaStar, expected, 1e-12 * expected);
+  EXPECT_NEAR(expected, std::sqrt(2.0) / 8 * R2, 1e-14 * R2);  // 8 cells of diameter sqrt(2)/8, edges 1/8
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, VaryingResidualTest, ::testing::Values(false, true),
+                         [](const auto& info) { return std::string(info.param ? "hanging" : "uniform"); });
+
+// ---------------------------------------------------------------------------------------------
 // 3. Rate 1 in h under uniform refinement of a smooth problem.
 
 TEST(ResidualEstimatorRate, EtaStarDecreasesLikeH) {
@@ -333,9 +448,13 @@ TEST(ResidualEstimatorLaplacian, TrapezoidMatchesHandComputation) {
   //   = 16 (s1^3 - s0^3) / 3 * [1 / (2 (2 - r)^2)]_{r0}^{r1}   (dx = (2 - r) ds dr).
   // Level 0: h = sqrt(5), int = 2: eta^2 = 10 (beta k^2 kappa)^2.
   const double kappa = 1.1;
+  // With hanging faces (the cells near the corner (0,0) refined once more) u stays smooth and in
+  // the space, so its jumps vanish there too, although its normal derivative varies along the faces:
+  // a coarse side evaluated at points other than the fine side's would show a jump.
   auto coarse = exodusCoarseMesh({0, 2, 1, 0}, {0, 0, 1, 1}, {{0, 1, 2, 3}}, "trapezoid");
-  for (int level : {0, 2}) {
+  for (const auto& [level, hanging] : {std::pair{0, false}, {2, false}, {2, true}}) {
     EstimatorCase s(coarse, {{"wall", "boundary"}}, level);
+    if (hanging) s.refineWhere([](double x, double y) { return x + y < 0.6; });
     s.finish({{"Dirichlet Segments", "wall"}}, 1.0, kappa);
     auto u = [](double x, double y) { return x * y / (2 - y); };
     s.interpolate(u, *s.u);
@@ -357,7 +476,7 @@ TEST(ResidualEstimatorLaplacian, TrapezoidMatchesHandComputation) {
     if (level == 0) { EXPECT_NEAR(expected, 10 * c2, 1e-14 * c2); }
     // 3x3 Gauss on the rational integrand 1/(2-r)^3: relative error 1e-3 on one cell, 7e-7 on 4 x 4.
     const double tol = level == 0 ? 2e-3 : 2e-6;
-    EXPECT_NEAR(r.etaStar * r.etaStar, expected, tol * expected) << "level " << level;
+    EXPECT_NEAR(r.etaStar * r.etaStar, expected, tol * expected) << "level " << level << (hanging ? ", hanging" : "");
   }
 }
 

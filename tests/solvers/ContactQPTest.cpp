@@ -60,6 +60,13 @@ TEST(ContactCoupling, ColumnsSumToSegmentLengths) {
     const auto gbar = B.weightedObstacle(core::Expression("3*x - 1", "test"), 0.0);
     for (int j = 0; j < B.numSegments(); ++j)
       EXPECT_NEAR(gbar[j], B.segmentLength()[j] * (3 * B.segmentMidpoint()[j][0] - 1), 1e-13);
+    // gbar of x^5 (3-point Gauss per fine edge is exact to degree 5; a lower rule, e.g. Simpson's,
+    // is not): the integral over the segment, (x1^6 - x0^6) / 6, from its midpoint and length.
+    const auto quintic = B.weightedObstacle(core::Expression("x^5", "test"), 0.0);
+    for (int j = 0; j < B.numSegments(); ++j) {
+      const double x0 = B.segmentMidpoint()[j][0] - B.segmentLength()[j] / 2, x1 = x0 + B.segmentLength()[j];
+      EXPECT_NEAR(quintic[j], (std::pow(x1, 6) - std::pow(x0, 6)) / 6, 1e-12) << "segment " << j;
+    }
     // Segments are ordered along the boundary.
     for (int j = 1; j < B.numSegments(); ++j) EXPECT_GT(B.segmentMidpoint()[j][0], B.segmentMidpoint()[j - 1][0]);
   }
