@@ -29,7 +29,7 @@ plot=(/usr/bin/python3 "$src/tools/plot_results.py")
 "${plot[@]}" --adaptive "$work/membrane" --uniform "$work/membrane-uniform" --steps 20,40,60 --out "$work/plots" \
   > "$work/plots.log" 2>&1 || { cat "$work/plots.log"; fail "plot_results.py failed on complete runs"; }
 # A new file of the Exodus series only for a new mesh (in this run the mesh of step 4 comes back at step 8).
-/usr/bin/python3 - "$work/membrane" <<'PY' || fail "two consecutive files of the Exodus series have the same mesh"
+/usr/bin/python3 - "$work/membrane" <<'PY' || fail "the Exodus series: see the line above"
 import glob, sys
 import netCDF4
 base = sys.argv[1]
@@ -38,7 +38,11 @@ meshes = []
 for f in files:
     with netCDF4.Dataset(f) as d:
         meshes.append(tuple(d.variables[v][:].tobytes() for v in ("coordx", "coordy", "connect1")))
-sys.exit(len(meshes) < 2 or any(a == b for a, b in zip(meshes, meshes[1:])))
+if len(meshes) < 2:
+    sys.exit(f"{base}: one file only, so the run's mesh never changed (the test needs a changing one)")
+same = [i for i, (a, b) in enumerate(zip(meshes, meshes[1:])) if a == b]
+if same:
+    sys.exit(f"{base}: files {same[0]} and {same[0] + 1} of the series have the same mesh")
 PY
 # Exodus name records: the text ends at the first NUL; what follows is undefined (the library writes
 # the name and its NUL into a file without fill values) and was seen to hold pieces of the deck.
