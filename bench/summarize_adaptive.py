@@ -74,7 +74,7 @@ def step_cost(name, label):
           f" output {s['time_output'].mean() * 1e3:.2f} ms; unconstrained solve {free.mean() * 1e3:.2f} ms (median "
           f"{np.median(free) * 1e3:.2f} ms, 90th percentile {spread:.2f} times the median"
           + ("; a busy machine? the ratio is less reliable" if spread > 1.3 else "") + ")"
-          + (f"; its CG iterations: median {np.median(s['unconstrained_iterations']):.0f}"
+          + (f"; its Krylov iterations: median {np.median(s['unconstrained_iterations']):.0f}"
              f" ({s['unconstrained_iterations'].min():.0f}-{s['unconstrained_iterations'].max():.0f})"
              if "unconstrained_iterations" in s.dtype.names else ""))
     print(f"  median over the steps of step / unconstrained solve: {np.median(step / free):.1f}")

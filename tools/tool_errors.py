@@ -136,19 +136,23 @@ def classic_netcdf_size(path):
             name()
             dims = [count() for _ in range(count())]
             attributes()
-            take("i")  # nc_type
+            nc_type = take("i")
             vsize = count() if wide else take("I")
             begin = take("q" if version != 1 else "i")
             if dims and lengths[dims[0]] == 0:  # the unlimited dimension: a record variable
-                record_vars.append((begin, vsize))
+                values = 1
+                for d in dims[1:]:
+                    values *= lengths[d]
+                record_vars.append((begin, vsize, values * type_size[nc_type]))
             else:
                 fixed_end = max(fixed_end, begin + vsize)
     except (struct.error, KeyError, IndexError):
         return None
     if records in (-1, 0xFFFFFFFF) or not record_vars:
         return fixed_end
-    record_size = sum(v for _, v in record_vars) if len(record_vars) > 1 else record_vars[0][1]
-    return max(fixed_end, max(b + (records - 1) * record_size + v for b, v in record_vars))
+    # A lone record variable's records are not padded to 4 bytes (netCDF classic format).
+    record_size = sum(v for _, v, _ in record_vars) if len(record_vars) > 1 else record_vars[0][2]
+    return max(fixed_end, max(b + (records - 1) * record_size + unpadded for b, _, unpadded in record_vars))
 
 
 def require_complete_exodus(path):
@@ -156,7 +160,7 @@ def require_complete_exodus(path):
     zeros for the part of a file cut short)."""
     require_file(path)
     needed = classic_netcdf_size(path)
-    if needed is not None and os.path.getsize(path) < needed - 3:  # the last value's padding may be missing
+    if needed is not None and os.path.getsize(path) < needed:  # (needed counts no padding after the last value)
         raise InputError(f"{path}: cut short: {os.path.getsize(path)} bytes, its header needs {needed}")
 
 

@@ -89,18 +89,18 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
                   "fraction allows; 0: exact comparison",
                   0.0, 0.01);
   core::addDouble(a, "Zero Tolerance", 1e-12,
-                  "Cell indicators (Estimator/Scaling = physical: in units of the displacement) at or below this "
-                  "times the step's rounding scale count as 0 when marking (never refined, coarsened first): the "
-                  "scale is max |u_h| over the step's solution and predictor, times 1 / (beta C^2) when the Courant "
-                  "number C = c k / h_min is below beta^(-1/2) (the rounding of a_h = (u_h - u~) / (beta k^2)); "
-                  "in the step scaling also times min(beta k^2 kappa, (beta k^2 kappa)^(1/2)). So a step whose "
+                  "Cell indicators at or below this times the step's rounding scale count as 0 when marking "
+                  "(never refined, coarsened first), compared in the physical scaling (in units of the displacement, "
+                  "whatever Estimator/Scaling): the scale is max |u_h| over the step's solution and predictor, times "
+                  "1 / (beta C^2) when the Courant number C = c k / h_min is below beta^(-1/2) (the rounding of "
+                  "a_h = (u_h - u~) / (beta k^2)). So a step whose "
                   "indicators are rounding, e.g. of a rigid motion, which bilinear elements represent exactly, "
                   "refines nothing, on any number of ranks; 0: off",
                   0.0, 1e-3);
   core::addDouble(a, "Contact Zone Gap", 0.0,
                   "Length [units of the mesh]: cells with a contact edge whose multiplier segment's mean gap to the "
                   "obstacle is at most this are refined as well as those the strategy marks (below the Maximum "
-                  "Level), so that the contact zone is resolved before the first contact also where the estimate "
+                  "Level) and never coarsened, so that the contact zone is resolved before the first contact also where the estimate "
                   "cannot foresee it (e.g. a body in rigid motion, whose estimate is 0); about the distance the body "
                   "moves towards the obstacle in a few steps. 0: off (the paper's method)",
                   0.0, std::numeric_limits<double>::infinity());
@@ -410,12 +410,16 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         if (zeroTolerance > 0) {  // indicators at rounding level count as 0 (Adaptivity/Zero Tolerance)
           const double courant = s.problem.waveSpeed() * s.timeStep / s.mesh.hMin();
           const double motion = std::max(s.u.normInf(), s.predictor.normInf());
-          double floor = zeroTolerance * motion * std::max(1.0, 1.0 / (s.beta * courant * courant));
-          if (stepScaling) {
-            const double c = s.beta * s.timeStep * s.timeStep * s.problem.density * s.problem.waveSpeed() * s.problem.waveSpeed();
-            floor *= std::min(c, std::sqrt(c));
+          const double floor = zeroTolerance * motion * std::max(1.0, 1.0 / (s.beta * courant * courant));
+          // Compared in the physical scaling, where eta_K and the s0 share are displacements: the step
+          // scaling's eta_K^2 carries (beta k^2 kappa)^2, its s0 share beta k^2 kappa.
+          const double c = stepScaling ? s.beta * s.timeStep * s.timeStep * s.problem.density *
+                                             s.problem.waveSpeed() * s.problem.waveSpeed()
+                                       : 1.0;
+          for (size_t e = 0; e < r.cellIndicator.size(); ++e) {
+            const double physical = r.cellEta2[e] / (c * c) + (r.cellIndicator[e] - r.cellEta2[e]) / c;
+            if (physical <= floor * floor) r.cellIndicator[e] = 0.0;
           }
-          for (double& x : r.cellIndicator) x = x <= floor * floor ? 0.0 : x;
         }
         // T^n_{l+1}: T^n_l refined by the strategy, 2:1 balanced (Algorithm 5.2).
         // Marking among the cells below the Maximum Level: the fraction goes to cells that can be
@@ -426,7 +430,10 @@ dynamics::RunSummary AdaptiveSimulation::run() {
           if (strategy == "uniform") return std::vector<char>(v.size(), 1);
           return strategy == "bulk" ? markBulk(v, fraction, ties, raw) : markFixedFraction(v, fraction, ties, raw);
         });
-        if (contactZoneGap > 0 && s.coupling) {  // Adaptivity/Contact Zone Gap: the cells along segments near contact
+        // Adaptivity/Contact Zone Gap: the cells along segments near contact are refined (below the
+        // Maximum Level) and never coarsened.
+        std::vector<char> nearContact(r.cellIndicator.size(), 0);
+        if (contactZoneGap > 0 && s.coupling) {
           const std::vector<double> Bu = s.coupling->applyTranspose(s.u);
           const std::vector<double> gbar = s.coupling->weightedObstacle(s.problem.obstacle, s.time);
           const std::vector<int>& segment = s.coupling->localEdgeSegment();
@@ -434,9 +441,9 @@ dynamics::RunSummary AdaptiveSimulation::run() {
           const auto& edges = s.mesh.boundaryEdges();
           for (size_t e = 0; e < edges.size(); ++e) {
             const int j = segment[e];
-            if (j >= 0 && (Bu[j] - gbar[j]) <= contactZoneGap * length[j] && refinable[edges[e].cell])
-              flags[edges[e].cell] = 1;
+            if (j >= 0 && (Bu[j] - gbar[j]) <= contactZoneGap * length[j]) nearContact[edges[e].cell] = 1;
           }
+          for (size_t e = 0; e < flags.size(); ++e) flags[e] = flags[e] || (nearContact[e] && refinable[e]);
         }
         auto refined = std::make_shared<mesh::Forest>(s.forest);
         if (coarsen > 0 && strategy != "uniform") {
@@ -446,7 +453,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
           std::iota(positions.begin(), positions.end(), s.forest.firstGlobalCell());
           std::vector<char> small =
               markSmallestAbove(r.cellIndicator, positions, s.mesh.cellLevel(), baseLevel, coarsen, ties, raw);
-          for (size_t e = 0; e < small.size(); ++e) small[e] = small[e] && !flags[e];
+          for (size_t e = 0; e < small.size(); ++e) small[e] = small[e] && !flags[e] && !nearContact[e];
           refined->refineAndCoarsen(flags, small, baseLevel);
           refined->balance();
         } else {

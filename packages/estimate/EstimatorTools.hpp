@@ -387,6 +387,7 @@ EstimatorResult combineCellTerms(const Volume& volume, const std::vector<double>
   }
   res.etaStar = std::sqrt(std::max(global2[0], 0.0));
   res.s0 = std::sqrt(std::abs(global2[1]));
+  res.cellEta2 = std::move(etaK2);
   return res;
 }
 
@@ -399,8 +400,10 @@ EstimatorResult combineCellTerms(const Volume& volume, const std::vector<double>
 inline void scaleToPhysical(EstimatorResult& res, const std::vector<double>& s0Share, double s) {
   res.etaStar /= s;
   res.s0 /= std::sqrt(s);
-  for (size_t e = 0; e < res.cellIndicator.size(); ++e)
+  for (size_t e = 0; e < res.cellIndicator.size(); ++e) {
     res.cellIndicator[e] = (res.cellIndicator[e] - s0Share[e]) / (s * s) + s0Share[e] / s;
+    res.cellEta2[e] /= s * s;
+  }
 }
 
 }  // namespace signorini::estimate

@@ -50,6 +50,7 @@ struct EstimatorInput {
 struct EstimatorResult {
   double etaStar = 0, s0 = 0, s1 = 0, eta = 0;
   std::vector<double> cellIndicator;  ///< per local cell: eta_K^2 + s0 share (squared units)
+  std::vector<double> cellEta2;       ///< per local cell: eta_K^2 alone (cellIndicator less the s0 share)
 };
 
 class ResidualEstimator {

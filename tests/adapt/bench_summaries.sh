@@ -41,7 +41,7 @@ done
 /usr/bin/python3 "$src/bench/summarize_adaptive.py" "$work/membrane" > "$work/summary.txt" 2>&1 ||
   { cat "$work/summary.txt"; fail "summarize_adaptive.py failed"; }
 grep -q "^a whole adaptive step costs [0-9.]* unconstrained solves" "$work/summary.txt" &&
-  grep -q "its CG iterations: median [0-9]" "$work/summary.txt" || { cat "$work/summary.txt"; fail "no cost in the summary"; }
+  grep -q "its Krylov iterations: median [0-9]" "$work/summary.txt" || { cat "$work/summary.txt"; fail "no cost in the summary"; }
 /usr/bin/python3 "$src/bench/summarize_adaptive.py" --ratios "$work/membrane" "$work/second" > "$work/ratios.txt" 2>&1 &&
   grep -q "(median of 2 runs" "$work/ratios.txt" || { cat "$work/ratios.txt"; fail "summarize_adaptive.py --ratios"; }
 /usr/bin/python3 "$src/bench/summarize.py" "$work/membrane-level2.steps.csv" "$work/uniform.log" > "$work/uniform.txt" 2>&1 ||

@@ -196,6 +196,35 @@ expect_error cut_exodus "plot_results.py: error: $last: cut short: [0-9]* bytes,
   "${plot[@]}" --adaptive "$work/cut-exodus"
 refuses meshes_cut_exodus "check_adaptive_meshes.py: error: $last: cut short" \
   "$py" "$tools/check_adaptive_meshes.py" "$work/cut-exodus"
+# The size from the header on netCDF classic files of every kind (CDF-1, -2, -5; one record variable,
+# whose records are not padded, or two; types of 1, 2 and 8 bytes): complete files accepted, files
+# short of one byte refused.
+/usr/bin/python3 - "$work" "$src/tools" <<'PY' || fail "classic netCDF sizes"
+import os, sys
+import netCDF4
+import numpy as np
+sys.path.insert(0, sys.argv[2])
+from tool_errors import InputError, require_complete_exodus
+for fmt in ("NETCDF3_CLASSIC", "NETCDF3_64BIT_OFFSET", "NETCDF3_64BIT_DATA"):
+    for dtype in ("S1", "i2", "f8"):
+        for nvars in (1, 2):
+            path = os.path.join(sys.argv[1], f"nc-{fmt}-{dtype}-{nvars}.nc")
+            with netCDF4.Dataset(path, "w", format=fmt) as d:
+                d.createDimension("time", None)
+                d.createDimension("n", 5)
+                for k in range(nvars):
+                    v = d.createVariable(f"v{k}", dtype, ("time", "n"))
+                    for r in range(7):
+                        v[r] = np.array(list("abcde"), dtype="S1") if dtype == "S1" else np.arange(5, dtype=dtype)
+            require_complete_exodus(path)  # raises InputError if refused
+            with open(path, "r+b") as f:
+                f.truncate(os.path.getsize(path) - (4 if nvars == 2 and dtype != "f8" else 1))
+            try:
+                require_complete_exodus(path)
+                sys.exit(f"{path}: cut short, but accepted")
+            except InputError:
+                pass
+PY
 cp "$work/membrane.e" "$work/cut-deck.e" && truncate -s -8 "$work/cut-deck.e"
 refuses deck_cut_exodus "deck_from_exodus.py: error: $work/cut-deck.e: cut short" \
   "$py" "$tools/deck_from_exodus.py" "$work/cut-deck.e"
