@@ -93,16 +93,15 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
                   "(never refined, coarsened first), compared in the physical scaling (in units of the displacement, "
                   "whatever Estimator/Scaling): the scale is max |u_h| over the step's solution and predictor, times "
                   "1 / (beta C^2) when the Courant number C = c k / h_min is below beta^(-1/2) (the rounding of "
-                  "a_h = (u_h - u~) / (beta k^2)). So a step whose "
-                  "indicators are rounding, e.g. of a rigid motion, which bilinear elements represent exactly, "
-                  "refines nothing, on any number of ranks; 0: off",
+                  "a_h = (u_h - u~) / (beta k^2)). So a step whose indicators are rounding, e.g. of a rigid motion, "
+                  "which bilinear elements represent exactly, refines nothing, on any number of ranks; 0: off",
                   0.0, 1e-3);
   core::addDouble(a, "Contact Zone Gap", 0.0,
                   "Length [units of the mesh]: cells with a contact edge whose multiplier segment's mean gap to the "
                   "obstacle is at most this are refined as well as those the strategy marks (below the Maximum "
-                  "Level) and never coarsened, so that the contact zone is resolved before the first contact also where the estimate "
-                  "cannot foresee it (e.g. a body in rigid motion, whose estimate is 0); about the distance the body "
-                  "moves towards the obstacle in a few steps. 0: off (the paper's method)",
+                  "Level) and never coarsened, so that the contact zone is resolved before the first contact also "
+                  "where the estimate cannot foresee it (e.g. a body in rigid motion, whose estimate is 0); about the "
+                  "distance the body moves towards the obstacle in a few steps. 0: off (the paper's method)",
                   0.0, std::numeric_limits<double>::infinity());
   core::addInt(a, "Cycles", 5, "Number of passes over [0, T] (each pass is one cycle of Algorithm 5.1)", 1, 100);
   core::addDouble(a, "Maximum Total Unknowns", 0.0,
@@ -380,13 +379,13 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         const Vector* guess = s.carried.empty() ? nullptr : s.carried[0].get();
         const auto* scalar = dynamic_cast<const fem::Q1Assembler*>(&s.assembler);
         auto r = scalar ? estimator.estimate(estimate::EstimatorInput{s.forest, s.mesh, *scalar, s.problem,
-                                                                            s.coupling, s.time, s.timeStep, s.beta,
-                                                                            s.u, s.predictor, s.lambda, solveSPD, s.meshId,
-                                                                            guess, s.consistentMass, s.stiffness})
-                              : elasticityEstimator.estimate(estimate::ElasticityEstimatorInput{
-                                    s.forest, s.mesh, dynamic_cast<const fem::ElasticityAssembler&>(s.assembler),
-                                    s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor, s.lambda,
-                                    solveSPD, s.meshId, guess});
+                                                                      s.coupling, s.time, s.timeStep, s.beta,
+                                                                      s.u, s.predictor, s.lambda, solveSPD, s.meshId,
+                                                                      guess, s.consistentMass, s.stiffness})
+                        : elasticityEstimator.estimate(estimate::ElasticityEstimatorInput{
+                              s.forest, s.mesh, dynamic_cast<const fem::ElasticityAssembler&>(s.assembler),
+                              s.problem, s.coupling, s.time, s.timeStep, s.beta, s.u, s.predictor, s.lambda,
+                              solveSPD, s.meshId, guess});
         {
           // Not finite: beta k^2 (or its square, in the physical scaling's division) left the range
           // of doubles, e.g. for a time step of 1e-100; the marking needs numbers.
