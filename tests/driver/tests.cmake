@@ -77,6 +77,14 @@ signorini_add_driver_test(adaptive_stop_on_total_unknowns EXIT 0
         "cycle 1 ends the run: its total unknowns reach Adaptivity/Maximum Total Unknowns"
         "wrote [^ ]*/good[.]cycle0[.]steps[.]csv"
   FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
+# At the boundary of the rule: Maximum Total Unknowns equal to cycle 1's total (4 steps x 81 nodes)
+# ends the run there ("reach": at or above).
+signorini_add_driver_test(adaptive_stop_on_total_unknowns_reached_exactly EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Maximum Total Unknowns=324"
+       --set "Adaptivity/Cycles=3" ${decks}/good.xml
+  REGEX "cycle 1: total unknowns 324,"
+        "cycle 1 ends the run: its total unknowns reach Adaptivity/Maximum Total Unknowns"
+  FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
 signorini_add_driver_test(adaptive_stop_on_total_unknowns_all_cycles EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Maximum Total Unknowns=300"
        --set "Adaptivity/Write All Cycles=true" ${decks}/good.xml

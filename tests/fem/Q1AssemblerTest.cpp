@@ -118,6 +118,16 @@ TEST_P(AssemblyTest, LoadOfConstantSumsToArea) {
   b.putScalar(0.0);
   asmb.addBoundaryLoad(core::Expression("1", "test"), 0.0, 1u << 1, 1.0, b);
   EXPECT_NEAR(b.dot(one), 3.0, 1e-12);
+  // How a varying boundary load is split between an edge's end nodes: q = y on the right side
+  // against v = y (its interpolant) gives int_0^3 y^2 dy = 9 (the 2-point Gauss rule is exact for
+  // the quadratic integrand; with each edge's end nodes swapped it is less), and against 1
+  // int_0^3 y dy = 4.5.
+  b.putScalar(0.0);
+  asmb.addBoundaryLoad(core::Expression("y", "test"), 0.0, 1u << 1, 1.0, b);
+  Vector v(m.ownedMap());
+  interpolate(m, [](double, double y) { return y; }, v);
+  EXPECT_NEAR(b.dot(v), 9.0, 1e-12);
+  EXPECT_NEAR(b.dot(one), 4.5, 1e-12);
 }
 
 TEST_P(AssemblyTest, InterpolantHasZeroErrorForBilinearField) {
