@@ -283,10 +283,21 @@ INSTANTIATE_TEST_SUITE_P(Meshes, KinkTest, ::testing::Values(false, true),
 
 class VaryingResidualTest : public ::testing::TestWithParam<bool> {};
 
-/// Sum over all ranks.
-double globalSum(const Comm& comm, double local) {
-  double global = 0;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+/// Every local cell's indicator against \p expected(e) (to 1e-12 relative; below \p zeroFloor where
+/// it is 0) and eta_*^2 against the expected values' sum over all ranks, which is returned.
+double expectCellIndicators(const EstimatorCase& s, const estimate::EstimatorResult& r,
+                            const std::function<double(LO)>& expected, double zeroFloor) {
+  double local = 0, global = 0;
+  for (LO e = 0; e < s.mesh->numLocalCells(); ++e) {
+    const double value = expected(e);
+    if (value > 0)
+      EXPECT_NEAR(r.cellIndicator[e], value, 1e-12 * value) << "cell " << e;
+    else
+      EXPECT_LT(r.cellIndicator[e], zeroFloor) << "cell " << e << " without a residual";
+    local += value;
+  }
+  Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(global));
+  EXPECT_NEAR(r.etaStar * r.etaStar, global, 1e-12 * global);
   return global;
 }
 
@@ -303,17 +314,11 @@ TEST_P(VaryingResidualTest, BilinearCellResidualIsIntegratedExactly) {
   s.interpolate([&](double x, double y) { return linear(x, y) + c * x * y; }, *s.pred);
   const auto r = s.run();
   const auto& X = s.mesh->cornerCoordsHost;
-  double local = 0;
-  for (LO e = 0; e < s.mesh->numLocalCells(); ++e) {
+  expectCellIndicators(s, r, [&](LO e) {  // every cell has x y > 0 somewhere: all positive
     const double x0 = X(e, 0, 0), x1 = X(e, 3, 0), y0 = X(e, 0, 1), y1 = X(e, 3, 1);
     const double h2 = (x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0);
-    const double expected = h2 * rho * rho * c * c * (std::pow(x1, 3) - std::pow(x0, 3)) *
-                            (std::pow(y1, 3) - std::pow(y0, 3)) / 9;
-    EXPECT_NEAR(r.cellIndicator[e], expected, 1e-12 * expected) << "cell " << e;
-    local += expected;
-  }
-  const double expected = globalSum(*s.comm, local);
-  EXPECT_NEAR(r.etaStar * r.etaStar, expected, 1e-12 * expected);
+    return h2 * rho * rho * c * c * (std::pow(x1, 3) - std::pow(x0, 3)) * (std::pow(y1, 3) - std::pow(y0, 3)) / 9;
+  }, 0.0);
 }
 
 TEST_P(VaryingResidualTest, LinearJumpIsIntegratedExactly) {
@@ -331,8 +336,7 @@ TEST_P(VaryingResidualTest, LinearJumpIsIntegratedExactly) {
   const auto r = s.run();
   const double c2 = std::pow(s.bk2() * kappa, 2);
   const auto& X = s.mesh->cornerCoordsHost;
-  double local = 0;
-  for (LO e = 0; e < s.mesh->numLocalCells(); ++e) {
+  const double expected = expectCellIndicators(s, r, [&](LO e) {
     double integral = 0;  // of (1 + y)^2 over the cell's faces on the line
     for (int f = 0; f < 4; ++f) {
       const int a = p4est_face_corners[f][0], b = p4est_face_corners[f][1];
@@ -341,16 +345,8 @@ TEST_P(VaryingResidualTest, LinearJumpIsIntegratedExactly) {
         integral += (std::pow(1 + y1, 3) - std::pow(1 + y0, 3)) / 3;
       }
     }
-    const double h = std::hypot(X(e, 3, 0) - X(e, 0, 0), X(e, 3, 1) - X(e, 0, 1));
-    const double expected = h * c2 * integral;
-    if (integral > 0)
-      EXPECT_NEAR(r.cellIndicator[e], expected, 1e-12 * expected) << "cell " << e;
-    else
-      EXPECT_LT(r.cellIndicator[e], 1e-14 * c2) << "cell " << e << " away from the kink";
-    local += expected;
-  }
-  const double expected = globalSum(*s.comm, local);
-  EXPECT_NEAR(r.etaStar * r.etaStar, expected, 1e-12 * expected);
+    return std::hypot(X(e, 3, 0) - X(e, 0, 0), X(e, 3, 1) - X(e, 0, 1)) * c2 * integral;
+  }, 1e-14 * c2);
   if (!GetParam()) {  // 16 cells of diameter sqrt(2)/8 along the line: 2 h c2 int_0^1 (1 + y)^2 dy
     EXPECT_NEAR(expected, 2 * std::sqrt(2.0) / 8 * c2 * 7.0 / 3, 1e-14);
   }
@@ -371,18 +367,10 @@ TEST_P(VaryingResidualTest, BoundaryResidualIsIntegratedExactly) {
   const auto r = s.run();
   const double R2 = std::pow(s.bk2() * kappa * b, 2);
   const auto& X = s.mesh->cornerCoordsHost;
-  double local = 0;
-  for (LO e = 0; e < s.mesh->numLocalCells(); ++e) {
-    const double x1 = X(e, 3, 0), h = std::hypot(X(e, 3, 0) - X(e, 0, 0), X(e, 3, 1) - X(e, 0, 1));
-    const double expected = std::abs(x1 - 1) < 1e-12 ? h * R2 * (X(e, 3, 1) - X(e, 0, 1)) : 0.0;
-    if (expected > 0)
-      EXPECT_NEAR(r.cellIndicator[e], expected, 1e-12 * expected) << "cell " << e;
-    else
-      EXPECT_LT(r.cellIndicator[e], 1e-14 * R2) << "cell " << e << " away from the right side";
-    local += expected;
-  }
-  const double expected = globalSum(*s.comm, local);
-  EXPECT_NEAR(r.etaStar * r.etaStar, expected, 1e-12 * expected);
+  const double expected = expectCellIndicators(s, r, [&](LO e) {
+    const double h = std::hypot(X(e, 3, 0) - X(e, 0, 0), X(e, 3, 1) - X(e, 0, 1));
+    return std::abs(X(e, 3, 0) - 1) < 1e-12 ? h * R2 * (X(e, 3, 1) - X(e, 0, 1)) : 0.0;
+  }, 1e-14 * R2);
   EXPECT_NEAR(expected, std::sqrt(2.0) / 8 * R2, 1e-14 * R2);  // 8 cells of diameter sqrt(2)/8, edges 1/8
 }
 
