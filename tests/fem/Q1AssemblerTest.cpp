@@ -3,10 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <memory>
 #include <tuple>
 
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "../TestMesh.hpp"
@@ -203,6 +205,93 @@ TEST(Q1Kernels, ParallelogramMatricesEqualGaussQuadrature) {
   }
   const double trapezoid[4][2] = {{0, 0}, {1, 0}, {0.2, 1}, {0.8, 1}};
   EXPECT_FALSE(fem::isParallelogram(trapezoid));
+}
+
+// Lumped boundary mass (DESIGN 1.6): every mass coupling with a flagged unknown, in its own row and
+// in its neighbours' rows, moves to the row's diagonal, so row sums are those of the consistent mass
+// and the matrix stays symmetric; couplings between unflagged unknowns are untouched. Both
+// assemblers, with hanging nodes, on 1-3 ranks, in ordinary and reproducible arithmetic (on several
+// ranks the latter sums the shared rows' cell contributions by EntrySums, a second code path).
+TEST(LumpedBoundaryMass, CouplingsOfFlaggedUnknownsMoveToTheDiagonal) {
+  for (const bool reproducible : {false, true})
+    for (const char* type : {"scalar wave", "plane strain elasticity"}) {
+      const test::ReproducibleScope scope(reproducible);
+      test::TestMesh tm(0.0, 2.0, -1.0, 0.5, 2, 1, 2);
+      tm.refineCorner();
+      const auto& m = tm.build();
+      auto p = fem::ProblemData::getValidParameters();
+      p.set("Type", std::string(type));
+      p.set("Density", 2.0);
+      p.set("Dirichlet Segments", std::string("left"));
+      const fem::ProblemData problem(p, *tm.segments);
+      std::unique_ptr<fem::Assembler> asmb;
+      if (problem.components() == 1)
+        asmb = std::make_unique<fem::Q1Assembler>(m, m.nodesOnSegments(problem.dirichletMask));
+      else
+        asmb = std::make_unique<fem::ElasticityAssembler>(m, fem::ElasticityAssembler::dirichletUnknowns(m, problem),
+                                                          problem.lameLambda, problem.lameMu);
+      const auto lump = asmb->unknownsOnSegments(1u << 1);  // the right side
+      const auto consistent = asmb->assembleSystem(1.0, 0.0, problem);
+      const auto lumped = asmb->assembleSystem(1.0, 0.0, problem, lump);
+      // Flags and Dirichlet flags of every column: owned values imported to the column map.
+      const auto colMap = lumped->getColMap();
+      Vector flagOwned(asmb->ownedMap()), dirOwned(asmb->ownedMap()), flagCol(colMap), dirCol(colMap);
+      {
+        auto f = flagOwned.getLocalViewHost(Tpetra::Access::OverwriteAll);
+        auto d = dirOwned.getLocalViewHost(Tpetra::Access::OverwriteAll);
+        for (size_t i = 0; i < f.extent(0); ++i) {
+          const LO o = asmb->overlapMap()->getLocalElement(asmb->ownedMap()->getGlobalElement(static_cast<LO>(i)));
+          f(i, 0) = lump[o];
+          d(i, 0) = asmb->dirichletFlags()[o];
+        }
+      }
+      Tpetra::Import<LO, GO, Node> toCols(asmb->ownedMap(), colMap);
+      flagCol.doImport(flagOwned, toCols, Tpetra::INSERT);
+      dirCol.doImport(dirOwned, toCols, Tpetra::INSERT);
+      auto fc = flagCol.getLocalViewHost(Tpetra::Access::ReadOnly);
+      auto dc = dirCol.getLocalViewHost(Tpetra::Access::ReadOnly);
+      const auto entries = [](const CrsMatrix& A, GO row) {
+        std::map<GO, double> e;
+        const size_t n = A.getNumEntriesInGlobalRow(row);
+        typename CrsMatrix::nonconst_global_inds_host_view_type cols("cols", n);
+        typename CrsMatrix::nonconst_values_host_view_type vals("vals", n);
+        size_t got = 0;
+        A.getGlobalRowCopy(row, cols, vals, got);
+        for (size_t k = 0; k < got; ++k) e[cols(k)] += vals(k);
+        return e;
+      };
+      int flaggedRows = 0, neighbourRows = 0;
+      for (size_t i = 0; i < asmb->ownedMap()->getNodeNumElements(); ++i) {
+        const GO row = asmb->ownedMap()->getGlobalElement(static_cast<LO>(i));
+        const LO rowCol = colMap->getLocalElement(row);
+        if (dc(rowCol, 0) != 0) continue;  // identity rows
+        const auto cons = entries(*consistent, row), lumpedRow = entries(*lumped, row);
+        double consSum = 0, lumpedSum = 0;
+        for (const auto& [c, v] : cons) consSum += v;
+        for (const auto& [c, v] : lumpedRow) lumpedSum += v;
+        EXPECT_NEAR(lumpedSum, consSum, 1e-14) << type << ", row " << row;
+        const bool rowFlagged = fc(rowCol, 0) != 0;
+        bool touchesFlagged = false;
+        for (const auto& [c, v] : cons) {
+          if (c == row) continue;
+          const bool colFlagged = fc(colMap->getLocalElement(c), 0) != 0;
+          const double got = lumpedRow.count(c) ? lumpedRow.at(c) : 0.0;
+          if (rowFlagged || colFlagged) {
+            EXPECT_EQ(got, 0.0) << type << ", coupling " << row << "-" << c;
+            touchesFlagged |= colFlagged && v != 0;
+          } else {
+            EXPECT_EQ(got, v) << type << ", coupling " << row << "-" << c;
+          }
+        }
+        flaggedRows += rowFlagged;
+        neighbourRows += !rowFlagged && touchesFlagged;
+      }
+      // The case is not empty: flagged rows and unflagged rows coupled to them (over all ranks).
+      int local[2] = {flaggedRows, neighbourRows}, global[2] = {0, 0};
+      Teuchos::reduceAll(*m.comm(), Teuchos::REDUCE_SUM, 2, local, global);
+      EXPECT_GT(global[0], 0) << type;
+      EXPECT_GT(global[1], 0) << type;
+    }
 }
 
 TEST(Q1AssemblerLoads, LoadsAccumulate) {
