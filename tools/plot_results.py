@@ -481,7 +481,7 @@ def main():
                     help="half width of the time window of the multiplier's mean and range (default 0.05)")
     ap.add_argument("--title", default="paper Example 6.1 (membrane), cf. Fig. 6.3",
                     help="first title line of eta_vs_unknowns.png")
-    ap.add_argument("--adaptive-label", default=PAPER_LABEL, help=f"legend of --adaptive (default: {PAPER_LABEL})")
+    ap.add_argument("--adaptive-label", default=PAPER_LABEL, help="legend of --adaptive (default: %(default)s)")
     ap.add_argument("--eta-only", action="store_true",
                     help="draw only eta_vs_unknowns.png (runs without Exodus output, e.g. the finer study)")
     ap.add_argument("--out", required=True)

@@ -11,6 +11,9 @@
 # tools/deck_from_exodus.py gives back the deck of a run from its Exodus
 # file, and that deck runs to the same step tables, bit for bit; tools/transfer_vs_coarsening.py
 # finds the energy kept to rounding wherever a step's mesh only refines its predecessor's.
+# tools/check_adaptive_meshes.py checks Algorithm 5.3 only between consecutive steps both written
+# (a run written every 4th step passes, saying 5.3 was not checked; two levels between consecutive
+# steps fail).
 # Usage: tool_scripts.sh SIGNORINI SOURCE_DIR WORK_DIR
 set -uo pipefail
 signorini=$1 src=$2 work=$3
@@ -179,6 +182,57 @@ refuses meshes_every "check_adaptive_meshes.py: error: argument --every: 0: not 
   "$py" "$tools/check_adaptive_meshes.py" "$work/membrane" --every 0
 refuses meshes_missing "check_adaptive_meshes.py: error: $work/nothing.e: no such file" \
   "$py" "$tools/check_adaptive_meshes.py" "$work/nothing"
+# check_adaptive_meshes.py checks Algorithm 5.3 only between consecutive steps that are both written:
+# on the default output (every 4th step) it says so and exits 0, and --graded (which needs
+# consecutive meshes) fails; written every step, it checks every pair. Two meshes of a 2:1 balanced
+# series whose cells differ by two levels: a violation as consecutive steps, none with a step between.
+"$py" "$tools/check_adaptive_meshes.py" "$work/membrane" > "$work/meshes-interval4.log" 2>&1 &&
+  grep -q "no two consecutive steps are, so Algorithm 5.3 (between consecutive steps) was NOT CHECKED" \
+    "$work/meshes-interval4.log" && ! grep -q VIOLATION "$work/meshes-interval4.log" ||
+  { cat "$work/meshes-interval4.log"; fail "check_adaptive_meshes.py on a run written every 4th step"; }
+"$py" "$tools/check_adaptive_meshes.py" "$work/membrane" --graded > "$work/meshes-interval4-graded.log" 2>&1 &&
+  { cat "$work/meshes-interval4-graded.log"; fail "--graded passed without two consecutive steps written"; }
+grep -q "VIOLATION: --graded: no two consecutive steps with different meshes are written" \
+  "$work/meshes-interval4-graded.log" || { cat "$work/meshes-interval4-graded.log"; fail "--graded: message"; }
+"$py" "$tools/check_adaptive_meshes.py" "$work/every" --graded > "$work/meshes-every.log" 2>&1 &&
+  grep -q "max level excess over [1-9][0-9]* consecutive pairs: forward 1, backward 1" "$work/meshes-every.log" &&
+  ! grep -q "not every step" "$work/meshes-every.log" ||
+  { cat "$work/meshes-every.log"; fail "check_adaptive_meshes.py on a run written in every step"; }
+/usr/bin/python3 - "$work" <<'PY' || fail "the synthetic mesh series"
+import sys
+import netCDF4
+import numpy as np
+def squares(cells):  # (x, y, size) -> one block of quadrilaterals
+    xy = sorted({(x + dx * s, y + dy * s) for x, y, s in cells for dx in (0, 1) for dy in (0, 1)})
+    index = {p: k + 1 for k, p in enumerate(xy)}
+    conn = [[index[(x, y)], index[(x + s, y)], index[(x + s, y + s)], index[(x, y + s)]] for x, y, s in cells]
+    return np.array(xy, dtype=float), np.array(conn)
+coarse = [(0, 0, 4), (4, 0, 4), (0, 4, 4), (4, 4, 4)]  # level 0
+fine = [(4, 0, 4), (0, 4, 4), (4, 4, 4), (2, 0, 2), (0, 2, 2), (2, 2, 2),  # level 2 in the lower left corner
+        (0, 0, 1), (1, 0, 1), (0, 1, 1), (1, 1, 1)]
+for name, t in (("jump.e", 0.0), ("jump.e-s.0001", 1.0), ("gap.e", 0.0), ("gap.e-s.0001", 2.0)):
+    xy, conn = squares(coarse if t == 0 else fine)
+    with netCDF4.Dataset(f"{sys.argv[1]}/{name}", "w", format="NETCDF3_64BIT_OFFSET") as d:
+        d.createDimension("num_nodes", len(xy))
+        d.createDimension("num_el_in_blk1", len(conn))
+        d.createDimension("num_nod_per_el1", 4)
+        d.createDimension("time_step", None)
+        d.createVariable("coordx", "f8", ("num_nodes",))[:] = xy[:, 0]
+        d.createVariable("coordy", "f8", ("num_nodes",))[:] = xy[:, 1]
+        d.createVariable("connect1", "i4", ("num_el_in_blk1", "num_nod_per_el1"))[:] = conn
+        d.createVariable("time_whole", "f8", ("time_step",))[0] = t
+with open(f"{sys.argv[1]}/jump.steps.csv", "w") as f:
+    f.write("step,t,cells\n0,0,4\n1,1,10\n")
+with open(f"{sys.argv[1]}/gap.steps.csv", "w") as f:
+    f.write("step,t,cells\n0,0,4\n1,1,4\n2,2,10\n")
+PY
+"$py" "$tools/check_adaptive_meshes.py" "$work/jump" > "$work/meshes-jump.log" 2>&1 &&
+  { cat "$work/meshes-jump.log"; fail "a jump of two levels between consecutive steps passed"; }
+grep -q "VIOLATION: jump.e (t = 0) -> jump.e-s.0001 (t = 1): a cell 0 (forward) / 2 (backward) levels coarser" \
+  "$work/meshes-jump.log" || { cat "$work/meshes-jump.log"; fail "the jump between consecutive steps: message"; }
+"$py" "$tools/check_adaptive_meshes.py" "$work/gap" > "$work/meshes-gap.log" 2>&1 &&
+  grep -q "2 of 3 steps written.*was NOT CHECKED" <(tr '\n' ' ' < "$work/meshes-gap.log") ||
+  { cat "$work/meshes-gap.log"; fail "the same meshes two steps apart: no violation, 5.3 not checked"; }
 refuses mirror_no_argument "check_mirror_symmetry.py: error: the following arguments are required: base" \
   "$py" "$tools/check_mirror_symmetry.py"
 refuses sensitivity_no_argument "compare_sensitivity.py: error: the following arguments are required: dir" \
