@@ -38,8 +38,8 @@ const char* kUsage =
     "  --print-parameters        print every valid deck parameter (type, default, doc) and exit\n"
     "  --check                   validate each deck and set up its problem as a run would (the same errors),\n"
     "                            print what the run would do, and write no results\n"
-    "  --output-dir DIR          write all output to DIR (overrides Output/Directory)\n"
-    "  --set 'Sublist/key=value' override a deck entry (repeatable; validated like the deck)\n"
+    "  --output-dir DIR          write all output to DIR (overrides Output/Directory; also --output-dir=DIR)\n"
+    "  --set 'Sublist/key=value' override a deck entry (repeatable, validated like the deck; also --set=...)\n"
     "  --version                 the versions of signorini and of the libraries it was built with\n"
     "  --help                    this text\n";
 
@@ -94,16 +94,31 @@ int main(int argc, char** argv) {
   signorini::core::keepFreedMemory();
   // Kokkos answers "--help" and "-h" with its own 60 lines of options: they are kept from it and
   // mean our usage (Kokkos' own is "--kokkos-help").
-  std::vector<char*> args{argv[0]};
-  bool help = false, kokkosHelp = false;
+  // "--output-dir=DIR" and "--set=SPEC" are the two-word forms (GNU style).
+  std::vector<std::string> words{argv[0]};
   for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i], before = argv[i - 1];
+    const std::string arg = argv[i];
+    const bool valueOption = words.back() == "--set" || words.back() == "--output-dir";
+    bool split = false;
+    for (const std::string option : {"--output-dir=", "--set="})
+      if (!valueOption && !split && arg.rfind(option, 0) == 0) {
+        words.push_back(option.substr(0, option.size() - 1));
+        words.push_back(arg.substr(option.size()));
+        split = true;
+      }
+    if (!split) words.push_back(arg);
+  }
+  std::vector<char*> args{words[0].data()};
+  bool help = false, kokkosHelp = false;
+  argc = static_cast<int>(words.size());
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = words[static_cast<size_t>(i)], before = words[static_cast<size_t>(i - 1)];
     const bool option = before != "--set" && before != "--output-dir";
     kokkosHelp = kokkosHelp || (option && arg == "--kokkos-help");
     if ((arg == "--help" || arg == "-h") && option)
       help = true;
     else
-      args.push_back(argv[i]);
+      args.push_back(words[static_cast<size_t>(i)].data());
   }
   args.push_back(nullptr);
   argc = static_cast<int>(args.size()) - 1;
@@ -163,12 +178,15 @@ int main(int argc, char** argv) {
     } else if (arg.rfind("--", 0) == 0) {
       if (rank == 0) std::cerr << "signorini: unknown option " << arg << "\n" << kUsage;
       return 2;
+    } else if (arg == "-") {
+      if (rank == 0) std::cerr << "signorini: '-' is not a deck name: read a deck from standard input as /dev/stdin\n";
+      return 2;
     } else {
       decks.push_back(arg);
     }
   }
   if (decks.empty()) {
-    if (rank == 0) std::cerr << kUsage;
+    if (rank == 0) std::cerr << "signorini: no deck given\n" << kUsage;
     return 2;
   }
 

@@ -293,7 +293,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   // left under this base (also cycle tables and series it does not write again); a failed run
   // leaves the earlier files as they were.
   io::OutputStaging staging;
-  sim_->createOutputDirectory();
+  const auto lock = sim_->createOutputDirectory();  // released before a failed run's folders are removed
   io::retireOnCommit(base, io::isRunOutputSuffix);
   std::unique_ptr<io::CsvWriter> cyclesCsv;
   core::onRootCollectively(*comm, [&] {

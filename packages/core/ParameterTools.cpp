@@ -145,6 +145,8 @@ void printRecursive(std::ostream& os, const ParameterList& valid, const std::str
     os << full << " : " << typeName(e.getAny()) << " = ";
     if (e.getAny().type() == typeid(std::string))
       os << "\"" << Teuchos::any_cast<std::string>(e.getAny()) << "\"";
+    else if (e.getAny().type() == typeid(bool))
+      os << (Teuchos::any_cast<bool>(e.getAny()) ? "true" : "false");  // as a deck writes it (not 1/0)
     else
       os << e.getAny();
     const std::string range = describeValidator(e);
@@ -306,7 +308,7 @@ void applyOverride(ParameterList& deck, const std::string& spec, const Parameter
     d->set(key, i);
   } else if (t == typeid(bool)) {
     bool b;
-    if (!parseBool(b)) fail("bool (true/false)");
+    if (!readBool(value, b)) fail("bool (true/false)");
     d->set(key, b);
   } else {
     d->set(key, value);
@@ -355,6 +357,15 @@ NumberText readInt(const std::string& text, int& value) {
     return NumberText::outOfRange;
   value = static_cast<int>(read);
   return NumberText::valid;
+}
+
+bool readBool(const std::string& text, bool& value) {
+  const auto first = text.find_first_not_of(" \t"), last = text.find_last_not_of(" \t");
+  std::string word = first == std::string::npos ? "" : text.substr(first, last - first + 1);
+  for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (word == "true" || word == "yes" || word == "1") return value = true, true;
+  if (word == "false" || word == "no" || word == "0") return value = false, true;
+  return false;
 }
 
 namespace {

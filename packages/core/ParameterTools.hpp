@@ -53,6 +53,9 @@ enum class NumberText { valid, notANumber, outOfRange };
 /// \p value is set when the text is valid. A double never counts as out of range (1e999 reads as inf).
 NumberText readDouble(const std::string& text, double& value);
 NumberText readInt(const std::string& text, int& value);
+/// A bool as a deck or --set may write it: true/false, yes/no or 1/0 in any case, blanks around it
+/// allowed (Teuchos' XML reader takes the same words in any case, without blanks).
+bool readBool(const std::string& text, bool& value);
 /// The keys of the validated list \p list that it sets to other than their values in \p defaults,
 /// among those \p filter accepts (all when empty), as "<path>/key, <path>/key2" (empty if none).
 /// Compared by value: Teuchos' isDefault flag is not set when validation adds a whole sublist.

@@ -98,7 +98,12 @@ core::ParameterList outputParameters() {
 /// The longest probe name: "probe:<name>:x" must fit the 256 bytes of a netCDF name.
 constexpr size_t kMaxProbeNameLength = 248;
 
+bool isFileDescriptorPath(const std::string& path);
+
+/// The folder a deck's relative paths are taken from: the deck's own, or the working directory for
+/// a deck read from a stream (/dev/stdin, /dev/fd/N, /proc/self/fd/N), whose "folder" is /dev.
 std::string directoryOf(const std::string& path) {
+  if (path == "/dev/stdin" || isFileDescriptorPath(path)) return ".";
   const auto slash = path.find_last_of('/');
   return slash == std::string::npos ? "." : path.substr(0, slash);
 }
@@ -508,12 +513,36 @@ struct Simulation::Impl {
     return *d.projectionSolver;
   }
 
-  /// L2 projection of an expression at t = 0 (M_rho x = int rho f phi).
+  /// L2 projection of an expression at t = 0 (M_rho x = int rho f phi). A field of the space, e.g.
+  /// a constant velocity, is its own projection: when its nodal interpolant satisfies the equations
+  /// to the solver's tolerance it is taken as it is, to rounding (a solve from 0 erred by the
+  /// tolerance, a deformation of a rigid motion that the estimator showed). Other fields are solved
+  /// from 0, as always, so their projections keep their bits.
   void projectL2(Discretisation& d, const core::ExpressionList& f, Vector& out) {
     Vector b(d.assembler->ownedMap());
     d.assembler->assembleLoad(f, 0.0, problem->density, b);
+    {
+      auto x = out.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      const auto& owned = *d.assembler->ownedMap();
+      const auto& overlap = *d.assembler->overlapMap();
+      const auto& held = d.assembler->dirichletFlags();
+      const auto& coords = d.mesh->nodeCoords();
+      const int nc = problem->components();
+      for (size_t i = 0; i < x.extent(0); ++i) {
+        const LO o = overlap.getLocalElement(owned.getGlobalElement(static_cast<LO>(i)));
+        const auto& at = coords[static_cast<size_t>(o / nc)];
+        const double value = held[static_cast<size_t>(o)] ? 0.0 : f[o % nc](at[0], at[1], 0.0);
+        x(i, 0) = std::isfinite(value) ? value : 0.0;
+      }
+    }
+    auto& solver = projectionSolver(d);
+    Vector r(d.assembler->ownedMap());
+    core::apply(*projectionMass(d), out, r);
+    r.update(1.0, b, -1.0);
+    const double tolerance = solver.relativeTolerance();
+    if (core::dot(r, r) <= tolerance * tolerance * core::dot(b, b)) return;
     out.putScalar(0.0);
-    projectionSolver(d).solve(b, out);
+    solver.solve(b, out);
   }
 
   /// Initial state on d: u0, v0 projected, a0 from (rho a0, phi) + a(u0, phi) = (f(0), phi) + Neumann.
@@ -839,8 +868,12 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   ensureWritableDirectory(I.outDir, I.outDirKey, *comm, false);
 }
 
-void Simulation::createOutputDirectory() const {
+std::unique_ptr<io::OutputLock> Simulation::createOutputDirectory() const {
   ensureWritableDirectory(impl_->outDir, impl_->outDirKey, *impl_->comm, true);
+  // One run at a time per output base: a second one would retire this run's files in progress.
+  std::unique_ptr<io::OutputLock> lock;
+  core::onRootCollectively(*impl_->comm, [&] { lock = std::make_unique<io::OutputLock>(outputBase()); });
+  return lock;
 }
 
 Simulation::~Simulation() = default;
@@ -899,7 +932,7 @@ RunSummary Simulation::run() {
   // The run's files appear when it has succeeded and replace every file an earlier run left under
   // this base; a failed run leaves them as they were (io::OutputStaging).
   io::OutputStaging staging;
-  createOutputDirectory();
+  const auto lock = createOutputDirectory();  // released before a failed run's folders are removed
   io::retireOnCommit(outputBase(), io::isRunOutputSuffix);
   std::vector<std::shared_ptr<mesh::Forest>> meshes(numSteps(), impl_->initialForest);
   auto summary = runPass(meshes, StepHook(), PassOptions());

@@ -12,6 +12,7 @@
 #include "ContactCoupling.hpp"
 #include "Forest.hpp"
 #include "LinearSolver.hpp"
+#include "OutputStaging.hpp"
 #include "ParameterTools.hpp"
 #include "ProblemData.hpp"
 #include "Q1Assembler.hpp"
@@ -117,8 +118,10 @@ class Simulation {
   const std::string& outputBase() const;  ///< output folder + "/" + basename
   /// Creates the output folder (and its parents) if it is missing; run() does this first, in its
   /// staging scope, so that a failed run removes them again (io::removeOnFailure). The
-  /// constructor only checks that it could (and leaves no folder behind). Collective.
-  void createOutputDirectory() const;
+  /// constructor only checks that it could (and leaves no folder behind). Returns the lock of the
+  /// output base for the run (io::OutputLock; on rank 0, null on the others), which the caller holds
+  /// until its files are committed and releases before the staging scope ends. Collective.
+  [[nodiscard]] std::unique_ptr<io::OutputLock> createOutputDirectory() const;
   /// Throws core::UserError naming \p cause if a step mesh of \p globalCells cells certainly
   /// cannot fit into this machine's memory or exceeds the 32-bit local indices of p4est and Tpetra
   /// on a rank. Collective. The memory is a lower bound: 750 bytes per cell times (unknowns per

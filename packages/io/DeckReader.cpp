@@ -30,6 +30,9 @@ void checkEntries(const Teuchos::XMLObject& node, const std::string& path, const
     if ((child.getTag() == "ParameterList" || child.getTag() == "Parameter") && child.hasAttribute("name") &&
         !names.insert(name).second)
       SIGNORINI_USER_ERROR(file << ": '" << full << "' is given twice");
+    if (child.getTag() == "Parameter" && (!child.hasAttribute("type") || !child.hasAttribute("value")))
+      SIGNORINI_USER_ERROR(file << ": '" << full << "' has no " << (child.hasAttribute("type") ? "value" : "type")
+                                << " attribute (<Parameter name=\"...\" type=\"double\" value=\"...\"/>)");
     if (child.getTag() == "ParameterList") {
       checkEntries(child, full, file);
     } else if (child.getTag() == "Parameter" && child.hasAttribute("type") && child.hasAttribute("value")) {
@@ -42,6 +45,13 @@ void checkEntries(const Teuchos::XMLObject& node, const std::string& path, const
       }
       double x;
       int i;
+      bool b;
+      if (type == "bool") {  // Teuchos' message names neither the key nor the line, and it refuses blanks
+        if (!core::readBool(value, b))
+          SIGNORINI_USER_ERROR(file << ": '" << full << "' = \"" << value << "\" is not a bool (true or false)");
+        Teuchos::XMLObject entry = child;  // a handle: the parsed tree itself gets the plain word
+        entry.addAttribute("value", std::string(b ? "true" : "false"));
+      }
       if (type == "double" && core::readDouble(value, x) != core::NumberText::valid)
         SIGNORINI_USER_ERROR(file << ": '" << full << "' = \"" << value << "\" is not a number");
       const auto integer = type == "int" ? core::readInt(value, i) : core::NumberText::valid;

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <climits>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -10,6 +12,9 @@
 #include <utility>
 #include <vector>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "Error.hpp"
@@ -231,6 +236,39 @@ void retireOnCommit(const std::string& basePath, const std::function<bool(const 
   }
   std::error_code ec;
   for (const auto& f : retiredFiles(r, {})) fs::remove(f, ec);
+}
+
+OutputLock::OutputLock(const std::string& base) : path_(base + ".lock") {
+  for (;;) {
+    fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0)
+      SIGNORINI_USER_ERROR("cannot create the lock file '" << path_ << "' of the run's output (" << std::strerror(errno)
+                                                           << ")");
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      const int error = errno;
+      ::close(fd_);
+      fd_ = -1;
+      if (error == EWOULDBLOCK)
+        SIGNORINI_USER_ERROR("another run is writing its results under the output base '"
+                             << base << "' (it holds '" << path_
+                             << "'); wait for it to end, or give this run its own Output/Basename or --output-dir");
+      SIGNORINI_USER_ERROR("cannot lock '" << path_ << "' (" << std::strerror(error) << ")");
+    }
+    // The holder before us may have removed the file between our open and our lock: then the lock
+    // is on a file without a name, and a third run could lock a new one. Take the named file.
+    struct stat held, named;
+    if (::fstat(fd_, &held) == 0 && ::stat(path_.c_str(), &named) == 0 && held.st_dev == named.st_dev &&
+        held.st_ino == named.st_ino)
+      return;
+    ::close(fd_);
+    fd_ = -1;
+  }
+}
+
+OutputLock::~OutputLock() {
+  if (fd_ < 0) return;
+  ::unlink(path_.c_str());  // while still locked, so no other run takes the name in between
+  ::close(fd_);
 }
 
 }  // namespace signorini::io

@@ -34,6 +34,23 @@ class OutputStaging {
   bool done_ = false;
 };
 
+/// While it lives, this process holds "<base>.lock" (an exclusive flock), so that a second run under
+/// the same output base, in another process, fails at its start (core::UserError) instead of
+/// retiring the first run's ".part" files while that run is still writing them. The file is
+/// removed when the lock is released; one that a killed run left is taken over (the kernel
+/// released its lock with the process).
+class OutputLock {
+ public:
+  explicit OutputLock(const std::string& base);
+  ~OutputLock();
+  OutputLock(const OutputLock&) = delete;
+  OutputLock& operator=(const OutputLock&) = delete;
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+};
+
 /// Directories the open scope's run created for its output (parents first): a run that fails
 /// removes them again if they are empty. Outside a scope: nothing.
 void removeOnFailure(const std::vector<std::string>& createdDirectories);

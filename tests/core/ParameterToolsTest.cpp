@@ -449,9 +449,26 @@ TEST(ApplyOverride, IntThatOverflowsIsRejectedNotWrapped) {
 }
 
 TEST(ApplyOverride, BadValueForABoolRejected) {
-  const auto msg = overrideError("Mesh/Verbose=yes");
-  EXPECT_CONTAINS(msg, "'yes'");
+  const auto msg = overrideError("Mesh/Verbose=maybe");
+  EXPECT_CONTAINS(msg, "'maybe'");
   EXPECT_CONTAINS(msg, "bool");
+}
+
+// The words Teuchos' XML reader takes for a bool in a deck (true/false, yes/no, 1/0, any case),
+// with blanks around them as for numbers; nothing else.
+TEST(ReadBool, TheDecksWordsInAnyCaseWithBlanks) {
+  bool b = false;
+  for (const std::string word : {"true", "TRUE", " True ", "yes", "YES\t", "1"}) {
+    b = false;
+    EXPECT_TRUE(readBool(word, b) && b) << "'" << word << "'";
+  }
+  for (const std::string word : {"false", "False", "\tno", "NO", "0 "}) {
+    b = true;
+    EXPECT_TRUE(readBool(word, b) && !b) << "'" << word << "'";
+  }
+  for (const std::string word : {"", " ", "maybe", "t", "y", "2", "true false", "on", "off", "10"}) {
+    EXPECT_FALSE(readBool(word, b)) << "'" << word << "'";
+  }
 }
 
 TEST(ApplyOverride, MissingEqualsOrKeyRejected) {

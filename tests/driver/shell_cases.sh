@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Driver cases that need a shell: a deck on stdin under mpirun (rank 0 reads it for every rank;
 # the other ranks' stdin is empty, and they used to fail alone while rank 0 waited forever), a deck
-# from a process substitution (/dev/fd/N needs Output/Basename), and a batch whose second deck reaches the first one's output base through a symbolic link.
+# from a process substitution (/dev/fd/N needs Output/Basename), a batch whose second deck reaches the
+# first one's output base through a symbolic link, a deck on stdin with a relative Mesh/File, the
+# lock of an output base (one run at a time per base), and the command line's --opt=value forms.
 # Usage: shell_cases.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
 # MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (FindMPI's MPIEXEC_EXECUTABLE,
 # MPIEXEC_NUMPROC_FLAG, MPIEXEC_PREFLAGS; see cmake/SignoriniTesting.cmake); a bare executable gets -n.
@@ -44,4 +46,40 @@ status=$?
 [ "$status" = 1 ] || { cat "$work/batch.log"; fail "a batch writing one output base twice (through a link): exit status $status"; }
 grep -q "deck-link[.]xml: writes to the output base '.*/link/same' of the batch's deck .*deck-real[.]xml" "$work/batch.log" ||
   { cat "$work/batch.log"; fail "no message naming both decks"; }
-echo "a deck on stdin runs on 2 ranks; a deck from <(...) needs Output/Basename; one output base through a link is refused"
+# A deck on stdin takes a relative Mesh/File from the working directory (its "folder" is /dev).
+(cd "$src/tests/driver/decks" && "$signorini" --check --output-dir "$work/stdin-exodus" /dev/stdin < good-exodus.xml) \
+  > "$work/stdin-exodus.log" 2>&1 || { cat "$work/stdin-exodus.log"; fail "a deck on stdin with a relative Mesh/File"; }
+
+# One run at a time per output base: a second run under the base of a run in progress (here the
+# lock held by this shell through flock(1)) fails at its start, writes nothing and leaves the lock alone; a lock file
+# that a killed run left is taken over, and a run removes its lock file at its end.
+mkdir -p "$work/locked"
+exec 9> "$work/locked/good.lock"
+flock -n 9 || fail "flock(1) could not lock $work/locked/good.lock"
+"$signorini" --output-dir "$work/locked" "$good" 9>&- > "$work/locked.log" 2>&1
+status=$?
+exec 9>&-  # the holder ends: its lock file stays, as a killed run's would
+[ "$status" = 1 ] || { cat "$work/locked.log"; fail "a run under a locked output base: exit status $status"; }
+grep -q "another run is writing its results under the output base '.*/locked/good' (it holds '.*/locked/good[.]lock')" \
+  "$work/locked.log" || { cat "$work/locked.log"; fail "a run under a locked output base: no message naming the lock"; }
+[ "$(ls "$work/locked")" = "good.lock" ] || fail "a run under a locked output base wrote: $(ls "$work/locked")"
+"$signorini" --output-dir "$work/locked" "$good" > "$work/unlocked.log" 2>&1 ||
+  { cat "$work/unlocked.log"; fail "a run after the lock's holder ended (a stale lock file) failed"; }
+[ ! -e "$work/locked/good.lock" ] || fail "a run left its lock file"
+[ -e "$work/locked/good.steps.csv" ] || fail "the run after the stale lock wrote no step table"
+
+# Command-line forms: --output-dir=DIR and --set=SPEC; '-' and no deck are usage errors that say so.
+"$signorini" --check --output-dir="$work/equals" --set='Time Integration/Final Time=0.005' "$good" \
+  > "$work/equals.log" 2>&1 || { cat "$work/equals.log"; fail "--output-dir=DIR --set=SPEC refused"; }
+grep -q "output: .*/equals/good[.][*]" "$work/equals.log" || { cat "$work/equals.log"; fail "--output-dir=DIR not used"; }
+grep -q "2 steps" "$work/equals.log" || { cat "$work/equals.log"; fail "--set=SPEC not used"; }
+"$signorini" - > "$work/dash.log" 2>&1
+status=$?
+[ "$status" = 2 ] && grep -q "'-' is not a deck name: .* /dev/stdin" "$work/dash.log" ||
+  { cat "$work/dash.log"; fail "'-' as the deck: exit status $status"; }
+"$signorini" --check > "$work/none.log" 2>&1
+status=$?
+[ "$status" = 2 ] && grep -q "no deck given" "$work/none.log" || { cat "$work/none.log"; fail "no deck: exit status $status"; }
+echo "a deck on stdin runs on 2 ranks and takes Mesh/File from the working directory; a deck from <(...) needs"
+echo "Output/Basename; one output base through a link is refused; a locked output base is refused, a stale lock"
+echo "taken over; --output-dir=DIR and --set=SPEC work; '-' and no deck are usage errors"

@@ -120,6 +120,18 @@ signorini_add_bad_deck_test(hidden_basename_from_deck_name ${decks}/.hidden.xml
 signorini_add_bad_deck_test(unknown_key ${decks}/unknown-key.xml
   "unknown-key[.]xml: unknown parameter 'Time Stepp' in sublist 'Time Integration'"
   "did you mean 'Time Step'")
+# Bools: Teuchos' own message names neither the key nor the line.
+signorini_add_bad_deck_test(bad_bool ${decks}/bad-bool.xml
+  "bad-bool[.]xml: 'Output/Write Exodus' = \"MAYBE\" is not a bool [(]true or false[)]")
+signorini_add_bad_deck_test(missing_type ${decks}/missing-type.xml
+  "missing-type[.]xml: 'Time Integration/Time Step' has no type attribute")
+# true/false, yes/no, 1/0 in any case with blanks around, in a deck and in --set alike.
+signorini_add_driver_test(bool_words_in_deck EXIT 0
+  ARGS --output-dir {OUT} ${decks}/bool-words.xml
+  FILES bool-words.steps.csv)
+signorini_add_driver_test(bool_words_in_set EXIT 0
+  ARGS --output-dir {OUT} --set "Output/Write Exodus= No " --set "Estimator/Compute S1=YES" ${decks}/good.xml
+  FILES good.steps.csv)
 signorini_add_bad_deck_test(wrong_type ${decks}/wrong-type.xml
   "wrong-type[.]xml: 'Time Integration/Time Step' has type string but must be double")
 signorini_add_bad_deck_test(zero_time_step ${decks}/zero-time-step.xml
@@ -342,7 +354,7 @@ signorini_add_driver_test(print_parameters EXIT 0
   ARGS --print-parameters
   REGEX "Time Integration/Time Step : double = 0[.]0025"
         "Mesh/Boundary Segments/  [(]sublist[)]"
-        "Output/Write Exodus : bool")
+        "Output/Write Exodus : bool = true")
 
 # An output that cannot be written (its name taken by a directory) is an error on every rank, at
 # whatever point of the run it happens (rank 0 writes; the others used to wait for it), and the

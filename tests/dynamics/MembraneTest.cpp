@@ -244,7 +244,7 @@ TEST(Membrane, KKTConditionsHoldAtEveryStep) {
   };
   dynamics::PassOptions options;
   options.writeExodus = false;
-  sim.createOutputDirectory();  // (run() does this itself; runPass() writes into it)
+  const auto lock = sim.createOutputDirectory();  // (run() does this itself; runPass() writes into it)
   sim.runPass(std::vector<std::shared_ptr<mesh::Forest>>(sim.numSteps(), sim.initialForest()), hook, options);
   EXPECT_EQ(steps, 400);
   EXPECT_GE(lowestGap, -tol);           // no segment penetrates the obstacle (in the mean)
