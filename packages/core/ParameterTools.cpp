@@ -82,9 +82,14 @@ void validateRecursive(ParameterList& deck, const ParameterList& valid, const st
     const std::string& key = deck.name(it);
     const std::string full = join(path, key);
     if (!valid.isParameter(key)) {
-      const std::string guess = closestName(key, names(valid));
-      SIGNORINI_USER_ERROR(context << ": unknown parameter '" << key << "' in " << where
-                                   << (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+      std::string guess = closestName(key, names(valid));
+      // a key given outside its sublist ("Time Step" at the top level for "Time Integration/Time Step")
+      for (auto vt = valid.begin(); guess.empty() && !deck.entry(it).isList() && vt != valid.end(); ++vt)
+        if (valid.entry(vt).isList() && valid.sublist(valid.name(vt)).isParameter(key) &&
+            !valid.sublist(valid.name(vt)).getEntry(key).isList())
+          guess = join(join(path, valid.name(vt)), key);
+      SIGNORINI_USER_ERROR(context << ": unknown " << (deck.entry(it).isList() ? "sublist" : "parameter") << " '"
+                                   << key << "' in " << where << (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
     }
     const auto& ventry = valid.getEntry(key);
     auto& dentry = deck.getEntry(key);

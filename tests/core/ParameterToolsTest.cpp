@@ -107,9 +107,18 @@ TEST(ValidateDeck, UnknownTopLevelSublistSuggestsClosest) {
   ParameterList deck;
   deck.sublist("Mesch").set("Cells X", 4);
   const auto msg = validateError(deck);
-  EXPECT_CONTAINS(msg, "'Mesch'");
+  EXPECT_CONTAINS(msg, "unknown sublist 'Mesch'");  // a sublist is not called a parameter
   EXPECT_CONTAINS(msg, "top level");
   EXPECT_CONTAINS(msg, "did you mean 'Mesh'");
+}
+
+// A key given outside its sublist is found in the sublist that has it (as --set does).
+TEST(ValidateDeck, KeyOutsideItsSublistNamesTheSublist) {
+  ParameterList deck;
+  deck.set("Time Step", 0.01);
+  const auto msg = validateError(deck);
+  EXPECT_CONTAINS(msg, "unknown parameter 'Time Step' in the top level");
+  EXPECT_CONTAINS(msg, "did you mean 'Time Integration/Time Step'");
 }
 
 TEST(ValidateDeck, UnknownKeyIsCaseInsensitiveWhenSuggesting) {
