@@ -14,6 +14,7 @@
 
 #include "Error.hpp"
 #include "MpiComm.hpp"
+#include "ParameterTools.hpp"
 #include "JacobiCG.hpp"
 #include "ReproducibleSum.hpp"
 
@@ -270,6 +271,16 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
   const auto valid = I.solver->getValidParameters();
   for (const char* scaling : {"Implicit Residual Scaling", "Explicit Residual Scaling"})
     if (valid->isParameter(scaling) && !belosParams->isParameter(scaling)) belosParams->set(scaling, "Norm of RHS");
+  // A key the method does not know, with its closest valid name (Teuchos' message names neither).
+  for (auto it = belosParams->begin(); it != belosParams->end(); ++it)
+    if (!valid->isParameter(belosParams->name(it))) {
+      std::vector<std::string> names;
+      for (auto jt = valid->begin(); jt != valid->end(); ++jt) names.push_back(valid->name(jt));
+      const std::string guess = core::closestName(belosParams->name(it), names);
+      SIGNORINI_USER_ERROR("Linear Solver/Belos: '" << belosParams->name(it) << "' is not a parameter of Belos' \""
+                                                    << method << "\""
+                                                    << (guess.empty() ? "" : " (did you mean '" + guess + "'?)"));
+    }
   try {
     I.solver->setParameters(belosParams);
   } catch (std::exception& e) {

@@ -755,7 +755,10 @@ signorini_add_driver_test(muelu_sublist_without_muelu EXIT 0
         "good[.]xml is valid")
 signorini_add_driver_test(belos_sublist_unknown_key EXIT 1
   ARGS --check --output-dir {OUT} --set "Linear Solver/Belos/Bogus Key=1" ${decks}/good.xml
-  REGEX "Linear Solver/Belos: Belos' \"CG\" refuses its parameters: .*Bogus Key")
+  REGEX "Linear Solver/Belos: 'Bogus Key' is not a parameter of Belos' \"CG\"\n")
+signorini_add_driver_test(belos_sublist_misspelt_key EXIT 1
+  ARGS --check --output-dir {OUT} --set "Linear Solver/Belos/Output Frequncy=5" ${decks}/good.xml
+  REGEX "Linear Solver/Belos: 'Output Frequncy' is not a parameter of Belos' \"CG\" [(]did you mean 'Output Frequency'[?][)]")
 signorini_add_driver_test(reproducible_arithmetic_scalar_only EXIT 1
   ARGS --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" --set "Problem/Type=plane strain elasticity"
        ${decks}/good.xml
