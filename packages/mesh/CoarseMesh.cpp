@@ -38,7 +38,11 @@ std::shared_ptr<CoarseMesh> CoarseMesh::create(const core::ParameterList& p) {
   });
   if (!otherType.empty())
     SIGNORINI_USER_ERROR(otherType << (exodus ? ": applies to Type = rectangle only (the Exodus file gives the mesh)"
-                                              : ": applies to Type = exodus only"));
+                                              : ": applies to Type = exodus only")
+                                   << (otherType.find(", ") == std::string::npos
+                                           ? "; remove it from the deck or set it to its default"
+                                           : "; remove them from the deck or set them to their defaults")
+                                   << " (--print-parameters), e.g. with --set when switching a deck's Mesh/Type");
   if (exodus) {
     const std::string file = p.get<std::string>("File");
     if (file.empty()) SIGNORINI_USER_ERROR("Mesh/File: Type is \"exodus\" but no file is given");

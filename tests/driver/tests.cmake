@@ -177,7 +177,7 @@ signorini_add_driver_test(stiffness_for_elasticity EXIT 1
   REGEX "Problem/Stiffness: applies to Type = scalar wave only")
 signorini_add_driver_test(rectangle_keys_on_exodus_mesh EXIT 1
   ARGS --output-dir {OUT} --set "Mesh/Cells X=7" --set "Mesh/X1=5" ${decks}/good-exodus.xml
-  REGEX "Mesh/(X1, Mesh/Cells X|Cells X, Mesh/X1): applies to Type = rectangle only [(]the Exodus file gives the mesh[)]")
+  REGEX "Mesh/(X1, Mesh/Cells X|Cells X, Mesh/X1): applies to Type = rectangle only [(]the Exodus file gives the mesh[)]; remove them from the deck or set them to their defaults")
 signorini_add_driver_test(exodus_file_on_rectangle EXIT 1
   ARGS --output-dir {OUT} --set "Mesh/File=mesh.exo" ${decks}/good.xml
   REGEX "Mesh/File: applies to Type = exodus only")
