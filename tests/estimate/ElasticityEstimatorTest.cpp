@@ -505,41 +505,47 @@ TEST(ElasticityEstimator, EtaStarDecreasesLikeH) {
 TEST(ElasticityEstimator, ContactTermsMatchTheScalarEstimator) {
   // The constrained component penetrates a curved obstacle on the bottom; the other component
   // is arbitrary. s0 and s1 must be those of the scalar field sign * u_y (hand-checked there).
-  for (const char* direction : {"+y", "-y"}) {
-    const double sign = direction[0] == '+' ? 1.0 : -1.0;
-    Case s(2, true);
-    s.finish({{"Contact Segments", "bottom"},
-              {"Contact Direction", direction},
-              {"Dirichlet Segments", "top"},
-              {"Obstacle", "0.05*sin(pi*x) - 0.01"}});
-    auto w = [](double x, double y) { return 0.02 * x * (1 - y) - 0.005; };  // sign u_y
-    s.interpolate([](double x, double y) { return x * y; }, [&](double x, double y) { return sign * w(x, y); }, *s.u);
-    s.interpolate([](double, double) { return 0.0; }, [](double, double) { return 0.0; }, *s.pred);
-    for (size_t j = 0; j < s.lambda.size(); ++j) s.lambda[j] = -0.1 * (1.0 + j);
-    const auto r = s.run();
-    // The scalar problem on the same mesh.
-    auto p = fem::ProblemData::getValidParameters();
-    p.set("Contact Segments", "bottom");
-    p.set("Dirichlet Segments", "top");
-    p.set("Obstacle", "0.05*sin(pi*x) - 0.01");
-    fem::ProblemData scalarProblem(p, *s.segments);
-    fem::Q1Assembler scalar(*s.mesh, s.mesh->nodesOnSegments(scalarProblem.dirichletMask));
-    fem::ContactCoupling coupling(*s.mesh, scalarProblem.contactMask, fem::ContactCoupling::SegmentSize::TwoEdges,
-                                  scalar.dirichletFlags());
-    Vector u(s.mesh->ownedMap()), pred(s.mesh->ownedMap());
-    {
-      auto h = u.getLocalViewHost(Tpetra::Access::OverwriteAll);
-      for (size_t i = 0; i < h.extent(0); ++i) h(i, 0) = w(s.mesh->nodeCoords()[i][0], s.mesh->nodeCoords()[i][1]);
+  // With rollers on the left (u_y = 0 only) the continuation of s1 is zero on the nodes where u_y is
+  // fixed, top and left, as for the scalar problem clamped on both: the fixed nodes of the
+  // constrained component, not those of u_x (which is free on the left).
+  for (const bool rollers : {false, true})
+    for (const char* direction : {"+y", "-y"}) {
+      const double sign = direction[0] == '+' ? 1.0 : -1.0;
+      Case s(2, true);
+      std::map<std::string, std::string> entries{{"Contact Segments", "bottom"},
+                                                 {"Contact Direction", direction},
+                                                 {"Dirichlet Segments", "top"},
+                                                 {"Obstacle", "0.05*sin(pi*x) - 0.01"}};
+      if (rollers) entries["Dirichlet Y Segments"] = "left";
+      s.finish(entries);
+      auto w = [](double x, double y) { return 0.02 * x * (1 - y) - 0.005; };  // sign u_y
+      s.interpolate([](double x, double y) { return x * y; }, [&](double x, double y) { return sign * w(x, y); }, *s.u);
+      s.interpolate([](double, double) { return 0.0; }, [](double, double) { return 0.0; }, *s.pred);
+      for (size_t j = 0; j < s.lambda.size(); ++j) s.lambda[j] = -0.1 * (1.0 + j);
+      const auto r = s.run();
+      // The scalar problem on the same mesh.
+      auto p = fem::ProblemData::getValidParameters();
+      p.set("Contact Segments", "bottom");
+      p.set("Dirichlet Segments", rollers ? "top, left" : "top");
+      p.set("Obstacle", "0.05*sin(pi*x) - 0.01");
+      fem::ProblemData scalarProblem(p, *s.segments);
+      fem::Q1Assembler scalar(*s.mesh, s.mesh->nodesOnSegments(scalarProblem.dirichletMask));
+      fem::ContactCoupling coupling(*s.mesh, scalarProblem.contactMask, fem::ContactCoupling::SegmentSize::TwoEdges,
+                                    scalar.dirichletFlags());
+      Vector u(s.mesh->ownedMap()), pred(s.mesh->ownedMap());
+      {
+        auto h = u.getLocalViewHost(Tpetra::Access::OverwriteAll);
+        for (size_t i = 0; i < h.extent(0); ++i) h(i, 0) = w(s.mesh->nodeCoords()[i][0], s.mesh->nodeCoords()[i][1]);
+      }
+      auto params = estimate::ResidualEstimator::getValidParameters();
+      params.set("Scaling", "step");
+      const auto rs = estimate::ResidualEstimator(params).estimate(estimate::EstimatorInput{
+          *s.forest, *s.mesh, scalar, scalarProblem, &coupling, s.time, s.k, s.beta, u, pred, s.lambda, solveCG});
+      EXPECT_GT(rs.s0, 0.0);
+      EXPECT_GT(rs.s1, 0.0);
+      EXPECT_NEAR(r.s0, rs.s0, 1e-12 * rs.s0) << direction << (rollers ? ", rollers" : "");
+      EXPECT_NEAR(r.s1, rs.s1, 1e-9 * rs.s1) << direction << (rollers ? ", rollers" : "");
     }
-    auto params = estimate::ResidualEstimator::getValidParameters();
-    params.set("Scaling", "step");
-    const auto rs = estimate::ResidualEstimator(params).estimate(estimate::EstimatorInput{
-        *s.forest, *s.mesh, scalar, scalarProblem, &coupling, s.time, s.k, s.beta, u, pred, s.lambda, solveCG});
-    EXPECT_GT(rs.s0, 0.0);
-    EXPECT_GT(rs.s1, 0.0);
-    EXPECT_NEAR(r.s0, rs.s0, 1e-12 * rs.s0) << direction;
-    EXPECT_NEAR(r.s1, rs.s1, 1e-9 * rs.s1) << direction;
-  }
 }
 
 TEST(ElasticityEstimator, PhysicalScalingDoesNotDependOnTheUnitOfForce) {

@@ -601,6 +601,23 @@ TEST(ResidualEstimatorS1, MatchesDiscreteHarmonicContinuation) {
   EXPECT_EQ(s0none, 0.0);
 }
 
+TEST(ResidualEstimatorS1, SeesOnlyThePositivePartOfThePenetration) {
+  // s1 is the energy of the discrete harmonic continuation of (g - u_h)^+ from the contact boundary:
+  // with u_h = 0 the obstacle g = 0.2 (y - 1/2), which penetrates only for y > 1/2, gives the same
+  // s1 as max(g, 0) (the negative part must not enter the boundary values).
+  auto s1For = [&](const std::string& obstacle) {
+    EstimatorCase s(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 3);
+    s.finish({{"Dirichlet Segments", "left"}, {"Contact Segments", "right"}, {"Obstacle", obstacle}});
+    s.u->putScalar(0.0);
+    s.pred->putScalar(0.0);
+    for (auto& l : s.lambda) l = -0.02;
+    return s.run(true).s1;
+  };
+  const double positivePart = s1For("max(0.2*(y - 0.5), 0)");
+  ASSERT_GT(positivePart, 0.0);
+  EXPECT_NEAR(s1For("0.2*(y - 0.5)"), positivePart, 1e-12 * positivePart);
+}
+
 TEST(ResidualEstimatorS1, OperatorsFromTheStepMatricesAndWarmStartsGiveTheSameValue) {
   // s1 with its H^1 operator formed from the step's M_rho and K_kappa (rho = 2, kappa = 3) and with
   // the continuation cached per mesh (second call on the same mesh starts from the first

@@ -21,6 +21,7 @@
 #include "ContactCoupling.hpp"
 #include "ContactQP.hpp"
 #include "Expression.hpp"
+#include "JacobiCG.hpp"
 #include "LinearSolver.hpp"
 #include "StripSchurApproximation.hpp"
 #include "Q1Assembler.hpp"
@@ -164,10 +165,14 @@ TEST(ContactCoupling, LoneAndOddUnrefinedFacesJoinASegment) {
       {7, [](double y) { return y < 1 || y > 6; }, {{0, 4}, {4, 10}, {10, 14}}, {{0, 4}, {4, 10}, {10, 14}}},
       // nothing refined: (0, 1) and (3, 4) pair, the middle face joins the segment before it
       {5, [](double) { return false; }, {{0, 6}, {6, 10}}, {{0, 4}, {4, 10}}},
+      // four faces: (0, 1) and (2, 3) pair from both ends; face 0 (or 3) refined: face 1 (or 2)
+      // joins its partner's fine edges in a segment of three edges, the other pair is one segment
+      {4, [](double y) { return y < 1; }, {{0, 4}, {4, 8}}, {{0, 4}, {4, 8}}},
+      {4, [](double y) { return y > 3; }, {{0, 4}, {4, 8}}, {{0, 4}, {4, 8}}},
   };
   for (const auto& c : cases) {
     test::TestMesh tm(0.0, 1.0, 0.0, c.trees, 1, c.trees, 0);
-    ASSERT_EQ(tm.coarse->numTrees(), c.trees);  // cell counts 1 and 5 or 7 share no power of two
+    ASSERT_EQ(tm.coarse->numTrees(), c.trees);  // 1 x 4, 5 or 7 cells: trees of one cell
     tm.forest->refineIf([&](int tree, const p4est_quadrant_t&) { return c.refined(tm.coarse->mapPoint(tree, 0.5, 0.5)[1]); });
     tm.forest->partition();
     const auto& m = tm.build();
@@ -584,6 +589,77 @@ TEST(ContactQP, ReturnsOnlyResultsWithinItsTolerance) {
         }
       }
     }
+}
+
+// The active set's gaps are closed to a tenth of the gap tolerance (CG on Q_AA stops only at
+// |G_j| <= 0.1 tol |E_j|, the margin its history reports), so recomputed from u = A^{-1}(F - B lambda)
+// (solved here to relative 1e-15) every segment with lambda_j < 0 has |G_j| / |E_j| <= 0.1 tol, over
+// partial and full contact, each CG preconditioner and tolerances 1e-4 ... 1e-9. At tol the margin
+// would be lost: the lumped and unpreconditioned CG then stop at 0.12 to 0.18 tol.
+TEST(ContactQP, ActiveGapsMeetATenthOfTheTolerance) {
+  const PushedSquare square;
+  const auto& B = square.B;
+  const int ns = square.ns;
+  core::ParameterList linear;
+  linear.set("Relative Tolerance", 1e-15);
+  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters(), linear), square.m.comm());
+  solver.setOperator(square.A, 1.0);
+  for (const char* obstacle : {"-1.6 + 0.3*y", "-1.3 + 0.3*y", "-0.5 + 0.3*y"}) {
+    const auto gbar = B.weightedObstacle(core::Expression(obstacle, "test"), 0.0);
+    for (const char* preconditioner : {"strip", "lumped", "none"})
+      for (double tol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9}) {
+        core::ParameterList cp;
+        cp.set("KKT Tolerance", tol);
+        cp.set("Schur Preconditioner", preconditioner);
+        cp.set("Newton Step Solver", "CG");
+        solvers::ContactQP qp(validated(solvers::ContactQP::getValidParameters(), cp), 1.0);
+        qp.setSystem(*square.A, B, 1.0, {});
+        std::vector<double> lambda(ns, 0.0), G;
+        Vector u(square.m.ownedMap());
+        qp.solve(solver, B, square.F, gbar, lambda, u, G);
+        const auto G2 = square.gaps(solver, gbar, lambda, u);
+        for (int j = 0; j < ns; ++j)
+          if (lambda[j] < 0) {
+            EXPECT_LE(std::abs(G2[j]) / B.segmentLength()[j], 0.1 * tol * (1 + 1e-6))
+                << obstacle << ", " << preconditioner << ", tolerance " << tol << ", segment " << j;
+          }
+      }
+  }
+}
+
+TEST(CoarseSchurCorrection, IsTheGramMatrixOfTheCoarseLoads) {
+  // Q_c = L^T A_c^{-1} L is the Gram matrix of the loads l_j in the inner product of A_c^{-1} (SPD):
+  // Q_c,jj = |l_j|^2 > 0 and Cauchy-Schwarz Q_c,ij^2 <= Q_c,ii Q_c,jj, and each entry is l_i^T x_j
+  // for x_j = A_c^{-1} l_j solved here independently (Jacobi CG to 1e-14), diagonal included.
+  const PushedSquare square;  // 8 x 8 cells, contact on the right: 4 segments (H = 2h)
+  const int ns = square.ns;
+  ASSERT_EQ(ns, 4);
+  test::TestMesh coarse(0.0, 1.0, 0.0, 1.0, 1, 1, 2, Teuchos::rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF)));
+  const auto& mc = coarse.build();
+  const fem::Q1Assembler ca(mc, mc.nodesOnSegments(kLeft));
+  const auto Ac = ca.assembleOperator(1.0, 0.5 * square.k * square.k, 1.0, 1.0);
+  const auto loads = square.B.coarseLoads(ca);
+  const auto Q = solvers::CoarseSchurCorrection(Ac).schur(loads, ns);
+  ASSERT_EQ(Q.size(), static_cast<size_t>(ns * ns));
+  const size_t n = Ac->getRowMap()->getNodeNumElements();
+  std::vector<Vector> l, x;
+  for (int j = 0; j < ns; ++j) {
+    l.emplace_back(Ac->getRowMap());
+    x.emplace_back(Ac->getRowMap());
+    {
+      auto h = l[j].getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (size_t i = 0; i < n; ++i) h(i, 0) = loads[j * n + i];
+    }
+    x[j].putScalar(0.0);
+    solvers::solveJacobiCG(*Ac, l[j], x[j], 1e-14, 1000);
+  }
+  for (int i = 0; i < ns; ++i) {
+    EXPECT_GT(Q[i * ns + i], 0.0) << i;
+    for (int j = 0; j < ns; ++j) {
+      EXPECT_LE(Q[i * ns + j] * Q[i * ns + j], Q[i * ns + i] * Q[j * ns + j] * (1 + 1e-12)) << i << "," << j;
+      EXPECT_NEAR(Q[i * ns + j], l[i].dot(x[j]), 1e-10 * std::sqrt(l[i].dot(x[i]) * l[j].dot(x[j]))) << i << "," << j;
+    }
+  }
 }
 
 // Obstacles: far away (no contact), partly touching, pushing everywhere.
