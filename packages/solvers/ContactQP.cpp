@@ -133,6 +133,7 @@ void ContactQP::setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupli
   const int m = coupling.numSegments();
   segLen_ = coupling.segmentLength();
   strip_.reset();
+  segmentStripLayers_.clear();
   columns_.clear();
   solvesOnSystem_ = 0;
   const std::string method = params_.get<std::string>("Newton Step Solver");
@@ -147,6 +148,7 @@ void ContactQP::setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupli
     for (int j = 0; j < m; ++j)
       layers[j] = std::clamp(stripLayers(params_, courant * (hFinest / h[j])), 2, kMaxStripLayers);
     strip_ = std::make_unique<StripSchurApproximation>(A, coupling, layers);
+    segmentStripLayers_ = layers;
     approxQ_ = strip_->matrix();
     if (usesCoarseCorrection(courant)) {
       SIGNORINI_ASSERT(coarseQ.size() == approxQ_.size(), "the coarse Schur correction is missing");

@@ -63,6 +63,8 @@ class ContactQP {
                         std::vector<double>& G);
   /// Gap tolerance [length] for G_j / |E_j|.
   double gapTolerance() const { return gapTol_; }
+  /// Node layers of the strip along each segment after setSystem() (empty without a strip).
+  const std::vector<int>& segmentStripLayers() const { return segmentStripLayers_; }
   /// Multiplier tolerance of segment j [force/length]: a multiplier error that moves the gap by gapTolerance.
   double lambdaTolerance(int j) const;
 
@@ -73,6 +75,7 @@ class ContactQP {
   std::vector<double> approxQ_;  // the local approximation of Q, dense m x m (identity for "none")
   std::unique_ptr<StripSchurApproximation> strip_;
   std::vector<double> segLen_;
+  std::vector<int> segmentStripLayers_;
   struct Column {
     RCP<Vector> w;          ///< A^{-1} B e_j
     std::vector<double> q;  ///< B^T A^{-1} B e_j (replicated)

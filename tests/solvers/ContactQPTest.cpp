@@ -407,6 +407,38 @@ TEST(StripSchurApproximation, WidthFollowsEachSegment) {
   EXPECT_LT(std::abs(wideFirst.matrix()[0] - Q[0]), 0.5 * std::abs(narrow.matrix()[0] - Q[0]));
 }
 
+// The strip keeps one physical width along a graded boundary: the finest segments get Strip Width
+// times the Courant number c k / h_min in node layers, a segment of edge length h_j the fraction
+// h_min / h_j of them (at least 2). Bottom edges of 1/32, 1/16 and 1/8 (a corner refined twice on
+// 8 x 8 cells), Strip Width 6, Courant number 2: 12 layers along the finest segments, 3 along the
+// coarsest.
+TEST(ContactQP, StripLayersFollowTheSegmentsEdgeLength) {
+  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 2, 2, 2);
+  tm.refineCorner();
+  const auto& m = tm.build();
+  const auto dir = m.nodesOnSegments(kLeft);
+  fem::Q1Assembler asmb(m, dir);
+  const auto A = asmb.assembleOperator(1.0, 0.02, 1.0, 1.0);
+  fem::ContactCoupling B(m, kBottom, fem::ContactCoupling::SegmentSize::TwoEdges, dir);
+  core::ParameterList cp;
+  cp.set("Schur Preconditioner", "strip");
+  cp.set("Strip Width", 6.0);
+  solvers::ContactQP qp(validated(solvers::ContactQP::getValidParameters(), cp), 1.0);
+  qp.setSystem(*A, B, 2.0, {});
+  const auto& layers = qp.segmentStripLayers();
+  ASSERT_EQ(layers.size(), static_cast<size_t>(B.numSegments()));
+  std::set<int> seen;
+  for (int j = 0; j < B.numSegments(); ++j) {
+    // h_j: the segment's mean edge length (a segment across a 2:1 face mixes two sizes)
+    const double h = B.segmentLength()[j] / B.segmentEdges()[j];
+    const int expected = std::max(2, static_cast<int>(std::ceil(12.0 * (1.0 / 32) / h - 1e-9)));
+    EXPECT_EQ(layers[j], expected) << "segment " << j << ", h = " << h;
+    seen.insert(layers[j]);
+  }
+  EXPECT_EQ(*seen.rbegin(), 12);  // the finest segments (h = 1/32)
+  EXPECT_EQ(*seen.begin(), 3);    // the coarsest (h = 1/8)
+}
+
 /// Dense reference: solves the QP by enumerating active sets (m small).
 std::vector<double> bruteForce(const std::vector<double>& Q, const std::vector<double>& q, int m) {
   // KKT: lambda_I = 0, (Q lambda - q)_A = 0 (G_A = 0), lambda_A <= 0, G = q - Q lambda >= 0 on I.
