@@ -50,6 +50,37 @@ TEST_P(ElasticityAssembly, RigidBodyMotionsProduceNoStress) {
   Kr.normInf(norms);
   modes->normInf(scale);
   for (int k = 0; k < 3; ++k) EXPECT_LT(norms[k], 1e-12 * scale[k] * (kLambda + 2 * kMu)) << "mode " << k;
+  // The modes span the rigid motions built here independently, (1, 0), (0, 1) and (-y, x): each is
+  // a combination of the modes (least squares through the modes' 3 x 3 Gram matrix, residual at
+  // rounding), so a wrong mode (e.g. a second translation) cannot pass K r = 0 alone.
+  double G[3][3];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) G[i][j] = modes->getVector(i)->dot(*modes->getVector(j));
+  const double det = G[0][0] * (G[1][1] * G[2][2] - G[1][2] * G[2][1]) -
+                     G[0][1] * (G[1][0] * G[2][2] - G[1][2] * G[2][0]) +
+                     G[0][2] * (G[1][0] * G[2][1] - G[1][1] * G[2][0]);
+  ASSERT_GT(std::abs(det), 1e-8 * G[0][0] * G[1][1] * G[2][2]) << "the modes are not independent";
+  double (*const motions[3][2])(double, double) = {
+      {[](double, double) { return 1.0; }, [](double, double) { return 0.0; }},
+      {[](double, double) { return 0.0; }, [](double, double) { return 1.0; }},
+      {[](double, double y) { return -y; }, [](double x, double) { return x; }}};
+  for (const auto& motion : motions) {
+    Vector r(asmb.ownedMap()), residual(asmb.ownedMap());
+    interpolate(asmb, motion[0], motion[1], r);
+    double b[3], c[3];
+    for (int i = 0; i < 3; ++i) b[i] = modes->getVector(i)->dot(r);
+    for (int i = 0; i < 3; ++i) {  // Cramer's rule
+      double M[3][3];
+      for (int p = 0; p < 3; ++p)
+        for (int q = 0; q < 3; ++q) M[p][q] = q == i ? b[p] : G[p][q];
+      c[i] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+              M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) /
+             det;
+    }
+    residual.assign(r);
+    for (int i = 0; i < 3; ++i) residual.update(-c[i], *modes->getVector(i), 1.0);
+    EXPECT_LT(residual.norm2(), 1e-10 * r.norm2());
+  }
   // The rotation's stress vanishes pointwise too.
   Vector rot(asmb.overlapMap());
   asmb.toOverlap(*modes->getVector(2), rot);
