@@ -19,9 +19,10 @@ level is fixed by its size on that lattice (the `level` variable must agree up t
 two cells overlap with positive area exactly when they share a lattice square (a "pixel").
 Options: --max-level N: no cell's `level` above N (the largest level found is printed);
 --coarser-than BASE2: some step has cells coarser than the mesh of BASE2's series at the same time
+  (with --in-every-step: every step compared has)
 (a run with coarsening against its previous cycle, Adaptivity/Write All Cycles).
 Prints a summary; exit status 1 on any violation.
-Usage: check_adaptive_meshes.py BASE [--every N] [--max-level N] [--coarser-than BASE2] [--graded]
+Usage: check_adaptive_meshes.py BASE [--every N] [--max-level N] [--coarser-than BASE2 [--in-every-step]] [--graded]
 (--every N checks only every N-th written mesh: the kept meshes are then not consecutive steps, which
 the checker must report: it checks 5.3 between none of them, and --graded fails)."""
 import glob
@@ -40,6 +41,8 @@ parser.add_argument("base")
 parser.add_argument("--every", type=int, default=1, help="keep only every N-th written mesh")
 parser.add_argument("--max-level", type=int, help="no cell's level variable above this")
 parser.add_argument("--coarser-than", metavar="BASE2", help="expect cells coarser than BASE2's at the same time")
+parser.add_argument("--in-every-step", action="store_true",
+                    help="with --coarser-than: in every step compared, not only in some")
 parser.add_argument("--graded", action="store_true",
                     help="expect the bounds to be reached: edges with a hanging node, and consecutive meshes "
                          "with cells one level coarser than the other's (forward and backward), so that a run "
@@ -279,6 +282,9 @@ if others:
           f"({coarser_cells} cells)")
     if coarser_steps == 0:
         violations.append(f"no cell is coarser than in {os.path.basename(args.coarser_than)} at the same time")
+    elif args.in_every_step and coarser_steps < compared:
+        violations.append(f"only {coarser_steps} of {compared} steps have cells coarser than in "
+                          f"{os.path.basename(args.coarser_than)} (--in-every-step)")
 for v in violations[:20]:
     print("VIOLATION:", v)
 if len(violations) > 20:
