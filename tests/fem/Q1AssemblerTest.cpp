@@ -28,6 +28,13 @@ void interpolate(const mesh::Q1Mesh& m, const std::function<double(double, doubl
   for (size_t i = 0; i < h.extent(0); ++i) h(i, 0) = f(m.nodeCoords()[i][0], m.nodeCoords()[i][1]);
 }
 
+/// The assembler of \p problem's type on \p m, its Dirichlet unknowns from the problem.
+std::unique_ptr<fem::Assembler> assemblerFor(const mesh::Q1Mesh& m, const fem::ProblemData& problem) {
+  if (problem.components() == 1) return std::make_unique<fem::Q1Assembler>(m, m.nodesOnSegments(problem.dirichletMask));
+  return std::make_unique<fem::ElasticityAssembler>(m, fem::ElasticityAssembler::dirichletUnknowns(m, problem),
+                                                    problem.lameLambda, problem.lameMu);
+}
+
 struct Case {
   bool hanging;
   int level;
@@ -224,12 +231,7 @@ TEST(LumpedBoundaryMass, CouplingsOfFlaggedUnknownsMoveToTheDiagonal) {
       p.set("Density", 2.0);
       p.set("Dirichlet Segments", std::string("left"));
       const fem::ProblemData problem(p, *tm.segments);
-      std::unique_ptr<fem::Assembler> asmb;
-      if (problem.components() == 1)
-        asmb = std::make_unique<fem::Q1Assembler>(m, m.nodesOnSegments(problem.dirichletMask));
-      else
-        asmb = std::make_unique<fem::ElasticityAssembler>(m, fem::ElasticityAssembler::dirichletUnknowns(m, problem),
-                                                          problem.lameLambda, problem.lameMu);
+      const auto asmb = assemblerFor(m, problem);
       const auto lump = asmb->unknownsOnSegments(1u << 1);  // the right side
       const auto consistent = asmb->assembleSystem(1.0, 0.0, problem);
       const auto lumped = asmb->assembleSystem(1.0, 0.0, problem, lump);
@@ -325,12 +327,7 @@ TEST(StepMatrices, EqualSeparateAssembly) {
         p.set("Young's Modulus", 5.0);
       p.set("Dirichlet Segments", std::string("left"));
       const fem::ProblemData problem(p, *tm.segments);
-      std::unique_ptr<fem::Assembler> asmb;
-      if (problem.components() == 1)
-        asmb = std::make_unique<fem::Q1Assembler>(m, m.nodesOnSegments(problem.dirichletMask));
-      else
-        asmb = std::make_unique<fem::ElasticityAssembler>(m, fem::ElasticityAssembler::dirichletUnknowns(m, problem),
-                                                          problem.lameLambda, problem.lameMu);
+      const auto asmb = assemblerFor(m, problem);
       const auto lump = asmb->unknownsOnSegments(1u << 1);  // the right side
       const double c = 0.37;
       const auto s = asmb->assembleStepMatrices(c, problem, lump);
