@@ -230,6 +230,13 @@ std::string AdaptiveSimulation::plan() const {
   os << sim_->numSteps() << " steps of k = " << t.get<double>("Time Step") << " to T = " << t.get<double>("Final Time")
      << "; the initial mesh: " << sim_->initialForest()->numGlobalCells() << " cells, " << sim_->initialUnknowns()
      << " unknowns\n";
+  {
+    const int finer = a.get<std::string>("Strategy") == "none"
+                          ? 0
+                          : std::min(a.get<int>("Cycles") - 1,
+                                     a.get<int>("Maximum Level") - deck_.sublist("Mesh").get<int>("Refinement Level"));
+    if (const auto solver = sim_->linearSolverPlan(finer); !solver.empty()) os << solver << "\n";
+  }
   if (const auto coarse = sim_->coarseCorrectionMesh(); !coarse.empty())
     os << "the contact Schur preconditioner's coarse correction: " << coarse << "\n";
   const std::string strategy = a.get<std::string>("Strategy");

@@ -895,6 +895,23 @@ std::string Simulation::coarseCorrectionMesh() const {
                                                   std::to_string(cap)
                                             : "");
 }
+std::string Simulation::linearSolverPlan(int finerLevels) const {
+  const auto& d = impl_->initialDiscretisation;
+  if (!d || !d->solver) return "";
+  const auto& params = impl_->deck.sublist("Linear Solver");
+  std::ostringstream os;
+  os << std::setprecision(3) << "linear solver: " << params.get<std::string>("Method") << " + "
+     << d->solver->preconditioner();
+  if (params.get<std::string>("Preconditioner") == "auto" && !core::reproducibleArithmetic()) {
+    const double threshold = params.get<double>("Auto MueLu Courant Number");
+    const double finest = d->courant * std::ldexp(1.0, std::max(0, finerLevels));
+    os << " on the initial mesh (Preconditioner = auto: c k / h_min = " << d->courant;
+    if (finerLevels > 0) os << ", up to " << finest << " on meshes " << finerLevels << " levels finer";
+    os << "; MueLu above " << threshold << (finest > threshold && d->courant <= threshold ? ", so on the finer meshes" : "")
+       << ")";
+  }
+  return os.str();
+}
 int Simulation::currentStep() const { return impl_->currentStep; }
 double Simulation::timeStep() const { return impl_->newmark->timeStep; }
 RCP<const Comm> Simulation::comm() const { return impl_->comm; }

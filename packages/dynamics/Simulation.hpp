@@ -114,6 +114,9 @@ class Simulation {
   /// "<cells> cells (Refinement Level <l>), <unknowns> unknowns": the mesh of the Schur
   /// preconditioner's coarse correction, if the initial mesh uses it (else empty).
   std::string coarseCorrectionMesh() const;
+  /// "CG + Jacobi" and, for Preconditioner = auto, the Courant numbers c k / h_min that choose it:
+  /// on the initial mesh and on a mesh refined \p finerLevels more levels (--check's plan).
+  std::string linearSolverPlan(int finerLevels) const;
   RCP<const Comm> comm() const;
   const std::string& outputBase() const;  ///< output folder + "/" + basename
   /// Creates the output folder (and its parents) if it is missing; run() does this first, in its

@@ -530,7 +530,16 @@ signorini_add_driver_test(check_valid_deck EXIT 0
   ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=bulk" --set "Adaptivity/Cycles=3" ${decks}/good.xml
   REGEX "checking .*good[.]xml on 2 rank[(]s[)]" "good[.]xml is valid; the run would do:"
         "4 steps of k = 0[.]0025 to T = 0[.]01; the initial mesh: 16 cells, 25 unknowns"
-        "Algorithm 5[.]1: 3 cycle[(]s[)], strategy bulk 50%")
+        "Algorithm 5[.]1: 3 cycle[(]s[)], strategy bulk 50%"
+        # c k / h_min = 1 x 0.0025 / 0.25; two cycles after the first refine at most two levels
+        "linear solver: CG [+] Jacobi on the initial mesh [(]Preconditioner = auto: c k / h_min = 0[.]01, up to 0[.]04 on meshes 2 levels finer; MueLu above 5[)]")
+# The plan says where "auto" switches to MueLu (c k / h_min = 0.16 on the deck's mesh at
+# k = 0.04, 2.56 four levels finer; the threshold lowered to 1).
+signorini_add_driver_test(check_plan_muelu_on_finer_meshes EXIT 0
+  ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=fixed fraction" --set "Adaptivity/Cycles=5"
+       --set "Time Integration/Time Step=0.04" --set "Time Integration/Final Time=0.08"
+       --set "Linear Solver/Auto MueLu Courant Number=1" ${decks}/good.xml
+  REGEX "linear solver: CG [+] Jacobi on the initial mesh [(]Preconditioner = auto: c k / h_min = 0[.]16, up to 2[.]56 on meshes 4 levels finer; MueLu above 1, so on the finer meshes[)]")
 # --check writes nothing, not even the output directory it checks (it creates and removes it).
 signorini_add_driver_test(check_creates_no_directory EXIT 0
   ARGS --check --output-dir {OUT}/new/deeper ${decks}/good.xml
