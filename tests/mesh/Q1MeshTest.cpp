@@ -54,6 +54,7 @@ void expectDirectNumberingEqualsLnodes(const test::TestMesh& tm, bool acrossRank
   const auto a = cornerTerms(direct), b = cornerTerms(lnodes);
   ASSERT_EQ(a.size(), b.size());
   int hanging = 0, hangingOnOthers = 0;  // hanging corners; of them, with an end node another rank owns
+  int orientations = 0;  // bit per side of the fine cell the coarse face lies on: -x, +x, -y, +y
   const LO owned = static_cast<LO>(direct.ownedMap()->getNodeNumElements());
   for (size_t k = 0; k < a.size(); ++k) {
     EXPECT_EQ(a[k], b[k]) << "cell " << k / 4 << " corner " << k % 4;
@@ -62,10 +63,22 @@ void expectDirectNumberingEqualsLnodes(const test::TestMesh& tm, bool acrossRank
     const LO e = static_cast<LO>(k / 4);
     const int c = static_cast<int>(k % 4);
     hangingOnOthers += direct.cornerDofsHost(e, c, 0) >= owned || direct.cornerDofsHost(e, c, 1) >= owned;
+    // The coarse face through the hanging corner joins its two end nodes; the fine cell's centre
+    // lies on one side of it.
+    const auto& p = a[k][0].first;
+    const auto& q = a[k][1].first;
+    double centre[2] = {0, 0};
+    for (int i = 0; i < 4; ++i)
+      for (int d = 0; d < 2; ++d) centre[d] += 0.25 * direct.cornerCoordsHost(e, i, d);
+    const int d = p[0] == q[0] ? 0 : 1;  // the face's normal direction
+    orientations |= 1 << (2 * d + (centre[d] > p[d] ? 0 : 1));
   }
   int totals[2] = {hanging, hangingOnOthers}, global[2];
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 2, totals, global);
   EXPECT_GT(global[0], 16);
+  int allOrientations = 0;
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_BOR, 1, &orientations, &allOrientations);
+  EXPECT_EQ(allOrientations, 0xF) << "hanging corners on coarse faces of all four sides of a fine cell";
   if (acrossRanks) { EXPECT_GT(global[1], 0) << "no hanging corner depends on another rank's node"; }
   ASSERT_EQ(direct.boundaryEdges().size(), lnodes.boundaryEdges().size());
   for (size_t i = 0; i < direct.boundaryEdges().size(); ++i) {

@@ -371,7 +371,8 @@ TEST(Forest, BalancedRefinementEqualsRefinementThenP4estBalance) {
 // the ranks: the same cells and partition as the p4est, about one byte per cell, and expanded
 // again exactly the p4est it was (every leaf, in order, on every rank), usable as before.
 TEST(Forest, CompactFormKeepsTheCellsAndThePartition) {
-  test::TestMesh a(0.0, 1.0, 0.0, 1.0, 3, 2, 1);  // six trees
+  test::TestMesh a(0.0, 1.0, 0.0, 1.0, 3, 2, 1);
+  ASSERT_EQ(a.coarse->numTrees(), 6);  // 3 x 2 cells share no power of two: a tree each
   refineAt(*a.forest, 0.999, 0.999, 5);
   refineAt(*a.forest, 0.3, 0.6, 3);
   a.forest->balance();
