@@ -6,6 +6,7 @@
 #include <climits>
 #include <cstring>
 #include <filesystem>
+#include <iostream>
 #include <map>
 #include <set>
 #include <system_error>
@@ -239,11 +240,17 @@ void retireOnCommit(const std::string& basePath, const std::function<bool(const 
 }
 
 OutputLock::OutputLock(const std::string& base) : path_(base + ".lock") {
+  // A file system without locks (some network or FUSE mounts) only loses the safety net.
+  const auto withoutLock = [&](const char* what, int error) {
+    std::cerr << "signorini: warning: cannot " << what << " '" << path_ << "' (" << std::strerror(error)
+              << "): a second run under this output base would not be refused" << std::endl;
+  };
   for (;;) {
     fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0)
-      SIGNORINI_USER_ERROR("cannot create the lock file '" << path_ << "' of the run's output (" << std::strerror(errno)
-                                                           << ")");
+    if (fd_ < 0) {
+      withoutLock("create the lock file", errno);
+      return;
+    }
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
       const int error = errno;
       ::close(fd_);
@@ -252,7 +259,9 @@ OutputLock::OutputLock(const std::string& base) : path_(base + ".lock") {
         SIGNORINI_USER_ERROR("another run is writing its results under the output base '"
                              << base << "' (it holds '" << path_
                              << "'); wait for it to end, or give this run its own Output/Basename or --output-dir");
-      SIGNORINI_USER_ERROR("cannot lock '" << path_ << "' (" << std::strerror(error) << ")");
+      ::unlink(path_.c_str());
+      withoutLock("lock", error);
+      return;
     }
     // The holder before us may have removed the file between our open and our lock: then the lock
     // is on a file without a name, and a third run could lock a new one. Take the named file.

@@ -38,7 +38,8 @@ class OutputStaging {
 /// the same output base, in another process, fails at its start (core::UserError) instead of
 /// retiring the first run's ".part" files while that run is still writing them. The file is
 /// removed when the lock is released; one that a killed run left is taken over (the kernel
-/// released its lock with the process).
+/// released its lock with the process). Where the file system has no locks, or the file cannot
+/// be created, the run goes on without the lock, with a warning.
 class OutputLock {
  public:
   explicit OutputLock(const std::string& base);
