@@ -35,7 +35,9 @@ namespace {
 
 const char* kUsage =
     "usage: signorini [options] DECK.xml [DECK2.xml ...]\n"
-    "  --print-parameters        print every valid deck parameter (type, default, doc) and exit\n"
+    "  --print-parameters        print every valid deck parameter (type, default, doc) and exit; with a deck,\n"
+    "                            check it as --check does and print it as XML as the run would use it (every\n"
+    "                            default filled in, --set applied): a complete deck\n"
     "  --check                   validate each deck and set up its problem as a run would (the same errors),\n"
     "                            print what the run would do, and write no results\n"
     "  --output-dir DIR          write all output to DIR (overrides Output/Directory; also --output-dir=DIR)\n"
@@ -131,7 +133,7 @@ int main(int argc, char** argv) {
 
   std::vector<std::string> decks, overrides;
   std::string outputDir;
-  bool checkOnly = false;
+  bool checkOnly = false, printDeck = false;
   if (kokkosHelp) return 0;  // Kokkos has printed its options
   if (help) {
     out << kUsage;
@@ -146,8 +148,7 @@ int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--print-parameters") {
-      signorini::core::printParameters(out, signorini::adapt::AdaptiveSimulation::getValidParameters());
-      return 0;
+      printDeck = true;
     } else if (arg == "--check") {
       checkOnly = true;
     } else if (arg == "--output-dir" || arg == "--set") {
@@ -185,10 +186,20 @@ int main(int argc, char** argv) {
       decks.push_back(arg);
     }
   }
+  if (printDeck && decks.empty()) {
+    signorini::core::printParameters(out, signorini::adapt::AdaptiveSimulation::getValidParameters());
+    return 0;
+  }
   if (decks.empty()) {
     if (rank == 0) std::cerr << "signorini: no deck given\n" << kUsage;
     return 2;
   }
+  if (printDeck && decks.size() > 1) {  // one XML document on standard output
+    if (rank == 0)
+      std::cerr << "signorini: --print-parameters prints one deck: give one (or none for every valid parameter)\n";
+    return 2;
+  }
+  checkOnly = checkOnly || printDeck;
 
   int failures = 0, finished = 0;  // decks that failed; decks that ran (or were checked) to their end
   std::string lastWritten;         // the deck whose results were written last
@@ -206,8 +217,9 @@ int main(int argc, char** argv) {
     for (const auto& path : decks) {
       lastWritten.clear();
       stopIfInterrupted("before " + path + ", which did not run (nor any deck after it)");
-      out << "signorini: " << (checkOnly ? "checking " : "running ") << path << " on " << comm->getSize() << " rank(s)"
-          << std::endl;
+      if (!printDeck)
+        out << "signorini: " << (checkOnly ? "checking " : "running ") << path << " on " << comm->getSize() << " rank(s)"
+            << std::endl;
       try {
         const auto deck = readDeck(path, overrides, *comm);
         signorini::adapt::AdaptiveSimulation sim(deck, path, outputDir, comm);
@@ -229,6 +241,11 @@ int main(int argc, char** argv) {
                                                     adaptivity.get<int>("Cycles")),
               named ? "Output/Basename" : "the output basename (the deck's file name; Output/Basename sets another)",
               outputDir.empty() ? "Output/Directory" : "--output-dir");
+        }
+        if (printDeck) {  // standard output holds the XML alone (warnings go to standard error)
+          out << signorini::core::deckAsXml(sim.deck()) << std::flush;
+          ++finished;
+          continue;
         }
         if (checkOnly) {
           std::istringstream lines(sim.plan());

@@ -202,6 +202,7 @@ AdaptiveSimulation::AdaptiveSimulation(const core::ParameterList& deck, const st
 AdaptiveSimulation::~AdaptiveSimulation() = default;
 
 const std::string& AdaptiveSimulation::outputBase() const { return sim_->outputBase(); }
+const core::ParameterList& AdaptiveSimulation::deck() const { return sim_->deck(); }
 
 template <class Pass>
 dynamics::RunSummary AdaptiveSimulation::locatingFailures(int cycle, Pass pass) const {

@@ -39,6 +39,8 @@ class AdaptiveSimulation {
   std::string plan() const;
   /// The output folder and basename of the run's files ("<folder>/<basename>").
   const std::string& outputBase() const;
+  /// The deck as the run uses it (dynamics::Simulation::deck()).
+  const core::ParameterList& deck() const;
   const std::vector<CycleSummary>& cycles() const { return cycles_; }
 
  private:

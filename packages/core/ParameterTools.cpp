@@ -402,7 +402,7 @@ void writeXml(std::ostream& os, const ParameterList& list, const std::string& na
     const auto& any = entry.getAny();
     std::ostringstream value;
     if (any.type() == typeid(double))
-      value << std::setprecision(17) << Teuchos::any_cast<double>(any);
+      value << shortestText(Teuchos::any_cast<double>(any));  // 0.3, not 0.29999999999999999
     else if (any.type() == typeid(bool))
       value << (Teuchos::any_cast<bool>(any) ? "true" : "false");
     else

@@ -916,6 +916,7 @@ int Simulation::currentStep() const { return impl_->currentStep; }
 double Simulation::timeStep() const { return impl_->newmark->timeStep; }
 RCP<const Comm> Simulation::comm() const { return impl_->comm; }
 const std::string& Simulation::outputBase() const { return impl_->outputBase; }
+const core::ParameterList& Simulation::deck() const { return impl_->deck; }
 
 void Simulation::checkMeshFits(double globalCells, const std::string& cause, double storedCells) const {
   const double perRank = globalCells / impl_->comm->getSize();

@@ -119,6 +119,9 @@ class Simulation {
   std::string linearSolverPlan(int finerLevels) const;
   RCP<const Comm> comm() const;
   const std::string& outputBase() const;  ///< output folder + "/" + basename
+  /// The deck as the run uses it and its output files record it: validated, defaults filled in,
+  /// a relative Mesh/File made absolute (--print-parameters DECK prints it).
+  const core::ParameterList& deck() const;
   /// Creates the output folder (and its parents) if it is missing; run() does this first, in its
   /// staging scope, so that a failed run removes them again (io::removeOnFailure). The
   /// constructor only checks that it could (and leaves no folder behind). Returns the lock of the

@@ -614,6 +614,7 @@ TEST(DeckAsXml, ReadsBackToTheSameValues) {
   ParameterList deck("my deck");
   deck.sublist("Time Integration").set("Time Step", 0.1);
   deck.sublist("Time Integration").set("Final Time", 1.0 / 3.0);
+  deck.sublist("Problem").set("Poisson's Ratio", 0.3);
   deck.sublist("Problem").set("Tiny", 1e-300);
   deck.sublist("Problem").set("Obstacle", std::string("x < 0.5 && y > 0 ? \"a\" & 'b' : 1"));
   deck.sublist("Problem").set("Empty", std::string());
@@ -626,6 +627,7 @@ TEST(DeckAsXml, ReadsBackToTheSameValues) {
   EXPECT_EQ(xml.rfind("<ParameterList name=\"my deck\">\n", 0), 0u) << xml;
   EXPECT_TRUE(Teuchos::haveSameValues(deck, *back)) << xml;
   EXPECT_EQ(back->sublist("Time Integration").get<double>("Final Time"), 1.0 / 3.0);  // every bit
+  EXPECT_NE(xml.find("value=\"0.3\""), std::string::npos) << xml;  // as a user writes it, not 0.29999999999999999
   EXPECT_EQ(xml.find("docString"), std::string::npos);
   std::istringstream lines(xml);  // every line ends in '>' (an Exodus info line ending in '\' continues)
   for (std::string line; std::getline(lines, line);) EXPECT_EQ(line.back(), '>') << line;

@@ -3,7 +3,8 @@
 # the other ranks' stdin is empty, and they used to fail alone while rank 0 waited forever), a deck
 # from a process substitution (/dev/fd/N needs Output/Basename), a batch whose second deck reaches the
 # first one's output base through a symbolic link, a deck on stdin with a relative Mesh/File, the
-# lock of an output base (one run at a time per base), and the command line's --opt=value forms.
+# lock of an output base (one run at a time per base), the command line's --opt=value forms, and
+# --print-parameters DECK (a complete deck that reproduces the run).
 # Usage: shell_cases.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
 # MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (FindMPI's MPIEXEC_EXECUTABLE,
 # MPIEXEC_NUMPROC_FLAG, MPIEXEC_PREFLAGS; see cmake/SignoriniTesting.cmake); a bare executable gets -n.
@@ -80,6 +81,33 @@ status=$?
 "$signorini" --check > "$work/none.log" 2>&1
 status=$?
 [ "$status" = 2 ] && grep -q "no deck given" "$work/none.log" || { cat "$work/none.log"; fail "no deck: exit status $status"; }
+# --print-parameters DECK: standard output is the deck as the run uses it, a complete deck (every
+# default, --set applied, the relative Mesh/File made absolute), which run from another folder
+# under another name gives the same step tables; nothing is written. With two decks: a usage error.
+sets=(--set 'Adaptivity/Strategy=uniform' --set 'Adaptivity/Cycles=2' --set 'Problem/Density=1.5')
+exodus="$src/tests/driver/decks/good-exodus.xml"
+mkdir -p "$work/printed"
+"$signorini" --print-parameters --output-dir "$work/printed/none" "${sets[@]}" "$exodus" \
+  > "$work/printed/complete.xml" 2> "$work/printed/print.log" || { cat "$work/printed/print.log"; fail "--print-parameters DECK"; }
+[ ! -e "$work/printed/none" ] || fail "--print-parameters DECK wrote $(ls "$work/printed/none")"
+head -n 1 "$work/printed/complete.xml" | grep -qx '<ParameterList name="good-exodus">' &&
+  tail -n 1 "$work/printed/complete.xml" | grep -qx '</ParameterList>' ||
+  { head -n 3 "$work/printed/complete.xml"; fail "--print-parameters DECK: standard output is not the deck's XML alone"; }
+grep -q '<Parameter name="Density" type="double" value="1.5"/>' "$work/printed/complete.xml" &&
+  grep -q '<Parameter name="Beta" type="double" value="0.5"/>' "$work/printed/complete.xml" &&
+  grep -q "<Parameter name=\"File\" type=\"string\" value=\"$src/inputs/meshes/unit-square-4x4.exo\"/>" \
+    "$work/printed/complete.xml" || fail "--print-parameters DECK: --set, a default or the absolute Mesh/File missing"
+"$signorini" --output-dir "$work/printed" "${sets[@]}" "$exodus" > "$work/printed/original.log" 2>&1 ||
+  { cat "$work/printed/original.log"; fail "the deck with --set did not run"; }
+(cd / && "$signorini" --output-dir "$work/printed" "$work/printed/complete.xml") > "$work/printed/complete.log" 2>&1 ||
+  { cat "$work/printed/complete.log"; fail "the printed deck did not run"; }
+/usr/bin/python3 "$src/tools/compare_step_tables.py" "$work/printed/good-exodus" "$work/printed/complete" \
+  > "$work/printed/compare.log" 2>&1 || { cat "$work/printed/compare.log"; fail "the printed deck's step tables differ"; }
+"$signorini" --print-parameters "$good" "$exodus" > "$work/two.log" 2>&1
+status=$?
+[ "$status" = 2 ] && grep -q "print-parameters prints one deck" "$work/two.log" ||
+  { cat "$work/two.log"; fail "--print-parameters with two decks: exit status $status"; }
 echo "a deck on stdin runs on 2 ranks and takes Mesh/File from the working directory; a deck from <(...) needs"
 echo "Output/Basename; one output base through a link is refused; a locked output base is refused, a stale lock"
-echo "taken over; --output-dir=DIR and --set=SPEC work; '-' and no deck are usage errors"
+echo "taken over; --output-dir=DIR and --set=SPEC work; '-' and no deck are usage errors; --print-parameters DECK"
+echo "prints a complete deck that reproduces the run"
