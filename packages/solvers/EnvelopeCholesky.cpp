@@ -58,22 +58,40 @@ std::vector<int> reverseCuthillMcKee(int n, const std::vector<int>& rowPtr, cons
 }  // namespace
 
 EnvelopeCholesky::EnvelopeCholesky(int n, const std::vector<int>& rowPtr, const std::vector<int>& cols,
-                                   const std::vector<double>& values)
+                                   const std::vector<double>& values, const std::vector<int>& preferred)
     : n_(n) {
   SIGNORINI_ASSERT(static_cast<int>(rowPtr.size()) == n + 1 && cols.size() == values.size() &&
                        static_cast<size_t>(rowPtr[n]) == cols.size(),
                    "inconsistent CRS arrays");
-  perm_ = reverseCuthillMcKee(n, rowPtr, cols);
   std::vector<int> pos(n);
-  for (int p = 0; p < n; ++p) pos[perm_[p]] = p;
-  first_.resize(n);
-  off_.resize(n + 1, 0);
-  for (int p = 0; p < n; ++p) {
-    int f = p;
-    for (int k = rowPtr[perm_[p]]; k < rowPtr[perm_[p] + 1]; ++k) f = std::min(f, pos[cols[k]]);
-    first_[p] = f;
-    off_[p + 1] = off_[p] + static_cast<size_t>(p - f + 1);
+  // The envelope of an ordering: first_, off_ and pos for it.
+  auto envelope = [&](const std::vector<int>& order) {
+    for (int p = 0; p < n; ++p) pos[order[p]] = p;
+    first_.assign(n, 0);
+    off_.assign(n + 1, 0);
+    for (int p = 0; p < n; ++p) {
+      int f = p;
+      for (int k = rowPtr[order[p]]; k < rowPtr[order[p] + 1]; ++k) f = std::min(f, pos[cols[k]]);
+      first_[p] = f;
+      off_[p + 1] = off_[p] + static_cast<size_t>(p - f + 1);
+    }
+    return off_[n];
+  };
+  perm_ = reverseCuthillMcKee(n, rowPtr, cols);
+  if (!preferred.empty()) {
+    SIGNORINI_ASSERT(static_cast<int>(preferred.size()) == n, "the preferred ordering must be a permutation");
+    {
+      std::vector<char> seen(n, 0);
+      for (int r : preferred) {
+        SIGNORINI_ASSERT(r >= 0 && r < n && !seen[r], "the preferred ordering must be a permutation");
+        seen[r] = 1;
+      }
+    }
+    const size_t rcm = envelope(perm_);
+    preferred_ = 2 * envelope(preferred) <= rcm;
+    if (preferred_) perm_ = preferred;
   }
+  envelope(perm_);
   env_.assign(off_[n], 0.0);
   for (int p = 0; p < n; ++p)
     for (int k = rowPtr[perm_[p]]; k < rowPtr[perm_[p] + 1]; ++k)

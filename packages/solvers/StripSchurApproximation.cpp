@@ -1,6 +1,8 @@
 #include "StripSchurApproximation.hpp"
 
 #include <algorithm>
+#include <limits>
+#include <numeric>
 #include <tuple>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -37,6 +39,34 @@ std::vector<T> gatherToRoot(MPI_Comm comm, const std::vector<T>& mine) {
               comm);
   return all;
 }
+
+/// The strip ids ordered along Gamma_C: by the coordinate in which the contact rows (those with a
+/// non-zero in \p Bs, row-major n x m in id order) extend furthest, then by the other one, then by
+/// the component (\p keys: three per gathered row, \p position[id] the row of id). Partition-
+/// independent, like the keys.
+std::vector<int> orderAlongContact(int n, int m, const std::vector<double>& Bs, const std::vector<int>& position,
+                                   const std::vector<long long>& keys) {
+  long long lo[2] = {std::numeric_limits<long long>::max(), std::numeric_limits<long long>::max()};
+  long long hi[2] = {std::numeric_limits<long long>::min(), std::numeric_limits<long long>::min()};
+  for (int id = 0; id < n; ++id) {
+    const auto row = Bs.begin() + static_cast<std::ptrdiff_t>(id) * m;
+    if (std::all_of(row, row + m, [](double b) { return b == 0.0; })) continue;
+    for (int d = 0; d < 2; ++d) {
+      lo[d] = std::min(lo[d], keys[3 * static_cast<size_t>(position[id]) + d]);
+      hi[d] = std::max(hi[d], keys[3 * static_cast<size_t>(position[id]) + d]);
+    }
+  }
+  const int along = hi[0] - lo[0] >= hi[1] - lo[1] ? 0 : 1;
+  std::vector<int> order(static_cast<size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  auto key = [&](int id) {
+    const long long* k = keys.data() + 3 * static_cast<size_t>(position[id]);
+    return std::make_tuple(k[along], k[1 - along], k[2]);
+  };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
+  return order;
+}
+
 }  // namespace
 
 StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::ContactCoupling& B, int layers)
@@ -174,6 +204,11 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
   const auto allVals = gatherToRoot(raw, stripVals);
   auto allW = gatherToRoot(raw, Bs);  // B_s, overwritten by A_s^{-1} B_s on rank 0
   const auto allIds = gatherToRoot(raw, stripId);
+  std::vector<long long> stripKeys;  // the rows' canonical keys (coordinates, component)
+  stripKeys.reserve(3 * static_cast<size_t>(nStrip));
+  for (LO s = 0; s < nStrip; ++s)
+    for (long long k : B.canonicalKeys()[impl_->stripToOwned[s]]) stripKeys.push_back(k);
+  const auto allKeys = gatherToRoot(raw, stripKeys);
   std::vector<double> canonicalQs;  // reproducible: B_s^T W summed on rank 0 in strip id order
   if (comm->getRank() == 0 && m > 0) {
     const int n = static_cast<int>(stripSize_);
@@ -196,7 +231,7 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
                 W.begin() + static_cast<size_t>(id) * m);
     }
     const std::vector<double> Bs = reproducible ? W : std::vector<double>();
-    const EnvelopeCholesky As(n, rowPtr, cols, vals);
+    const EnvelopeCholesky As(n, rowPtr, cols, vals, orderAlongContact(n, m, W, position, allKeys));
     As.solveInPlace(W, m);
     for (int id = 0; id < n; ++id)
       std::copy(W.begin() + static_cast<size_t>(id) * m, W.begin() + static_cast<size_t>(id + 1) * m,
