@@ -43,7 +43,8 @@ const char* kUsage =
     "  --output-dir DIR          write all output to DIR (overrides Output/Directory; also --output-dir=DIR)\n"
     "  --set 'Sublist/key=value' override a deck entry (repeatable, validated like the deck; also --set=...)\n"
     "  --version                 the versions of signorini and of the libraries it was built with\n"
-    "  --help                    this text\n";
+    "  --help                    this text\n"
+    "  --                        the arguments after it are decks\n";
 
 /// "signorini 0.1.0" and the libraries this executable was built with (--version).
 std::string versions() {
@@ -145,9 +146,14 @@ int main(int argc, char** argv) {
       out << versions();
       return 0;
     }
+  bool optionsEnded = false;  // after "--" every argument is a deck
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    if (arg == "--print-parameters") {
+    if (optionsEnded) {
+      decks.push_back(arg);
+    } else if (arg == "--") {
+      optionsEnded = true;
+    } else if (arg == "--print-parameters") {
       printDeck = true;
     } else if (arg == "--check") {
       checkOnly = true;
@@ -157,7 +163,9 @@ int main(int argc, char** argv) {
         return 2;
       }
       const std::string value = argv[++i];
-      if (arg == "--set" && (value.find('=') == std::string::npos || value.find('=') == 0)) {
+      const std::string key = value.substr(0, value.find('='));  // no empty name in "Sublist/key"
+      if (arg == "--set" && (value.find('=') == std::string::npos || key.empty() || key.front() == '/' ||
+                             key.back() == '/' || key.find("//") != std::string::npos)) {
         if (rank == 0) std::cerr << "signorini: --set '" << value << "': expected 'Sublist/key=value'\n";
         return 2;
       }
@@ -176,8 +184,17 @@ int main(int argc, char** argv) {
         if (rank == 0) std::cerr << "signorini: --output-dir needs a directory (\".\" for the working directory)\n";
         return 2;
       }
-    } else if (arg.rfind("--", 0) == 0) {
-      if (rank == 0) std::cerr << "signorini: unknown option " << arg << "\n" << kUsage;
+    } else if (arg.size() > 1 && arg[0] == '-') {  // "-check" is a typo, not a deck to run
+      const size_t name = arg.find_first_not_of('-');
+      const std::string guess =
+          name == std::string::npos
+              ? ""
+              : signorini::core::closestName(arg.substr(name),
+                                             {"print-parameters", "check", "output-dir", "set", "version", "help"});
+      if (rank == 0)
+        std::cerr << "signorini: unknown option " << arg << (guess.empty() ? "" : " (did you mean --" + guess + "?)")
+                  << "; a deck whose name starts with '-' is given as ./" << arg << " or after --\n"
+                  << kUsage;
       return 2;
     } else if (arg == "-") {
       if (rank == 0) std::cerr << "signorini: '-' is not a deck name: read a deck from standard input as /dev/stdin\n";

@@ -2,7 +2,9 @@
 short or without the columns a script needs, an Exodus file that cannot be read, a run of the wrong
 kind) and bad arguments end a script with one line '<script>: error: <message naming the file or
 argument>' on stderr and a non-zero exit status (1; 2 for arguments argparse refuses), never a
-traceback.
+traceback. So does output that cannot be written (a full disk, /dev/full: '<script>: error: cannot
+write output: <reason>', exit status 1), wherever the script prints; output into a pipe closed early
+(`| head -1`) ends the script quietly, killed by SIGPIPE, as Unix tools end (both set up on import).
 
   InputError          raised by the readers below and by the scripts' own checks
   fail(message)       exits with the one line, status 1
@@ -13,11 +15,54 @@ traceback.
   exodus(path)        an Exodus file opened with netCDF4, checked complete
 """
 import argparse
+import atexit
+import errno
 import os
+import signal
 import sys
 import warnings
 
 import numpy as np
+
+
+# A write into a closed pipe kills the script without a word (Python ignores SIGPIPE and raises
+# BrokenPipeError instead, a traceback).
+signal.signal(signal.SIGPIPE, signal.SIG_DFL)
+
+# errno values of a write that failed for lack of room (or of a reader): not the script's fault.
+WRITE_ERRORS = {errno.ENOSPC, errno.EDQUOT, errno.EFBIG, errno.EPIPE}
+
+
+def _cannot_write(e):
+    """Ends the script at once: '<script>: error: cannot write output: <reason>', exit status 1;
+    what stdout still holds is dropped (flushing it would fail again)."""
+    where = f": {e.filename}" if getattr(e, "filename", None) else ""
+    try:
+        sys.stderr.write(f"{os.path.basename(sys.argv[0])}: error: cannot write output: "
+                         f"{e.strerror or e}{where}\n")
+        sys.stderr.flush()
+    finally:
+        os._exit(1)
+
+
+def _excepthook(kind, value, tb, previous=sys.excepthook):
+    """A write failure (WRITE_ERRORS) anywhere, also at a script's top level: one line, no traceback."""
+    if isinstance(value, OSError) and value.errno in WRITE_ERRORS:
+        _cannot_write(value)
+    previous(kind, value, tb)
+
+
+def _flush_stdout():
+    """At exit: what is left of stdout written now, so that a failure is reported in one line (the
+    interpreter's own last flush would print 'Exception ignored' and exit with status 120)."""
+    try:
+        sys.stdout.flush()
+    except OSError as e:
+        _cannot_write(e)
+
+
+sys.excepthook = _excepthook
+atexit.register(_flush_stdout)
 
 
 class InputError(Exception):

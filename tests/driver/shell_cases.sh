@@ -107,7 +107,11 @@ grep -q '<Parameter name="Density" type="double" value="1.5"/>' "$work/printed/c
 status=$?
 [ "$status" = 2 ] && grep -q "print-parameters prints one deck" "$work/two.log" ||
   { cat "$work/two.log"; fail "--print-parameters with two decks: exit status $status"; }
+# "--" ends the options: a deck whose name starts with '-' follows it.
+mkdir -p "$work/dash" && cp "$good" "$work/dash/-x.xml"
+(cd "$work/dash" && "$signorini" --check -- -x.xml) > "$work/dash-deck.log" 2>&1 &&
+  grep -q "^signorini: -x[.]xml is valid" "$work/dash-deck.log" || { cat "$work/dash-deck.log"; fail "a deck after --"; }
 echo "a deck on stdin runs on 2 ranks and takes Mesh/File from the working directory; a deck from <(...) needs"
 echo "Output/Basename; one output base through a link is refused; a locked output base is refused, a stale lock"
 echo "taken over; --output-dir=DIR and --set=SPEC work; '-' and no deck are usage errors; --print-parameters DECK"
-echo "prints a complete deck that reproduces the run"
+echo "prints a complete deck that reproduces the run; decks follow --"

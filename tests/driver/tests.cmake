@@ -238,6 +238,13 @@ signorini_add_driver_test(usage_no_deck EXIT 2
 signorini_add_driver_test(usage_unknown_option EXIT 2
   ARGS --bogus ${decks}/good.xml
   REGEX "unknown option --bogus" "usage: signorini")
+# A single dash is a typo of an option, not a deck (the next deck used to run in full, writing results).
+signorini_add_driver_test(usage_single_dash_option EXIT 2
+  ARGS --output-dir {OUT} -check ${decks}/good.xml
+  REGEX "unknown option -check [(]did you mean --check[?][)]" "given as [.]/-check or after --")
+signorini_add_driver_test(usage_set_empty_key EXIT 2
+  ARGS --output-dir {OUT} --set "Mesh/=3" ${decks}/good.xml
+  REGEX "--set 'Mesh/=3': expected 'Sublist/key=value'")
 signorini_add_driver_test(usage_option_without_value EXIT 2
   ARGS --output-dir
   REGEX "--output-dir needs a value")
