@@ -25,6 +25,7 @@ Prints a summary; exit status 1 on any violation.
 Usage: check_adaptive_meshes.py BASE [--every N] [--max-level N] [--coarser-than BASE2 [--in-every-step]] [--graded]
 (--every N checks only every N-th written mesh: the kept meshes are then not consecutive steps, which
 the checker must report: it checks 5.3 between none of them, and --graded fails)."""
+import argparse
 import glob
 import os
 import sys
@@ -36,8 +37,8 @@ from deck_from_exodus import info_lines  # noqa: E402
 from exodus_text import names as exodus_names  # noqa: E402
 from tool_errors import ArgumentParser, exodus, fail, read_table, reporting  # noqa: E402
 
-parser = ArgumentParser()
-parser.add_argument("base")
+parser = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+parser.add_argument("base", help="the run's output base (folder/basename): its meshes <base>.e, <base>.e-s.NNNN")
 parser.add_argument("--every", type=int, default=1, help="keep only every N-th written mesh")
 parser.add_argument("--max-level", type=int, help="no cell's level variable above this")
 parser.add_argument("--coarser-than", metavar="BASE2", help="expect cells coarser than BASE2's at the same time")

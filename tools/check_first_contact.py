@@ -20,6 +20,7 @@ Asserted, from the step tables and the last cycle's Exodus series (written every
 Prints what it finds; exit status 1 on any violation.
 Usage: check_first_contact.py BASE [INITIAL_LEVEL] (the run's output base, e.g. out/membrane; the
 level of the initial mesh's cells, 0 unless the deck sets Mesh/Refinement Level)"""
+import argparse
 import glob
 import math
 import os
@@ -29,12 +30,16 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from exodus_text import names as exodus_names  # noqa: E402
-from tool_errors import ArgumentParser, InputError, exodus, read_table, reporting  # noqa: E402
+from tool_errors import (ArgumentParser, InputError, exodus, read_table, reporting,  # noqa: E402
+                         require_unit_square)
 
-ap = ArgumentParser(description=__doc__.splitlines()[0])
+ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
 ap.add_argument("base", help="the run's output base (folder/basename)")
-ap.add_argument("initial_level", nargs="?", type=int, default=0, help="the level of the initial mesh's cells")
+ap.add_argument("initial_level", nargs="?", type=int, default=0,
+                help="the level of the initial mesh's cells (0 or more; default 0)")
 args = ap.parse_args()
+if args.initial_level < 0:
+    ap.error(f"argument initial_level: {args.initial_level}: not a level (0 or more)")
 base = args.base
 initial = args.initial_level
 failures = []
@@ -49,7 +54,25 @@ def first_contact_step(table):
     return int(table["step"][active[0]]) if active.size else None
 
 
+def written_steps():
+    """(time, file, index in the file) of every written step of the last cycle's series."""
+    files = sorted(glob.glob(base + ".e") + glob.glob(base + ".e-s.*"),
+                   key=lambda f: int(f.rsplit(".", 1)[1]) if ".e-s." in f else 0)
+    if not files:
+        raise InputError(f"{base}.e: no such file (no Exodus files {base}.e*; run with Output/Exodus Interval = 1)")
+    out = []
+    for f in files:
+        with exodus(f) as d:
+            require_unit_square(f, d)
+            for var, name in (("name_elem_var", "level"), ("name_sset_var", "lambda")):
+                if var not in d.variables or name not in exodus_names(d[var]):
+                    raise InputError(f"{f}: no variable {name} (not the output of a membrane run with contact?)")
+            out += [(float(t), f, i) for i, t in enumerate(np.asarray(d["time_whole"][:]))]
+    return out
+
+
 last = steps_table(base + ".steps.csv", 2)
+times = reporting(written_steps)  # a run of another kind (not the membrane's [0,1]^2) refused before any output
 k = float(last["t"][1] - last["t"][0])
 t_star = 2 / math.pi * math.asin(0.05 * math.pi / 2)
 expected = math.ceil(t_star / k - 1e-9)
@@ -68,20 +91,6 @@ else:
         failures.append(f"control: cycle 0 finds the contact in step {found0}, expected later than {expected}")
 
 
-def written_steps():
-    """(time, file, index in the file) of every written step of the last cycle's series."""
-    files = sorted(glob.glob(base + ".e") + glob.glob(base + ".e-s.*"),
-                   key=lambda f: int(f.rsplit(".", 1)[1]) if ".e-s." in f else 0)
-    out = []
-    for f in files:
-        with exodus(f) as d:
-            for var, name in (("name_elem_var", "level"), ("name_sset_var", "lambda")):
-                if var not in d.variables or name not in exodus_names(d[var]):
-                    raise InputError(f"{f}: no variable {name} (not the output of a membrane run with contact?)")
-            out += [(float(t), f, i) for i, t in enumerate(np.asarray(d["time_whole"][:]))]
-    return out
-
-
 def gamma_c_cells(f, i):
     """Levels of the mesh, and (y-range, level, lambda) of the cells along the side set, sorted in y."""
     with exodus(f) as d:
@@ -97,7 +106,6 @@ def gamma_c_cells(f, i):
     return level, lo[order], hi[order], level[cells][order], lam[order]
 
 
-times = reporting(written_steps)
 t_of = {round(t / k): (f, i) for t, f, i in times}
 if found is None or found not in t_of or found - 1 not in t_of:
     failures.append("the steps around the first contact are not in the Exodus series (write every step)")

@@ -25,7 +25,10 @@ import glob
 import math
 import os
 import re
+import signal
 import sys
+
+signal.signal(signal.SIGPIPE, signal.SIG_DFL)  # output into a closed pipe (| head): end quietly, as tool_errors.py does
 
 
 def fail(message):
@@ -39,6 +42,9 @@ def usage():
 
 
 args = sys.argv[1:]
+if any(a in ("-h", "--help") for a in args):  # asked for: the description on stdout, exit status 0
+    print(__doc__.strip())
+    sys.exit(0)
 reader_kind = "default"
 if len(args) >= 2 and args[0] == "--reader":
     reader_kind = args[1]

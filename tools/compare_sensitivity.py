@@ -4,6 +4,7 @@
 (the two-cycle runs write both): the energy relative to its initial value, the probe u(1, 0.5) and
 eta^n relative to its maximum ("reproducible": the paper's scheme under Parallel/Reproducible
 Arithmetic). Usage: compare_sensitivity.py DIR"""
+import argparse
 import functools
 import os
 import sys
@@ -13,7 +14,7 @@ import numpy as np
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from tool_errors import ArgumentParser, InputError, read_table, reporting  # noqa: E402
 
-ap = ArgumentParser(description=__doc__.splitlines()[0])
+ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
 ap.add_argument("dir", help="the output folder of run-rank-sensitivity.sh")
 out = ap.parse_args().dir
 steps = [25, 50, 100, 150, 200, 250, 300, 350, 400]

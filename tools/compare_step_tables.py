@@ -6,6 +6,7 @@ columns time_*. Prints the first difference of every column that differs; exit s
 differs or the tables do not match in shape. With --common-columns, columns that only one of the
 runs has (a version that added a column) are named and left out instead.
 Usage: compare_step_tables.py BASE_A BASE_B [--common-columns]"""
+import argparse
 import csv
 import glob
 import os
@@ -14,7 +15,7 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from tool_errors import ArgumentParser, InputError, fail, require_complete, require_file  # noqa: E402
 
-ap = ArgumentParser(description=__doc__.splitlines()[0])
+ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
 ap.add_argument("base_a", help="output base of one run (folder/basename)")
 ap.add_argument("base_b", help="output base of the other run")
 ap.add_argument("--common-columns", action="store_true", help="leave out columns that only one run has")

@@ -3,6 +3,7 @@
 obstacle, in the written Exodus series of a membrane run from t = 0.0375 to one output after the
 first contact (first step with active > 0 in <base>.steps.csv); the step mesh's finest level for
 comparison. Usage: contact_zone_levels.py OUT/BASENAME (e.g. out/membrane)"""
+import argparse
 import glob
 import os
 import sys
@@ -11,11 +12,12 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from exodus_text import names as exodus_names  # noqa: E402
-from tool_errors import ArgumentParser, InputError, exodus, read_table, reporting  # noqa: E402
+from tool_errors import (ArgumentParser, InputError, exodus, read_table, reporting,  # noqa: E402
+                         require_unit_square)
 
 
 def main():
-    ap=ArgumentParser(description=__doc__.splitlines()[0])
+    ap=ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('base', help='output base of the run (folder/basename)')
     base=ap.parse_args().base
     steps=np.atleast_1d(read_table(base+'.steps.csv', ['t', 'active']))
@@ -25,6 +27,8 @@ def main():
     files=sorted(glob.glob(base+'.e*'), key=lambda f: (len(f), f))
     if not files:
         raise InputError(f'{base}.e: no such file (the run wrote no Exodus output? Output/Write Exodus)')
+    with exodus(files[0]) as d:  # a run of another kind refused before any output
+        require_unit_square(files[0], d)
     print(base, 'first contact t =', first)
     for f in files:
         with exodus(f) as d:

@@ -9,6 +9,7 @@ character may be cut between two). The deck names the output folder and basename
 it again with --output-dir or another Output/Basename, or it replaces the results it came from.
 Uses Debian's python3 with netCDF4.
 """
+import argparse
 import os
 import sys
 
@@ -34,7 +35,7 @@ def info_lines(path):
 
 
 def main():
-    ap = ArgumentParser(description=__doc__.splitlines()[0])
+    ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("exodus_file", help="an Exodus file written by signorini (e.g. out/membrane.e)")
     path = ap.parse_args().exodus_file
     try:

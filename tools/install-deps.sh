@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package signorini needs to build, test and plot.
 # Idempotent and non-interactive; run as root (or with sudo available).
+# Usage: bash tools/install-deps.sh   (-h, --help: this text)
 set -euo pipefail
+source "$(dirname "$0")/script_args.sh"
+no_arguments "$@"
 if ! command -v dpkg-query > /dev/null || ! command -v apt-get > /dev/null; then
   echo "install-deps: this script installs Debian packages (dpkg and apt-get); on another system install" \
     "Trilinos 13.2, p4est, ExodusII, muParser, GoogleTest and MPI yourself and configure with cmake" \

@@ -5,7 +5,10 @@
 # intervals), the contact intervals, the correlations of refined zone and contact zone and the factors in
 # unknowns and wall time. About 8 minutes on 2 cores (the adaptive runs and the uniform run go side by side).
 # Usage: bash tools/run-bar-comparison.sh   (SIGNORINI_NO_BUILD=1: use the existing build/src/signorini)
+# Takes no arguments (-h, --help: this text).
 set -euo pipefail
+source "$(dirname "$0")/script_args.sh"
+no_arguments "$@"
 cd "$(dirname "$0")/.."
 [ -n "${SIGNORINI_NO_BUILD:-}" ] || bash tools/build.sh > /dev/null
 mkdir -p out

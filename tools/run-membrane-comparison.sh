@@ -6,7 +6,10 @@
 # stabilisation), the plots (out/plots/*.png, copied to docs/figures/) and the factors in unknowns and
 # wall time. About 4 minutes on 2 cores.
 # Usage: bash tools/run-membrane-comparison.sh   (SIGNORINI_NO_BUILD=1: use the existing build/src/signorini)
+# Takes no arguments (-h, --help: this text).
 set -euo pipefail
+source "$(dirname "$0")/script_args.sh"
+no_arguments "$@"
 cd "$(dirname "$0")/.."
 [ -n "${SIGNORINI_NO_BUILD:-}" ] || bash tools/build.sh > /dev/null
 mkdir -p out

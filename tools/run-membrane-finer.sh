@@ -6,7 +6,10 @@
 # docs/figures/eta_vs_unknowns_finer.png). No Exodus output.
 # About 6 minutes on 2 cores (the two longest runs side by side).
 # Usage: bash tools/run-membrane-finer.sh   (SIGNORINI_NO_BUILD=1: use the existing build/src/signorini)
+# Takes no arguments (-h, --help: this text).
 set -euo pipefail
+source "$(dirname "$0")/script_args.sh"
+no_arguments "$@"
 cd "$(dirname "$0")/.."
 [ -n "${SIGNORINI_NO_BUILD:-}" ] || bash tools/build.sh > /dev/null
 out=out/finer

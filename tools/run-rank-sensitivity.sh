@@ -6,7 +6,10 @@
 # bits of 1 rank; the perturbation still grows). Prints the difference of the probe u(1, 0.5) and of eta^n over cycle 1 (whose meshes all
 # runs share) and the unknowns of cycle 1. About 2 minutes.
 # Usage: bash tools/run-rank-sensitivity.sh
+# Takes no arguments (-h, --help: this text).
 set -euo pipefail
+source "$(dirname "$0")/script_args.sh"
+no_arguments "$@"
 cd "$(dirname "$0")/.."
 bash tools/build.sh > /dev/null
 out=out/sensitivity

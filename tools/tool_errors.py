@@ -13,6 +13,7 @@ write output: <reason>', exit status 1), wherever the script prints; output into
   read_table(path)    a CSV table of signorini (numpy structured array), checked complete
   require_complete_exodus(path)  an Exodus file as long as its header says (not cut short)
   exodus(path)        an Exodus file opened with netCDF4, checked complete
+  require_unit_square(path, d)   the cells of an open Exodus file cover [0,1]^2 (a membrane run)
 """
 import argparse
 import atexit
@@ -91,7 +92,9 @@ class ArgumentParser(argparse.ArgumentParser):
 
 
 def require_file(path):
-    """InputError unless path is a file."""
+    """InputError unless path is a file (a directory is named as such)."""
+    if os.path.isdir(path):
+        raise InputError(f"{path}: a directory, not a file")
     if not os.path.isfile(path):
         raise InputError(f"{path}: no such file")
 
@@ -220,3 +223,20 @@ def exodus(path):
         return netCDF4.Dataset(path)
     except OSError as e:
         raise InputError(f"{path}: not readable as an Exodus file: {e.strerror or e}") from None
+
+
+def require_unit_square(path, d):
+    """InputError unless the cells of the Exodus file d (open, read from path) cover the unit square
+    [0,1]^2 exactly, the domain of the membrane decks (inputs/membrane*.xml): the scripts written for
+    those runs refuse others (the bar's [0,0.2]x[0,0.05], an Exodus mesh of another shape)."""
+    x, y = np.asarray(d["coordx"][:], dtype=float), np.asarray(d["coordy"][:], dtype=float)
+    blocks = [v for v in d.variables if v.startswith("connect")]
+    area = 0.0
+    for b in blocks:  # the shoelace formula over every cell (corners in order, either orientation)
+        conn = np.asarray(d[b][:]) - 1
+        cx, cy = x[conn], y[conn]
+        area += np.abs(np.sum(cx * np.roll(cy, -1, 1) - np.roll(cx, -1, 1) * cy, axis=1)).sum() / 2
+    box = (x.min(), x.max(), y.min(), y.max()) if x.size else (np.nan,) * 4
+    if not blocks or not np.allclose(box, (0, 1, 0, 1), rtol=0, atol=1e-12) or abs(area - 1) > 1e-9:
+        raise InputError(f"{path}: not a membrane run: the cells do not cover [0,1]^2 (they lie in "
+                         f"[{box[0]:g},{box[1]:g}]x[{box[2]:g},{box[3]:g}], area {area:g})")

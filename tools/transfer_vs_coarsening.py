@@ -9,6 +9,7 @@ the median change per coarsened area in three equal parts of the steps that coar
 With --check the script fails (exit status 1) if such a step changes the energy by more than
 1e-12 E(0) or if the run has no such step.
 Usage: transfer_vs_coarsening.py [--check] OUT/BASENAME (e.g. out/transfer/membrane)"""
+import argparse
 import glob
 import os
 import sys
@@ -48,7 +49,7 @@ def level_maps(base):
 
 
 def main():
-    ap = ArgumentParser(description=__doc__.splitlines()[0])
+    ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("base", help="output base of the run (folder/basename)")
     ap.add_argument("--check", action="store_true",
                     help="fail unless the steps that only refine keep the energy to 1e-12 E(0)")

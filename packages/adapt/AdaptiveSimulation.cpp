@@ -526,7 +526,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                         phase("unconstrained"), std::max(0.0, wall - phases)});
       core::rootOut(rank) << std::scientific << std::setprecision(4) << "signorini: cycle " << l
                           << ": total unknowns " << last.totalDofs << ", eta " << etaMax << std::fixed
-                          << ", " << wall << " s" << std::endl;
+                          << ", " << wall + regularise << " s" << std::endl;  // wall_seconds
       if (stop) {
         if (!lastPlanned) {
           core::rootOut(rank) << "signorini: cycle " << l << " ends the run: "
