@@ -254,7 +254,7 @@ def main():
     ap.add_argument("--steps", default="auto",
                     help="steps for the mesh pictures, or auto: nine steps chosen from the contact intervals")
     ap.add_argument("--time-step", type=float, help="the run's time step (default: from its step table)")
-    ap.add_argument("--out", default="out/plots-bar")
+    ap.add_argument("--out", default="out/plots-bar", help="folder for the plots (created; default %(default)s)")
     a = ap.parse_args()
     try:  # every input first: a missing file or column stops before any plot is written
         for base in [a.adaptive, a.uniform] + [spec.split(":", 1)[0] for spec in a.more_adaptive]:

@@ -476,7 +476,8 @@ def main():
     ap.add_argument("--h-equals-h-stabilised", help="the same for the --h-equals-h run")
     ap.add_argument("--steps", default="20,60,100,200,300,400", help="steps whose meshes are drawn")
     ap.add_argument("--time-step", type=float, help="the run's time step (default: from its step table)")
-    ap.add_argument("--multiplier-time", type=float, default=0.5)
+    ap.add_argument("--multiplier-time", type=float, default=0.5,
+                    help="centre of the time window of the multiplier plot (default 0.5)")
     ap.add_argument("--multiplier-window", type=float, default=0.05,
                     help="half width of the time window of the multiplier's mean and range (default 0.05)")
     ap.add_argument("--title", default="paper Example 6.1 (membrane), cf. Fig. 6.3",
@@ -484,7 +485,7 @@ def main():
     ap.add_argument("--adaptive-label", default=PAPER_LABEL, help="legend of --adaptive (default: %(default)s)")
     ap.add_argument("--eta-only", action="store_true",
                     help="draw only eta_vs_unknowns.png (runs without Exodus output, e.g. the finer study)")
-    ap.add_argument("--out", required=True)
+    ap.add_argument("--out", required=True, help="folder for the plots (created)")
     a = ap.parse_args()
     try:  # every input first: a missing file or column stops before any plot is written
         for base in [a.adaptive, a.uniform] + [spec.split(":", 1)[0] for spec in a.more_adaptive]:

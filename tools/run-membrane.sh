@@ -6,13 +6,14 @@
 set -euo pipefail
 source "$(dirname "$0")/script_args.sh"
 help_only "$@"
-value_of=""  # signorini's options (src: its usage text), checked here so that a typo fails before the build
+value_of=""  # signorini's options (src/signorini.cpp), checked here so that a typo fails before the build
 for a in "$@"; do
   if [ -n "$value_of" ]; then value_of=""; continue; fi
   case $a in
+    --) break ;;  # decks only from here on
     --set | --output-dir) value_of=$a ;;
-    --set=* | --output-dir=* | --check | --print-parameters | --version) ;;
-    -*) usage_error "unknown option '$a' (build/src/signorini --help lists signorini's options)" ;;
+    --set=* | --output-dir=* | --check | --print-parameters | --version | --kokkos-*) ;;
+    -?*) usage_error "unknown option '$a' (build/src/signorini --help lists signorini's options)" ;;
   esac
 done
 [ -z "$value_of" ] || usage_error "option '$value_of' needs a value"

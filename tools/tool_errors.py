@@ -57,7 +57,8 @@ def _flush_stdout():
     """At exit: what is left of stdout written now, so that a failure is reported in one line (the
     interpreter's own last flush would print 'Exception ignored' and exit with status 120)."""
     try:
-        sys.stdout.flush()
+        if sys.stdout is not None:  # None: started with stdout closed
+            sys.stdout.flush()
     except OSError as e:
         _cannot_write(e)
 

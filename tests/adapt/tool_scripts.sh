@@ -14,6 +14,9 @@
 # tools/check_adaptive_meshes.py checks Algorithm 5.3 only between consecutive steps both written
 # (a run written every 4th step passes, saying 5.3 was not checked; two levels between consecutive
 # steps fail).
+# Output into a closed pipe ends a script quietly, output onto a full device in one line; the
+# membrane's checkers refuse the bar; every script's --help shows its whole description; the shell
+# scripts answer -h/--help and refuse arguments they do not take before doing anything.
 # Usage: tool_scripts.sh SIGNORINI SOURCE_DIR WORK_DIR
 set -uo pipefail
 signorini=$1 src=$2 work=$3
@@ -296,5 +299,149 @@ refuses deck_cut_exodus "deck_from_exodus.py: error: $work/cut-deck.e: cut short
   { cat "$work/exo-again.log"; fail "the recorded Exodus-mesh deck does not run from another folder"; }
 /usr/bin/python3 "$src/tools/compare_step_tables.py" "$work/exo" "$work/exo-again" ||
   fail "the recorded Exodus-mesh deck ran to other step tables"
+
+# Output that cannot be written (tools/tool_errors.py): into a pipe closed before the script writes
+# (| head -1) a script ends quietly, killed by SIGPIPE, with nothing on stderr (not a BrokenPipeError
+# traceback); into a full device (/dev/full) it ends with one line 'cannot write output' and exit
+# status 1, also for what it prints at its top level and what is left for the flush at exit.
+/usr/bin/python3 - "$work" "$tools" <<'PY' || fail "output into a closed pipe"
+import os, signal, subprocess, sys
+work, tools = sys.argv[1:]
+m = f"{work}/membrane"
+bad = []
+for cmd in (["compare_runs.py", m, m], ["check_adaptive_meshes.py", m], ["deck_from_exodus.py", m + ".e"],
+            ["compare_step_tables.py", m, m], ["check_mirror_symmetry.py", m], ["check_paraview.py", "--help"]):
+    r, w = os.pipe()
+    os.close(r)  # closed before the script writes: every write fails
+    p = subprocess.run(["/usr/bin/python3", f"{tools}/{cmd[0]}"] + cmd[1:], stdout=w, stderr=subprocess.PIPE)
+    os.close(w)
+    if p.returncode != -signal.SIGPIPE or p.stderr:
+        bad.append(f"{cmd[0]} into a closed pipe: exit status {p.returncode}, stderr {p.stderr.decode()[-300:]!r}")
+if bad:
+    sys.exit("\n".join(bad))
+PY
+full() {  # name regex command...: stdout on /dev/full: exit status 1, one line on stderr matching regex
+  local name=$1 regex=$2
+  shift 2
+  "$@" > /dev/full 2> "$work/$name.log"
+  local status=$?
+  [ "$status" = 1 ] || { cat "$work/$name.log"; fail "$name: exit status $status, expected 1"; }
+  ! grep -q Traceback "$work/$name.log" || { cat "$work/$name.log"; fail "$name: a traceback"; }
+  [ "$(wc -l < "$work/$name.log")" = 1 ] || { cat "$work/$name.log"; fail "$name: not one line"; }
+  grep -q -- "$regex" "$work/$name.log" || { cat "$work/$name.log"; fail "$name: message"; }
+}
+if [ -w /dev/full ]; then
+  full deck_full "deck_from_exodus.py: error: cannot write output: No space left on device" \
+    "$py" "$tools/deck_from_exodus.py" "$work/membrane.e"
+  full tables_full "compare_step_tables.py: error: cannot write output: No space left on device" \
+    "$py" "$tools/compare_step_tables.py" "$work/membrane" "$work/membrane"
+  full mirror_full "check_mirror_symmetry.py: error: cannot write output: No space left on device" \
+    "$py" "$tools/check_mirror_symmetry.py" "$work/membrane"
+  full compare_full "compare_runs.py: error: cannot write output: No space left on device" \
+    "$py" "$tools/compare_runs.py" "$work/membrane" "$work/membrane-uniform"
+fi
+# Runs of the wrong kind and bad arguments: the membrane's checkers refuse the bar (its domain is
+# [0,0.2]x[0,0.05], not the membrane's [0,1]^2), a mirror line that is not finite or not inside the
+# domain and a negative level; deck_from_exodus.py names a directory as such.
+"$signorini" --output-dir "$work" --set 'Time Integration/Final Time=3e-4' --set 'Adaptivity/Cycles=1' \
+  "$src/inputs/bar.xml" > "$work/bar.log" 2>&1 || { cat "$work/bar.log"; fail "the bar run failed"; }
+not_membrane="$work/bar.e: not a membrane run: the cells do not cover \[0,1\]^2"
+refuses first_bar "check_first_contact.py: error: $not_membrane" "$py" "$tools/check_first_contact.py" "$work/bar"
+refuses mirror_bar "check_mirror_symmetry.py: error: $not_membrane" "$py" "$tools/check_mirror_symmetry.py" "$work/bar"
+refuses zone_bar "contact_zone_levels.py: error: $not_membrane" "$py" "$tools/contact_zone_levels.py" "$work/bar"
+refuses mirror_nan "check_mirror_symmetry.py: error: argument axis: nan: not a line x2 = c inside" \
+  "$py" "$tools/check_mirror_symmetry.py" "$work/membrane" nan
+refuses mirror_outside "check_mirror_symmetry.py: error: argument axis: 1.5: not a line x2 = c inside" \
+  "$py" "$tools/check_mirror_symmetry.py" "$work/membrane" 1.5
+refuses first_negative_level "check_first_contact.py: error: argument initial_level: -5: not a level (0 or more)" \
+  "$py" "$tools/check_first_contact.py" "$work/membrane" -5
+refuses deck_directory "deck_from_exodus.py: error: $work: a directory, not a file" \
+  "$py" "$tools/deck_from_exodus.py" "$work"
+# --help of every Python script: exit status 0, the script's whole docstring (not cut after its first
+# line) and a help text for every argument.
+/usr/bin/python3 - "$tools" <<'PY' || fail "--help of the Python scripts"
+import ast, glob, os, re, subprocess, sys
+bad = []
+for path in sorted(glob.glob(os.path.join(sys.argv[1], "*.py"))):
+    name = os.path.basename(path)
+    if name in ("tool_errors.py", "exodus_text.py"):  # modules, not scripts
+        continue
+    doc = ast.get_docstring(ast.parse(open(path).read()), clean=False)
+    p = subprocess.run(["/usr/bin/python3", path, "--help"], capture_output=True, text=True)
+    if p.returncode != 0:
+        bad.append(f"{name} --help: exit status {p.returncode}")
+    elif " ".join(doc.split()) not in " ".join(p.stdout.split()):
+        bad.append(f"{name} --help: not the whole docstring")
+    lines = p.stdout.splitlines()
+    listing = False  # in argparse's lists of arguments: '  name   help', or '  name' with the help below
+    for i, line in enumerate(lines):
+        if line in ("positional arguments:", "options:", "optional arguments:"):
+            listing = True
+        elif not line.startswith(" "):
+            listing = False
+        elif listing and re.match(r"  \S", line) and not re.match(r"  \S.*\S  +\S", line) \
+                and not (i + 1 < len(lines) and re.match(r"    +\S", lines[i + 1])):
+            bad.append(f"{name} --help: no help for {line.strip()}")
+if bad:
+    sys.exit("\n".join(bad))
+PY
+# The shell scripts: -h/--help prints the header comment and exits 0, an argument a script does not take
+# is refused (exit status 2, one line), both before anything is installed, built or run: copies of
+# the scripts run with every command they could call (apt-get, dpkg-query, cmake, ctest, mpirun,
+# signorini) replaced by stubs that log their call. run-tests.sh and run-membrane.sh pass their
+# other arguments on (to ctest, to signorini after the deck).
+sandbox=$work/sandbox
+mkdir -p "$sandbox/tools" "$sandbox/stubs" "$sandbox/build/src" "$sandbox/inputs"
+cp "$src"/tools/*.sh "$sandbox/tools/"
+cat > "$sandbox/stubs/stub" <<'SH'
+#!/usr/bin/env bash
+echo "$(basename "$0") $*" >> "$STUB_LOG"
+[ "$(basename "$0")" != dpkg-query ] || printf 'install ok installed'
+exit "${STUB_STATUS:-1}"
+SH
+chmod +x "$sandbox/stubs/stub"
+for c in apt-get sudo dpkg-query cmake ctest mpirun make; do ln -s stub "$sandbox/stubs/$c"; done
+ln -s ../../stubs/stub "$sandbox/build/src/signorini"
+stubbed() {  # log command...: runs command with the stubs first on PATH, the stubs' calls in $sandbox/log.calls
+  local log=$1
+  shift
+  rm -f "$sandbox/log.calls"
+  PATH="$sandbox/stubs:$PATH" STUB_LOG="$sandbox/log.calls" "$@" > "$work/$log.out" 2> "$work/$log.err"
+}
+for script in run-membrane-comparison run-bar-comparison run-membrane-finer run-rank-sensitivity run-membrane \
+    run-tests build install-deps; do
+  for h in --help -h; do
+    stubbed "sh-$script$h" bash "$sandbox/tools/$script.sh" "$h"
+    status=$?
+    [ "$status" = 0 ] || { cat "$work/sh-$script$h.err"; fail "$script.sh $h: exit status $status"; }
+    [ ! -e "$sandbox/log.calls" ] || { cat "$sandbox/log.calls"; fail "$script.sh $h ran commands"; }
+    grep -q "^Usage: bash tools/$script.sh" "$work/sh-$script$h.out" && [ ! -s "$work/sh-$script$h.err" ] &&
+      ! grep -q '^#' "$work/sh-$script$h.out" ||
+      { cat "$work/sh-$script$h.out" "$work/sh-$script$h.err"; fail "$script.sh $h: not its header"; }
+  done
+  case $script in
+    run-tests) continue ;;  # every other argument is ctest's
+    run-membrane) bad=(--bogus) ;;  # an option signorini does not know
+    *) bad=(out) ;;
+  esac
+  stubbed "sh-$script-bad" bash "$sandbox/tools/$script.sh" "${bad[@]}"
+  status=$?
+  [ "$status" = 2 ] || { cat "$work/sh-$script-bad.err"; fail "$script.sh ${bad[*]}: exit status $status, expected 2"; }
+  [ ! -e "$sandbox/log.calls" ] || { cat "$sandbox/log.calls"; fail "$script.sh ${bad[*]} ran commands"; }
+  [ "$(wc -l < "$work/sh-$script-bad.err")" = 1 ] &&
+    grep -q "^$script.sh: error: .*${bad[0]}.*(Usage: bash tools/$script.sh" "$work/sh-$script-bad.err" ||
+    { cat "$work/sh-$script-bad.err"; fail "$script.sh ${bad[*]}: message"; }
+done
+stubbed sh-run-membrane-set bash "$sandbox/tools/run-membrane.sh" --set
+[ $? = 2 ] && [ ! -e "$sandbox/log.calls" ] || fail "run-membrane.sh --set (no value) not refused"
+STUB_STATUS=0 stubbed sh-run-tests-pass bash "$sandbox/tools/run-tests.sh" -R tools -LE long ||
+  { cat "$work/sh-run-tests-pass.err"; fail "run-tests.sh -R tools -LE long (stubbed)"; }
+grep -qx "ctest --output-on-failure --timeout 900 -R tools -LE long" "$sandbox/log.calls" ||
+  { cat "$sandbox/log.calls"; fail "run-tests.sh did not pass its arguments to ctest"; }
+STUB_STATUS=0 stubbed sh-run-membrane-pass bash "$sandbox/tools/run-membrane.sh" --set 'Adaptivity/Cycles=1' --check ||
+  { cat "$work/sh-run-membrane-pass.err"; fail "run-membrane.sh --set ... --check (stubbed)"; }
+grep -qx "signorini --output-dir out inputs/membrane.xml --set Adaptivity/Cycles=1 --check" "$sandbox/log.calls" ||
+  { cat "$sandbox/log.calls"; fail "run-membrane.sh did not pass its arguments to signorini"; }
 echo "plots drawn; missing arguments, missing, non-adaptive, cut-short and not comparable runs refused in one line," \
-  "nothing written; the deck from an Exodus file reruns the run bit for bit"
+  "nothing written; the deck from an Exodus file reruns the run bit for bit; output that cannot be written," \
+  "runs of the wrong kind, --help and the shell scripts' arguments handled"
