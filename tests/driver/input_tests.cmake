@@ -91,7 +91,7 @@ signorini_add_driver_test(boundary_segment_trailing_comma EXIT 1
   ARGS --check --output-dir {OUT} --set "Mesh/Boundary Segments/clamped=left," ${decks}/good.xml
   REGEX "Mesh/Boundary Segments/clamped: empty condition in 'left,'")
 signorini_add_driver_test(boundary_segment_empty_name EXIT 1
-  ARGS --check --output-dir {OUT} --set "Mesh/Boundary Segments/=left" ${decks}/good.xml
+  ARGS --check --output-dir {OUT} ${decks}/boundary-segment-empty-name.xml
   REGEX "Mesh/Boundary Segments: a segment with an empty name [(]'left'[)], which no list can name")
 signorini_add_driver_test(output_exodus_create_error_gives_reason EXIT 1
   ARGS --output-dir {OUT} ${decks}/good.xml
