@@ -98,13 +98,16 @@ int main(int argc, char** argv) {
   // Kokkos answers "--help" and "-h" with its own 60 lines of options: they are kept from it and
   // mean our usage (Kokkos' own is "--kokkos-help").
   // "--output-dir=DIR" and "--set=SPEC" are the two-word forms (GNU style).
+  // After "--" every argument is a deck: none of the passes below reads one as an option.
   std::vector<std::string> words{argv[0]};
+  bool ended = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     const bool valueOption = words.back() == "--set" || words.back() == "--output-dir";
+    ended = ended || (arg == "--" && !valueOption);
     bool split = false;
     for (const std::string option : {"--output-dir=", "--set="})
-      if (!valueOption && !split && arg.rfind(option, 0) == 0) {
+      if (!ended && !valueOption && !split && arg.rfind(option, 0) == 0) {
         words.push_back(option.substr(0, option.size() - 1));
         words.push_back(arg.substr(option.size()));
         split = true;
@@ -114,9 +117,11 @@ int main(int argc, char** argv) {
   std::vector<char*> args{words[0].data()};
   bool help = false, kokkosHelp = false;
   argc = static_cast<int>(words.size());
+  ended = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = words[static_cast<size_t>(i)], before = words[static_cast<size_t>(i - 1)];
-    const bool option = before != "--set" && before != "--output-dir";
+    const bool option = !ended && before != "--set" && before != "--output-dir";
+    ended = ended || (option && arg == "--");
     kokkosHelp = kokkosHelp || (option && arg == "--kokkos-help");
     if ((arg == "--help" || arg == "-h") && option)
       help = true;
@@ -140,12 +145,15 @@ int main(int argc, char** argv) {
     out << kUsage;
     return 0;
   }
-  for (int i = 1; i < argc; ++i)
-    if (std::string(argv[i]) == "--version" && std::string(argv[i - 1]) != "--set" &&
-        std::string(argv[i - 1]) != "--output-dir") {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i], before = argv[i - 1];
+    if (before == "--set" || before == "--output-dir") continue;
+    if (arg == "--") break;
+    if (arg == "--version") {
       out << versions();
       return 0;
     }
+  }
   bool optionsEnded = false;  // after "--" every argument is a deck
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
@@ -163,9 +171,7 @@ int main(int argc, char** argv) {
         return 2;
       }
       const std::string value = argv[++i];
-      const std::string key = value.substr(0, value.find('='));  // no empty name in "Sublist/key"
-      if (arg == "--set" && (value.find('=') == std::string::npos || key.empty() || key.front() == '/' ||
-                             key.back() == '/' || key.find("//") != std::string::npos)) {
+      if (arg == "--set" && !signorini::core::isOverrideSpec(value)) {
         if (rank == 0) std::cerr << "signorini: --set '" << value << "': expected 'Sublist/key=value'\n";
         return 2;
       }

@@ -111,7 +111,14 @@ status=$?
 mkdir -p "$work/dash" && cp "$good" "$work/dash/-x.xml"
 (cd "$work/dash" && "$signorini" --check -- -x.xml) > "$work/dash-deck.log" 2>&1 &&
   grep -q "^signorini: -x[.]xml is valid" "$work/dash-deck.log" || { cat "$work/dash-deck.log"; fail "a deck after --"; }
+# After "--" not even --help, --version or --set=... is an option: each is a deck, here a missing file.
+for name in --help --version --set=a.xml; do
+  (cd "$work/dash" && "$signorini" --check -- "$name") > "$work/dash-option.log" 2>&1
+  status=$?
+  [ "$status" = 1 ] && grep -qF -- "$name: cannot open the deck" "$work/dash-option.log" ||
+    { cat "$work/dash-option.log"; fail "$name after --: exit status $status, not read as a deck"; }
+done
 echo "a deck on stdin runs on 2 ranks and takes Mesh/File from the working directory; a deck from <(...) needs"
 echo "Output/Basename; one output base through a link is refused; a locked output base is refused, a stale lock"
 echo "taken over; --output-dir=DIR and --set=SPEC work; '-' and no deck are usage errors; --print-parameters DECK"
-echo "prints a complete deck that reproduces the run; decks follow --"
+echo "prints a complete deck that reproduces the run; decks follow -- (even --help, --version, --set=...)"
