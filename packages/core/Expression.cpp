@@ -5,6 +5,7 @@
 #include <muParser.h>
 
 #include "Error.hpp"
+#include "StringTools.hpp"
 
 namespace signorini::core {
 
@@ -44,7 +45,7 @@ Expression::Expression(const std::string& text, const std::string& where)
     const double v = impl_->parser.Eval();
     if (constant_) constantValue_ = v;
     if (!std::isfinite(v) && constant_)
-      SIGNORINI_USER_ERROR(where << ": expression '" << text << "' evaluates to " << (std::isnan(v) ? "nan" : v < 0 ? "-inf" : "inf")
+      SIGNORINI_USER_ERROR(where << ": expression '" << text << "' evaluates to " << nonFiniteText(v)
                                  << " (it depends on none of x, y, t: everywhere)");
   } catch (mu::Parser::exception_type& e) {
     SIGNORINI_USER_ERROR(where << ": cannot parse expression '" << text << "': " << e.GetMsg()
@@ -82,7 +83,7 @@ double Expression::sample(double x, double y, double t, std::string& bad) const 
   const double v = (*this)(x, y, t);
   if (!std::isfinite(v) && bad.empty()) {
     std::ostringstream os;
-    os << where_ << ": '" << text_ << "' evaluates to " << (std::isnan(v) ? "nan" : v < 0 ? "-inf" : "inf") << " at (" << x << ", " << y << "), t = " << t;
+    os << where_ << ": '" << text_ << "' evaluates to " << nonFiniteText(v) << " at (" << x << ", " << y << "), t = " << t;
     bad = os.str();
   }
   return v;

@@ -11,6 +11,7 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "Error.hpp"
+#include "StringTools.hpp"
 
 namespace signorini::core {
 namespace {
@@ -118,7 +119,7 @@ void validateRecursive(ParameterList& deck, const ParameterList& valid, const st
       SIGNORINI_USER_ERROR(context << ": '" << full << "' has type " << typeName(da) << " but must be "
                                    << typeName(va));
     if (da.type() == typeid(double) && !std::isfinite(Teuchos::any_cast<double>(da)))
-      SIGNORINI_USER_ERROR(context << ": '" << full << "' is " << Teuchos::any_cast<double>(da)
+      SIGNORINI_USER_ERROR(context << ": '" << full << "' is " << nonFiniteText(Teuchos::any_cast<double>(da))
                                    << "; a finite number is required");
     if (auto v = ventry.validator(); !v.is_null()) {
       try {
@@ -222,9 +223,16 @@ std::string closestName(const std::string& name, const std::vector<std::string>&
   return best;
 }
 
+bool isOverrideSpec(const std::string& spec) {
+  const auto eq = spec.find('=');
+  if (eq == std::string::npos) return false;
+  const std::string path = spec.substr(0, eq);
+  return !path.empty() && path.front() != '/' && path.back() != '/' && path.find("//") == std::string::npos;
+}
+
 void applyOverride(ParameterList& deck, const std::string& spec, const ParameterList& valid) {
   const auto eq = spec.find('=');
-  if (eq == std::string::npos || eq == 0)
+  if (!isOverrideSpec(spec))
     SIGNORINI_USER_ERROR("--set '" << spec << "': expected 'Sublist/key=value'");
   const std::string path = spec.substr(0, eq), value = spec.substr(eq + 1);
   std::vector<std::string> parts;

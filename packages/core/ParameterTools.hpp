@@ -41,8 +41,13 @@ ParameterList& addNamedStrings(ParameterList& valid, const std::string& name, co
 /// value, a disallowed string or NaN. \p context prefixes messages (e.g. the deck's file name).
 void validateDeck(ParameterList& deck, const ParameterList& valid, const std::string& context);
 
+/// Whether \p spec has the form of an override, "Sublist/.../key=value": an '=' after a path of
+/// non-empty names separated by single slashes (the value may be empty or hold '=').
+bool isOverrideSpec(const std::string& spec);
+
 /// Applies a command-line override "Sublist/.../key=value" to \p deck, typed after \p valid
-/// (inside pass-through sublists the type is inferred: int, double, bool, else string).
+/// (inside pass-through sublists the type is inferred: int, double, bool, else string). Throws
+/// UserError for a \p spec that is not of that form (isOverrideSpec).
 void applyOverride(ParameterList& deck, const std::string& spec, const ParameterList& valid);
 
 /// Prints every valid parameter with its path, type, default and doc string.

@@ -1,6 +1,7 @@
 #pragma once
 /// \file StringTools.hpp
 /// Small string tests shared by the packages (file names, suffixes, deck lists).
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -29,5 +30,9 @@ inline std::vector<std::string> splitTrimmed(const std::string& text, char separ
     start = at + 1;
   }
 }
+
+/// A value that is not finite as "nan", "inf" or "-inf" (glibc prints "-nan" for some NaNs; the
+/// sign of a NaN means nothing to a user).
+inline std::string nonFiniteText(double value) { return std::isnan(value) ? "nan" : value < 0 ? "-inf" : "inf"; }
 
 }  // namespace signorini::core

@@ -436,6 +436,13 @@ TEST(ApplyOverride, NaNForADoubleIsRejectedBeforeTheRun) {
     validateDeck(deck, valid, "deck.xml");
   });
   EXPECT_CONTAINS(msg, "Time Step");
+  // A not-a-number in the deck is named as "nan", without the sign glibc may print.
+  for (const double value : {std::nan(""), -std::nan("")}) {
+    ParameterList bad;
+    bad.sublist("Time Integration").set("Time Step", value);
+    const auto message = userErrorOf([&] { validateDeck(bad, valid, "deck.xml"); });
+    EXPECT_CONTAINS(message, "'Time Integration/Time Step' is nan; a finite number is required");
+  }
 }
 
 TEST(ApplyOverride, BadValueForAnIntRejected) {
@@ -481,11 +488,19 @@ TEST(ReadBool, TheDecksWordsInAnyCaseWithBlanks) {
 }
 
 TEST(ApplyOverride, MissingEqualsOrKeyRejected) {
-  for (const std::string spec : {"Time Integration/Time Step", "=0.01"}) {
+  // An empty name anywhere in the path (the driver refuses the same forms with a usage error).
+  for (const std::string spec : {"Time Integration/Time Step", "=0.01", "Mesh/=3", "/Mesh/Cells X=3",
+                                 "Problem//Obstacle=1", "Mesh/Cells X/=3"}) {
+    EXPECT_FALSE(isOverrideSpec(spec)) << spec;
     const auto msg = overrideError(spec);
     EXPECT_CONTAINS(msg, spec);
     EXPECT_CONTAINS(msg, "Sublist/key=value");
   }
+}
+
+TEST(ApplyOverride, WellFormedSpecsAreOverrides) {
+  for (const std::string spec : {"Mesh/Cells X=3", "Mesh/File=a=b.exo", "Output/Basename=", "Top=1"})
+    EXPECT_TRUE(isOverrideSpec(spec)) << spec;
 }
 
 TEST(ApplyOverride, PassThroughSublistInfersType) {
