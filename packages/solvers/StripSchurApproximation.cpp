@@ -43,19 +43,23 @@ std::vector<T> gatherToRoot(MPI_Comm comm, const std::vector<T>& mine) {
 /// The strip ids ordered along Gamma_C: by the coordinate in which the contact rows (those with a
 /// non-zero in \p Bs, row-major n x m in id order) extend furthest, then by the other one, then by
 /// the component (\p keys: three per gathered row, \p position[id] the row of id). Partition-
-/// independent, like the keys.
+/// independent, like the keys. Empty (no preference) when no strip row touches a segment, as when
+/// every node of Gamma_C is a Dirichlet node.
 std::vector<int> orderAlongContact(int n, int m, const std::vector<double>& Bs, const std::vector<int>& position,
                                    const std::vector<long long>& keys) {
   long long lo[2] = {std::numeric_limits<long long>::max(), std::numeric_limits<long long>::max()};
   long long hi[2] = {std::numeric_limits<long long>::min(), std::numeric_limits<long long>::min()};
+  bool contact = false;
   for (int id = 0; id < n; ++id) {
     const auto row = Bs.begin() + static_cast<std::ptrdiff_t>(id) * m;
     if (std::all_of(row, row + m, [](double b) { return b == 0.0; })) continue;
+    contact = true;
     for (int d = 0; d < 2; ++d) {
       lo[d] = std::min(lo[d], keys[3 * static_cast<size_t>(position[id]) + d]);
       hi[d] = std::max(hi[d], keys[3 * static_cast<size_t>(position[id]) + d]);
     }
   }
+  if (!contact) return {};
   const int along = hi[0] - lo[0] >= hi[1] - lo[1] ? 0 : 1;
   std::vector<int> order(static_cast<size_t>(n));
   std::iota(order.begin(), order.end(), 0);
@@ -232,6 +236,7 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
     }
     const std::vector<double> Bs = reproducible ? W : std::vector<double>();
     const EnvelopeCholesky As(n, rowPtr, cols, vals, orderAlongContact(n, m, W, position, allKeys));
+    ordersAlongContact_ = As.usesPreferredOrdering();
     As.solveInPlace(W, m);
     for (int id = 0; id < n; ++id)
       std::copy(W.begin() + static_cast<size_t>(id) * m, W.begin() + static_cast<size_t>(id + 1) * m,
@@ -245,6 +250,11 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
           for (int j = 0; j < m; ++j) canonicalQs[static_cast<size_t>(i) * m + j] += b * W[static_cast<size_t>(id) * m + j];
         }
     }
+  }
+  {
+    int along = ordersAlongContact_ ? 1 : 0;
+    MPI_Bcast(&along, 1, MPI_INT, 0, raw);
+    ordersAlongContact_ = along != 0;
   }
   // W back to the owners of the strip rows (row-major blocks in rank order).
   {

@@ -28,12 +28,16 @@ class StripSchurApproximation {
   void applyStripInverse(const std::vector<double>& p, Vector& out) const;
   /// Number of strip nodes over all ranks.
   long long stripSize() const { return stripSize_; }
+  /// Whether the strip's factor orders its nodes along Gamma_C (by coordinates) rather than by
+  /// reverse Cuthill-McKee: taken where it at least halves the envelope. The same on all ranks.
+  bool ordersAlongContact() const { return ordersAlongContact_; }
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::vector<double> Qs_;
   long long stripSize_ = 0;
+  bool ordersAlongContact_ = false;
 };
 
 }  // namespace signorini::solvers

@@ -407,6 +407,37 @@ TEST(StripSchurApproximation, WidthFollowsEachSegment) {
   EXPECT_LT(std::abs(wideFirst.matrix()[0] - Q[0]), 0.5 * std::abs(narrow.matrix()[0] - Q[0]));
 }
 
+// A strip along a boundary layer of fine cells (the contact side refined four times, graded inward
+// by the 2:1 balance) is factored in the ordering along Gamma_C: reverse Cuthill-McKee's
+// breadth-first levels run through the coarse cells behind the layer, each reaching along many fine
+// edges, and hold more than twice the envelope. On the uniform mesh it is declined. Both give the
+// strip's exact Schur block where the strip is the whole mesh (against the direct construction).
+TEST(StripSchurApproximation, OrdersAGradedStripAlongTheContactBoundary) {
+  for (const bool graded : {false, true}) {
+    test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 2, 2, 2);  // 8 x 8 cells
+    if (graded)
+      for (int pass = 0; pass < 4; ++pass) {
+        const double h = 1.0 / (8 << pass);
+        test::refineWhere(*tm.forest, *tm.coarse, [&](double x, double) { return x > 1.0 - 0.5 * h - 1e-12; });
+      }
+    tm.forest->partition();
+    const auto& m = tm.build();
+    const auto dir = m.nodesOnSegments(kLeft);
+    fem::Q1Assembler asmb(m, dir);
+    auto A = asmb.assembleOperator(1.0, 0.02, 1.0, 1.0);
+    fem::ContactCoupling B(m, kRight, fem::ContactCoupling::SegmentSize::TwoEdges, dir);
+    solvers::StripSchurApproximation strip(*A, B, 40);
+    EXPECT_EQ(strip.ordersAlongContact(), graded) << (graded ? "graded" : "uniform") << " strip of "
+                                                  << strip.stripSize() << " nodes";
+    ASSERT_EQ(strip.stripSize(), static_cast<long long>(m.numGlobalNodes()));
+    solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()), m.comm());
+    solver.setOperator(A, 1.0);
+    const auto Q = denseSchurComplement(solver, B, *m.ownedMap());
+    const int ns = B.numSegments();
+    for (int i = 0; i < ns * ns; ++i) EXPECT_NEAR(strip.matrix()[i], Q[i], 1e-8 * Q[0]) << i;
+  }
+}
+
 // The strip keeps one physical width along a graded boundary: the finest segments get Strip Width
 // times the Courant number c k / h_min in node layers, a segment of edge length h_j the fraction
 // h_min / h_j of them (at least 2). Bottom edges of 1/32, 1/16 and 1/8 (a corner refined twice on

@@ -165,8 +165,9 @@ TEST(EnvelopeCholesky, TakesAPreferredOrderingThatHalvesTheEnvelope) {
 }
 
 TEST(EnvelopeCholesky, KeepsReverseCuthillMcKeeAgainstAWorseOrdering) {
-  // On a plain thin grid reverse Cuthill-McKee is as good as any ordering along it, and a
-  // scrambled "preferred" ordering is far worse: both are declined.
+  // A scrambled "preferred" ordering of a plain thin grid is far worse than reverse Cuthill-McKee
+  // and is declined. (An ordering along such a grid is no better than reverse Cuthill-McKee
+  // either: StripSchurApproximation.OrdersAGradedStripAlongTheContactBoundary, uniform case.)
   const int width = 4;
   const GridMatrix A(width, {300}, 0.0, 11);
   const solvers::EnvelopeCholesky rcm(A.n, A.rowPtr, A.cols, A.values);
