@@ -17,7 +17,7 @@ struct CycleSummary {
   int cycle;
   long long totalDofs;   ///< sum over the steps of the unknowns of T^n
   double eta;            ///< max_n eta^n
-  double wallSeconds;
+  double wallSeconds;    ///< the cycle's pass with Algorithm 5.3 after it (cycles.csv's wall_seconds) [s]
   long long cells;         ///< sum over the steps of the cells of T^n
   long long storedMeshes;  ///< distinct forests stored for the cycle (equal consecutive meshes share one)
   long long storedCells;   ///< cells of the distinct forests
