@@ -16,12 +16,12 @@
 
 namespace {
 
-int usage() {
-  std::fprintf(stderr,
+int usage(FILE* to = stderr) {
+  std::fprintf(to,
                "usage: exodus_rectangle OUT.exo X0 X1 Y0 Y1 NX NY\n"
                "  writes the rectangle [X0,X1]x[Y0,Y1] as NX x NY QUAD4 cells with side sets\n"
                "  'left', 'right', 'bottom', 'top' (X0 < X1, Y0 < Y1, NX, NY >= 1)\n");
-  return 2;
+  return to == stderr ? 2 : 0;
 }
 
 bool parseDouble(const char* text, double& value) {
@@ -50,6 +50,7 @@ struct SideSet {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 2 && (std::string(argv[1]) == "-h" || std::string(argv[1]) == "--help")) return usage(stdout);
   if (argc != 8) return usage();
   const std::string outPath = argv[1];
   double x0, x1, y0, y1;

@@ -17,11 +17,21 @@
 # Output into a closed pipe ends a script quietly, output onto a full device in one line; the
 # membrane's checkers refuse the bar; every script's --help shows its whole description; the shell
 # scripts answer -h/--help and refuse arguments they do not take before doing anything.
-# Usage: tool_scripts.sh SIGNORINI SOURCE_DIR WORK_DIR
+# tools/exodus_rectangle answers -h/--help, refuses bad arguments, and writes a mesh that a deck runs on.
+# Usage: tool_scripts.sh SIGNORINI SOURCE_DIR WORK_DIR EXODUS_RECTANGLE
 set -uo pipefail
-signorini=$1 src=$2 work=$3
+signorini=$1 src=$2 work=$3 rectangle=$4
 rm -rf "$work" && mkdir -p "$work"
 fail() { echo "FAIL: $*"; exit 1; }
+for h in -h --help; do
+  "$rectangle" "$h" > "$work/rect-help.out" 2>&1 && grep -q "^usage: exodus_rectangle OUT.exo" "$work/rect-help.out" ||
+    { cat "$work/rect-help.out"; fail "exodus_rectangle $h"; }
+done
+"$rectangle" "$work/r.exo" 0 1 1 0 4 4 > "$work/rect-bad.out" 2>&1
+[ $? = 2 ] && [ ! -e "$work/r.exo" ] || fail "exodus_rectangle with Y0 > Y1: not refused"
+"$rectangle" "$work/r.exo" 0 1 0 1 4 4 && "$signorini" --check --set 'Mesh/Type=exodus' --set "Mesh/File=$work/r.exo" \
+  --set 'Mesh/Cells X=1' --set 'Mesh/Cells Y=1' "$src/inputs/membrane.xml" > "$work/rect-check.log" 2>&1 ||
+  { cat "$work/rect-check.log"; fail "a deck on the mesh of exodus_rectangle"; }
 short=(--output-dir "$work" --set 'Time Integration/Final Time=0.1' --set 'Adaptivity/Cycles=2')
 "$signorini" "${short[@]}" "$src/inputs/membrane.xml" "$src/inputs/membrane-uniform.xml" > "$work/runs.log" 2>&1 ||
   { cat "$work/runs.log"; fail "the runs failed"; }
@@ -339,6 +349,8 @@ if [ -w /dev/full ]; then
     "$py" "$tools/check_mirror_symmetry.py" "$work/membrane"
   full compare_full "compare_runs.py: error: cannot write output: No space left on device" \
     "$py" "$tools/compare_runs.py" "$work/membrane" "$work/membrane-uniform"
+else
+  echo "skipped: the full-disk checks (/dev/full is not writable here)"
 fi
 # Runs of the wrong kind and bad arguments: the membrane's checkers refuse the bar (its domain is
 # [0,0.2]x[0,0.05], not the membrane's [0,1]^2), a mirror line that is not finite or not inside the
