@@ -1,6 +1,7 @@
 #include "StripSchurApproximation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <numeric>
 #include <tuple>
@@ -40,32 +41,55 @@ std::vector<T> gatherToRoot(MPI_Comm comm, const std::vector<T>& mine) {
   return all;
 }
 
-/// The strip ids ordered along Gamma_C: by the coordinate in which the contact rows (those with a
-/// non-zero in \p Bs, row-major n x m in id order) extend furthest, then by the other one, then by
-/// the component (\p keys: three per gathered row, \p position[id] the row of id). Partition-
+/// The strip ids ordered along Gamma_C, each connected piece of the strip (graph \p rowPtr, \p cols)
+/// by itself, the pieces by their smallest id: by the coordinate in which the piece's contact rows
+/// (those with a non-zero in \p Bs, row-major n x m in id order) extend furthest, then by the other
+/// one, then by the component (\p keys: three per gathered row, \p position[id] the row of id). So
+/// contact on two opposite sides gives two pieces, each ordered along its side. Partition-
 /// independent, like the keys. Empty (no preference) when no strip row touches a segment, as when
 /// every node of Gamma_C is a Dirichlet node.
-std::vector<int> orderAlongContact(int n, int m, const std::vector<double>& Bs, const std::vector<int>& position,
+std::vector<int> orderAlongContact(int n, int m, const std::vector<int>& rowPtr, const std::vector<int>& cols,
+                                   const std::vector<double>& Bs, const std::vector<int>& position,
                                    const std::vector<long long>& keys) {
-  long long lo[2] = {std::numeric_limits<long long>::max(), std::numeric_limits<long long>::max()};
-  long long hi[2] = {std::numeric_limits<long long>::min(), std::numeric_limits<long long>::min()};
+  std::vector<int> piece(static_cast<size_t>(n), -1), stack;
+  int pieces = 0;
+  for (int seed = 0; seed < n; ++seed) {
+    if (piece[seed] >= 0) continue;
+    piece[seed] = pieces;
+    stack.assign(1, seed);
+    while (!stack.empty()) {
+      const int v = stack.back();
+      stack.pop_back();
+      for (int k = rowPtr[v]; k < rowPtr[v + 1]; ++k)
+        if (piece[cols[k]] < 0) piece[cols[k]] = pieces, stack.push_back(cols[k]);
+    }
+    ++pieces;
+  }
+  constexpr long long kMax = std::numeric_limits<long long>::max(), kMin = std::numeric_limits<long long>::min();
+  std::vector<std::array<long long, 4>> extent(static_cast<size_t>(pieces), {kMax, kMin, kMax, kMin});
   bool contact = false;
   for (int id = 0; id < n; ++id) {
     const auto row = Bs.begin() + static_cast<std::ptrdiff_t>(id) * m;
     if (std::all_of(row, row + m, [](double b) { return b == 0.0; })) continue;
     contact = true;
+    auto& e = extent[static_cast<size_t>(piece[id])];
     for (int d = 0; d < 2; ++d) {
-      lo[d] = std::min(lo[d], keys[3 * static_cast<size_t>(position[id]) + d]);
-      hi[d] = std::max(hi[d], keys[3 * static_cast<size_t>(position[id]) + d]);
+      e[2 * d] = std::min(e[2 * d], keys[3 * static_cast<size_t>(position[id]) + d]);
+      e[2 * d + 1] = std::max(e[2 * d + 1], keys[3 * static_cast<size_t>(position[id]) + d]);
     }
   }
   if (!contact) return {};
-  const int along = hi[0] - lo[0] >= hi[1] - lo[1] ? 0 : 1;
+  std::vector<int> along(static_cast<size_t>(pieces), 0);  // a piece without contact rows: x first
+  for (int p = 0; p < pieces; ++p) {
+    const auto& e = extent[static_cast<size_t>(p)];
+    if (e[0] <= e[1]) along[p] = e[1] - e[0] >= e[3] - e[2] ? 0 : 1;
+  }
   std::vector<int> order(static_cast<size_t>(n));
   std::iota(order.begin(), order.end(), 0);
   auto key = [&](int id) {
     const long long* k = keys.data() + 3 * static_cast<size_t>(position[id]);
-    return std::make_tuple(k[along], k[1 - along], k[2]);
+    const int a = along[static_cast<size_t>(piece[id])];
+    return std::make_tuple(piece[id], k[a], k[1 - a], k[2]);
   };
   std::sort(order.begin(), order.end(), [&](int a, int b) { return key(a) < key(b); });
   return order;
@@ -235,7 +259,7 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
                 W.begin() + static_cast<size_t>(id) * m);
     }
     const std::vector<double> Bs = reproducible ? W : std::vector<double>();
-    const EnvelopeCholesky As(n, rowPtr, cols, vals, orderAlongContact(n, m, W, position, allKeys));
+    const EnvelopeCholesky As(n, rowPtr, cols, vals, orderAlongContact(n, m, rowPtr, cols, W, position, allKeys));
     ordersAlongContact_ = As.usesPreferredOrdering();
     As.solveInPlace(W, m);
     for (int id = 0; id < n; ++id)

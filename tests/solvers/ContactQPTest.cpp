@@ -326,7 +326,7 @@ TEST(StripSchurApproximation, IsExactWhenTheStripCoversTheDomain) {
   auto A = asmb.assembleOperator(1.0, 0.02, 1.0, 1.0);
   fem::ContactCoupling B(m, kRight, fem::ContactCoupling::SegmentSize::TwoEdges, dir);
   const int ns = B.numSegments();
-  solvers::StripSchurApproximation strip(*A, B, 20);
+  solvers::StripSchurApproximation strip(*A, B, 10);
   EXPECT_EQ(strip.stripSize(), static_cast<long long>(m.numGlobalNodes()));
   solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()), m.comm());
   solver.setOperator(A, 1.0);
@@ -436,6 +436,23 @@ TEST(StripSchurApproximation, OrdersAGradedStripAlongTheContactBoundary) {
     const int ns = B.numSegments();
     for (int i = 0; i < ns * ns; ++i) EXPECT_NEAR(strip.matrix()[i], Q[i], 1e-8 * Q[0]) << i;
   }
+  // Contact on two opposite sides, both refined: two pieces of strip, each ordered along its side
+  // (one direction for both would cut across them, and was declined).
+  test::TestMesh tm(0.0, 2.0, 0.0, 8.0, 4, 16, 2);  // 16 x 64 cells of 1/8
+  for (int pass = 0; pass < 4; ++pass) {
+    const double h = 1.0 / (8 << pass);
+    test::refineWhere(*tm.forest, *tm.coarse,
+                      [&](double x, double) { return x > 2.0 - 0.5 * h - 1e-12 || x < 0.5 * h + 1e-12; });
+  }
+  tm.forest->partition();
+  const auto& m = tm.build();
+  const auto dir = m.nodesOnSegments(kBottom);
+  fem::Q1Assembler asmb(m, dir);
+  auto A = asmb.assembleOperator(1.0, 0.02, 1.0, 1.0);
+  fem::ContactCoupling B(m, kLeft | kRight, fem::ContactCoupling::SegmentSize::TwoEdges, dir);
+  solvers::StripSchurApproximation strip(*A, B, 10);
+  EXPECT_LT(strip.stripSize(), static_cast<long long>(m.numGlobalNodes()) - 9) << "the pieces must not meet";
+  EXPECT_TRUE(strip.ordersAlongContact()) << "two-sided strip of " << strip.stripSize() << " nodes";
 }
 
 // The strip keeps one physical width along a graded boundary: the finest segments get Strip Width
