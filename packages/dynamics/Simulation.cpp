@@ -714,6 +714,8 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     checkMeshFits(I.coarse->numTrees() * std::pow(4.0, level + I.coarse->levelOffset()),
                   "Mesh/File with " + std::to_string(I.coarse->numTrees()) + " cells, Refinement Level = " +
                       std::to_string(level));
+  if (!I.coarse->crackNote().empty() && comm->getRank() == 0)
+    std::cerr << "signorini: warning: " << deckPath << ": " << I.coarse->crackNote() << std::endl;
   I.segments = std::make_unique<mesh::BoundarySegments>(meshParams.sublist("Boundary Segments"), *I.coarse);
   I.problem = std::make_unique<fem::ProblemData>(deck.sublist("Problem"), *I.segments);
   if (const auto note = I.problem->nearIncompressibility(); !note.empty() && comm->getRank() == 0)

@@ -84,6 +84,21 @@ double twiceSignedArea(const QuadMesh& mesh, const std::array<int, 4>& quad) {
   return sum;
 }
 
+/// Added to a message about a 0 where Exodus numbers from 1: netCDF reads the data missing from a
+/// cut-off file as zeros.
+constexpr const char* kZeroEntry = " (a 0 where Exodus numbers from 1: the file may be truncated or corrupt)";
+
+/// Refuses an id given to two element blocks or two side sets: the Exodus library would read the
+/// first one's data for both (a file written without it, by netCDF directly).
+void refuseRepeatedIds(const std::vector<int>& ids, const char* what, const std::string& path) {
+  std::vector<int> sorted(ids);
+  std::sort(sorted.begin(), sorted.end());
+  const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
+  if (twice != sorted.end())
+    SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "': two " << what << "s have the id " << *twice
+                                                 << " (ids must be unique)");
+}
+
 /// Names of the side sets, indexed like \p ids; unnamed ones become "sideset_<id>".
 std::vector<std::string> readSideSetNames(int exoid, const std::vector<int>& ids,
                                           const std::string& path) {
@@ -154,6 +169,7 @@ QuadMesh readExodusQuadMesh(const std::string& path) {
   std::vector<int> blockIds(static_cast<std::size_t>(init.num_elem_blk));
   checkExodus(ex_get_ids(exoid, EX_ELEM_BLOCK, blockIds.data()), "ex_get_ids(element blocks)",
               path);
+  refuseRepeatedIds(blockIds, "element block", path);
   mesh.quads.reserve(static_cast<std::size_t>(init.num_elem));
   for (const int blockId : blockIds) {
     ex_block block{};
@@ -178,7 +194,7 @@ QuadMesh readExodusQuadMesh(const std::string& path) {
         if (node < 1 || static_cast<std::size_t>(node) > numNodes) {
           SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "': element block " << blockId
                                                        << " refers to node " << node
-                                                       << " which does not exist");
+                                                       << " which does not exist" << (node == 0 ? kZeroEntry : ""));
         }
         quad[k] = node - 1;
       }
@@ -204,6 +220,7 @@ QuadMesh readExodusQuadMesh(const std::string& path) {
   std::vector<int> sideSetIds(static_cast<std::size_t>(init.num_side_sets));
   if (!sideSetIds.empty()) {
     checkExodus(ex_get_ids(exoid, EX_SIDE_SET, sideSetIds.data()), "ex_get_ids(side sets)", path);
+    refuseRepeatedIds(sideSetIds, "side set", path);
   }
   const auto sideSetNames = readSideSetNames(exoid, sideSetIds, path);
   for (std::size_t s = 0; s < sideSetIds.size(); ++s) {
@@ -226,7 +243,8 @@ QuadMesh readExodusQuadMesh(const std::string& path) {
         SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "': side set " << setId << " ('"
                                                      << sideSetNames[s] << "') has invalid entry "
                                                      << "(element " << element << ", side "
-                                                     << side << ")");
+                                                     << side << ")"
+                                                     << (element == 0 || side == 0 ? kZeroEntry : ""));
       }
       const int quad = element - 1;
       const int localSide = reversed[quad] ? 3 - (side - 1) : side - 1;

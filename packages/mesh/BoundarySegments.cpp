@@ -35,6 +35,8 @@ void BoundarySegments::add(const std::string& name, const std::string& spec, con
   const std::vector<std::string> parts = core::splitTrimmed(spec, ',');  // "left," has two, the second empty
   if (parts[0].empty()) SIGNORINI_USER_ERROR(key << ": empty segment; expected \"<side set>[, x >= value]...\"");
   seg.set = parts[0];
+  if (coarse.isEmptySet(seg.set))
+    SIGNORINI_USER_ERROR(key << ": side set '" << seg.set << "' in " << coarse.source() << " is empty (it has no sides)");
   if (!coarse.hasSet(seg.set)) {
     std::string list;
     for (const auto& s : coarse.setNames()) list += (list.empty() ? "" : ", ") + s;

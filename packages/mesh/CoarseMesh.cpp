@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <sstream>
 
 #include "Error.hpp"
 #include "ExodusMesh.hpp"
@@ -111,13 +112,57 @@ namespace {
 /// far as the vertex numbers tell) that has a vertex of another such side strictly inside it. The
 /// forest needs a conforming coarse mesh (p4est's connectivity would treat the side as a crack,
 /// and its node numbering fails on several ranks).
-void checkConforming(const std::vector<double>& x, const std::vector<double>& y,
-                     const std::vector<std::array<int, 4>>& quads, const std::string& source) {
+/// Also refuses what p4est would reject without naming a cell: two cells on the same vertices (a
+/// cell listed twice) and a side shared by more than two cells. Returns a note when two vertices of
+/// cells lie at one point: a crack, which the forest takes (a slit in the body), but also what
+/// nodes that were not merged (between element blocks meshed apart) give by mistake.
+std::string checkConforming(const std::vector<double>& x, const std::vector<double>& y,
+                            const std::vector<std::array<int, 4>>& quads, const std::string& source) {
+  std::map<std::array<int, 4>, int> cells;  // sorted vertices -> cell
+  for (size_t t = 0; t < quads.size(); ++t) {
+    auto key = quads[t];
+    std::sort(key.begin(), key.end());
+    const auto [it, fresh] = cells.emplace(key, static_cast<int>(t));
+    if (!fresh)
+      SIGNORINI_USER_ERROR(source << ": cells " << it->second + 1 << " and " << t + 1
+                                  << " have the same vertices (a cell listed twice)");
+  }
+  std::vector<int> used;  // the vertices of cells, by (x, y)
+  for (const auto& q : quads) used.insert(used.end(), q.begin(), q.end());
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  double lo[2] = {x[used[0]], y[used[0]]}, hi[2] = {lo[0], lo[1]};
+  for (int v : used)
+    lo[0] = std::min(lo[0], x[v]), hi[0] = std::max(hi[0], x[v]), lo[1] = std::min(lo[1], y[v]),
+    hi[1] = std::max(hi[1], y[v]);
+  const double near = 1e-10 * std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+  std::sort(used.begin(), used.end(), [&](int a, int b) { return std::make_pair(x[a], y[a]) < std::make_pair(x[b], y[b]); });
+  std::vector<size_t> columnEnd(used.size());  // the first position after the vertices of equal x
+  for (size_t i = used.size(); i-- > 0;)
+    columnEnd[i] = i + 1 < used.size() && x[used[i + 1]] == x[used[i]] ? columnEnd[i + 1] : i + 1;
+  std::ostringstream crack;
+  int pairs = 0;
+  for (size_t i = 0; i < used.size(); ++i)
+    for (size_t j = i + 1; j < used.size() && x[used[j]] - x[used[i]] <= near;) {
+      const int a = used[i], b = used[j];
+      if (std::abs(y[b] - y[a]) <= near && pairs++ == 0)
+        crack << source << ": vertices " << std::min(a, b) + 1 << " and " << std::max(a, b) + 1
+              << " are at one point (" << x[a] << ", " << y[a] << ")";
+      j = x[b] == x[a] && y[b] > y[a] ? columnEnd[j] : j + 1;  // the rest of a column lies above
+    }
+  if (pairs > 0)
+    crack << (pairs > 1 ? " (and " + std::to_string(pairs - 1) + " more such pairs)" : std::string())
+          << ": the cells on either side are not connected there (a crack, taken as two boundaries); merge the "
+             "nodes if the body is meant to be whole (e.g. between element blocks meshed apart)";
   std::map<std::pair<int, int>, std::pair<int, int>> sides;  // sorted vertex pair -> (uses, cell)
   for (size_t t = 0; t < quads.size(); ++t)
     for (int k = 0; k < 4; ++k) {
       const int a = quads[t][k], b = quads[t][(k + 1) % 4];
       auto& s = sides[{std::min(a, b), std::max(a, b)}];
+      if (s.first == 2)
+        SIGNORINI_USER_ERROR(source << ": the side from (" << x[a] << ", " << y[a] << ") to (" << x[b] << ", " << y[b]
+                                    << ") belongs to more than two cells (cell " << t + 1
+                                    << " among them): cells overlap");
       s = {s.first + 1, static_cast<int>(t)};
     }
   std::vector<int> vertices;  // of the sides used once, by x
@@ -142,6 +187,7 @@ void checkConforming(const std::vector<double>& x, const std::vector<double>& y,
                                   << ") of other cells inside it (a hanging node); split the cell in the mesh");
     }
   }
+  return crack.str();
 }
 
 }  // namespace
@@ -191,7 +237,7 @@ std::shared_ptr<CoarseMesh> CoarseMesh::fromQuads(
                                        "its bilinear map is not invertible");
     }
   }
-  checkConforming(x, y, quadsCcw, source);
+  m->crackNote_ = checkConforming(x, y, quadsCcw, source);
   for (p4est_topidx_t t = 0; t < nt; ++t)
     for (int f = 0; f < 4; ++f) {
       m->conn_->tree_to_tree[4 * t + f] = t;
@@ -200,12 +246,14 @@ std::shared_ptr<CoarseMesh> CoarseMesh::fromQuads(
   p4est_connectivity_complete(m->conn_);
   if (!p4est_connectivity_is_valid(m->conn_)) SIGNORINI_USER_ERROR(source << ": the cells do not form a valid conforming mesh");
   static const int sideToFace[4] = {2, 1, 3, 0};  // CCW side s joins corners s, s+1
-  for (const auto& [name, sides] : sideSets)
+  for (const auto& [name, sides] : sideSets) {
+    if (sides.empty()) m->emptySets_.insert(name);
     for (const auto& s : sides) {
       if (s[0] < 0 || s[0] >= nt || s[1] < 0 || s[1] > 3)
         SIGNORINI_USER_ERROR(source << ": side set '" << name << "' names a side that does not exist");
       m->faceSets_[s[0]][sideToFace[s[1]]].push_back(name);
     }
+  }
   return m;
 }
 

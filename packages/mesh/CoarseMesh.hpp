@@ -5,6 +5,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,11 @@ class CoarseMesh {
   /// All side set names, for messages.
   std::vector<std::string> setNames() const;
   bool hasSet(const std::string& name) const;
+  /// A warning for the user when vertices of different cells lie at one point (a crack: the forest
+  /// leaves the cells unconnected there, as a mesh whose nodes were not merged would); else "".
+  const std::string& crackNote() const { return crackNote_; }
+  /// Whether the mesh file has a side set of this name without any side (hasSet is false for it).
+  bool isEmptySet(const std::string& name) const { return emptySets_.count(name) > 0; }
   /// Where the mesh came from, for messages ("rectangle 16x16" or the file name).
   const std::string& source() const { return source_; }
   /// Bounding box diameter (length units).
@@ -72,6 +78,8 @@ class CoarseMesh {
   p4est_connectivity_t* conn_ = nullptr;
   std::vector<std::array<std::array<double, 2>, 4>> treeCorners_;
   std::vector<std::array<std::vector<std::string>, 4>> faceSets_;
+  std::set<std::string> emptySets_;
+  std::string crackNote_;
   std::string source_;
   int levelOffset_ = 0;
 };

@@ -5,6 +5,7 @@
 
 #include <exodusII.h>
 #include <gtest/gtest.h>
+#include <netcdf.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <regex>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <unistd.h>
@@ -423,6 +425,46 @@ TEST_F(ExodusMeshTest, PlanarMeshWithThreeCoordinatesIsRead) {
   EXPECT_EQ(mesh.x, (std::vector<double>{0, 1, 1, 0}));
   EXPECT_EQ(mesh.y, (std::vector<double>{0, 0, 1, 1}));
   ASSERT_EQ(mesh.quads.size(), 1u);
+}
+
+TEST_F(ExodusMeshTest, AZeroNodeSaysTheFileMayBeTruncated) {
+  // netCDF reads the data missing from a cut-off file as zeros; Exodus numbers nodes from 1.
+  writeRawMesh(path("zero.exo"), 2, {0, 1, 1, 0}, {0, 0, 1, 1}, {}, "QUAD4", 4, {1, 2, 0, 4});
+  expectReadError(path("zero.exo"), {path("zero.exo"), "refers to node 0 which does not exist",
+                                     "the file may be truncated or corrupt"});
+}
+
+TEST_F(ExodusMeshTest, ARepeatedSideSetIdIsUserError) {
+  // Written as side sets 42 ("bottom") and 43 ("top") by the Exodus API, which refuses a repeated
+  // id, then 43 changed to 42 in the netCDF variable, as a writer without the API could leave it:
+  // the library would read the bottom's sides for the top.
+  const std::string file = path("twice.exo");
+  {
+    int cpu = 8, io = 8;
+    ex_opts(0);
+    const int exoid = ex_create(file.c_str(), EX_CLOBBER, &cpu, &io);
+    ASSERT_GE(exoid, 0);
+    ASSERT_GE(ex_put_init(exoid, "raw", 2, 4, 1, 1, 0, 2), 0);
+    ASSERT_GE(ex_put_block(exoid, EX_ELEM_BLOCK, 7, "QUAD4", 1, 4, 0, 0, 0), 0);
+    const std::vector<double> x{0, 1, 1, 0}, y{0, 0, 1, 1};
+    const std::vector<int> connectivity{1, 2, 3, 4}, element{1}, bottom{1}, top{3};
+    ASSERT_GE(ex_put_coord(exoid, x.data(), y.data(), nullptr), 0);
+    ASSERT_GE(ex_put_conn(exoid, EX_ELEM_BLOCK, 7, connectivity.data(), nullptr, nullptr), 0);
+    for (const auto& [id, name, side] : {std::tuple{42, "bottom", &bottom}, std::tuple{43, "top", &top}}) {
+      ASSERT_GE(ex_put_set_param(exoid, EX_SIDE_SET, id, 1, 0), 0);
+      ASSERT_GE(ex_put_name(exoid, EX_SIDE_SET, id, name), 0);
+      ASSERT_GE(ex_put_set(exoid, EX_SIDE_SET, id, element.data(), side->data()), 0);
+    }
+    ASSERT_GE(ex_close(exoid), 0);
+  }
+  EXPECT_EQ(readExodusQuadMesh(file).sideSets.size(), 2u);  // the control: two sets as written
+  int ncid = 0, varid = 0;
+  ASSERT_EQ(nc_open(file.c_str(), NC_WRITE, &ncid), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(ncid, "ss_prop1", &varid), NC_NOERR);
+  const int ids[2] = {42, 42};
+  ASSERT_EQ(nc_put_var_int(ncid, varid, ids), NC_NOERR);
+  ASSERT_EQ(nc_close(ncid), NC_NOERR);
+  expectReadError(file, {file, "two side sets have the id 42"});
 }
 
 TEST_F(ExodusMeshTest, UnnamedSideSetAndClockwiseQuad) {

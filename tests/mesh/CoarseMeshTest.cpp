@@ -1,14 +1,16 @@
 // A coarse mesh given as quadrilaterals (an Exodus file) is refused, naming the cell or vertex,
 // when the forest cannot refine it: a hanging node, a cell that is not convex, a side of length
-// zero, a coordinate that is not a number. Conforming meshes of convex cells are taken, cracks
-// (duplicate vertices) included.
+// zero, a coordinate that is not a number, a cell listed twice, a side of three cells. Conforming
+// meshes of convex cells are taken, cracks (duplicate vertices) included, with a note.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "BoundarySegments.hpp"
 #include "CoarseMesh.hpp"
 #include "Error.hpp"
 
@@ -46,6 +48,7 @@ bool contains(const std::string& s, const std::string& part) { return s.find(par
 
 TEST(CoarseMesh, TakesConformingConvexCellsAndCracks) {
   EXPECT_EQ(errorOf(square2x2()), "");
+  EXPECT_EQ(mesh::CoarseMesh::fromQuads(square2x2().x, square2x2().y, square2x2().cells, {}, "mesh.exo")->crackNote(), "");
   Quads distorted = square2x2();
   distorted.x[4] = 0.6, distorted.y[4] = 0.45;  // still convex
   EXPECT_EQ(errorOf(distorted), "");
@@ -55,6 +58,37 @@ TEST(CoarseMesh, TakesConformingConvexCellsAndCracks) {
   crack.cells[2] = {9, 10, 7, 6};
   crack.cells[3] = {10, 5, 8, 7};
   EXPECT_EQ(errorOf(crack), "");
+  // Taken, with a note for the user: nodes that were not merged give the same mesh by mistake.
+  const auto note = mesh::CoarseMesh::fromQuads(crack.x, crack.y, crack.cells, {}, "mesh.exo")->crackNote();
+  EXPECT_TRUE(contains(note, "mesh.exo: vertices 4 and 10 are at one point (0, 0.5) (and 1 more such pairs): the "
+                             "cells on either side are not connected there"))
+      << note;
+}
+
+TEST(CoarseMesh, RefusesACellListedTwiceAndASideOfThreeCells) {
+  Quads twice = square2x2();
+  twice.cells.push_back({4, 5, 8, 7});  // cell 4 again, from another corner
+  std::rotate(twice.cells.back().begin(), twice.cells.back().begin() + 1, twice.cells.back().end());
+  EXPECT_TRUE(contains(errorOf(twice), "mesh.exo: cells 4 and 5 have the same vertices (a cell listed twice)"))
+      << errorOf(twice);
+  Quads three = square2x2();  // a fifth cell folded over the side from (0.5, 0.5) to (1, 0.5)
+  three.x.push_back(0.75), three.y.push_back(0.25);
+  three.x.push_back(1.0), three.y.push_back(0.25);
+  three.cells.push_back({9, 10, 5, 4});
+  EXPECT_TRUE(contains(errorOf(three), "belongs to more than two cells (cell 5 among them)")) << errorOf(three);
+}
+
+TEST(CoarseMesh, NamesAnEmptySideSetAsEmpty) {
+  const Quads q = square2x2();
+  const auto coarse = mesh::CoarseMesh::fromQuads(q.x, q.y, q.cells, {{"right", {}}, {"left", {{0, 3}, {2, 3}}}}, "mesh.exo");
+  EXPECT_TRUE(coarse->isEmptySet("right"));
+  EXPECT_FALSE(coarse->isEmptySet("left"));
+  try {
+    mesh::BoundarySegments segments(std::vector<std::pair<std::string, std::string>>{{"contact", "right"}}, *coarse);
+    ADD_FAILURE() << "an empty side set was taken";
+  } catch (const core::UserError& e) {
+    EXPECT_TRUE(contains(e.what(), "Mesh/Boundary Segments/contact: side set 'right' in mesh.exo is empty")) << e.what();
+  }
 }
 
 TEST(CoarseMesh, RefusesAHangingNodeNamingTheSide) {
