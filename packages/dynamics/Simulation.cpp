@@ -672,6 +672,43 @@ struct Simulation::Impl {
   }
 };
 
+void Simulation::checkInitialGapOnRefinements(int finerLevels, const std::string& cause) const {
+  const auto& I = *impl_;
+  const auto& d = *I.initialDiscretisation;
+  if (!d.coupling || finerLevels <= 0) return;
+  // The finest segments are pairs of edges 2^-finerLevels of a deck edge (one such edge with H = h):
+  // means over 2^(finerLevels - 1) (2^finerLevels) pieces of each deck edge, by the 3-point Gauss
+  // rule on each finest edge, as the coupling integrates.
+  const bool single = I.deck.sublist("Contact").get<std::string>("Multiplier Segments") == "H = h";
+  const int pieces = 1 << (single ? finerLevels : finerLevels - 1), edgesPerPiece = single ? 1 : 2;
+  const int nc = I.problem->components();
+  const auto& u0 = I.problem->initialDisplacement[nc == 1 ? 0 : I.problem->contactComponent];
+  const double sign = nc == 1 ? 1.0 : I.problem->contactSign;
+  static const double gauss[3] = {0.5 - 0.5 * std::sqrt(0.6), 0.5, 0.5 + 0.5 * std::sqrt(0.6)};
+  static const double weight[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+  std::ostringstream error;
+  for (const auto& be : d.mesh->boundaryEdges()) {
+    if (!(be.segments & I.problem->contactMask) || !error.str().empty()) continue;
+    for (int p = 0; p < pieces && error.str().empty(); ++p) {
+      double mean = 0;
+      for (int e = 0; e < edgesPerPiece; ++e)
+        for (int q = 0; q < 3; ++q) {
+          const auto x = be.at((p * edgesPerPiece + e + gauss[q]) / (pieces * edgesPerPiece));
+          mean += weight[q] / edgesPerPiece * (sign * u0(x[0], x[1], 0.0) - I.problem->obstacle(x[0], x[1], 0.0));
+        }
+      if (mean < -d.qp->gapTolerance()) {
+        const auto mid = be.at((p + 0.5) / pieces);
+        error << std::setprecision(6) << "Problem/Initial Displacement penetrates the obstacle at t = 0 on the finer "
+              << "meshes that " << cause << " can make: the mean gap on the contact segment of "
+              << edgesPerPiece << " edge(s) of length " << be.length() / (pieces * edgesPerPiece) << " at (" << mid[0]
+              << ", " << mid[1] << ") would be " << mean
+              << " (the deck's mesh averages it away, and that cycle would stop at its start)";
+      }
+    }
+  }
+  core::throwFirstUserError(*I.comm, error.str());
+}
+
 Simulation::Simulation(const core::ParameterList& deck, const std::string& deckPath, const std::string& outputDir,
                        RCP<const Comm> comm)
     : impl_(std::make_unique<Impl>()) {

@@ -137,6 +137,11 @@ class Simulation {
   /// trees when they are more; not counted here) included), plus one byte per cell of the \p storedCells that the meshes of all steps hold
   /// (compact; 35-51 bytes as p4est forests).
   void checkMeshFits(double globalCells, const std::string& cause, double storedCells = 0) const;
+  /// Throws core::UserError if Problem/Initial Displacement penetrates the obstacle in the mean over
+  /// a contact segment of a mesh refined up to \p finerLevels more levels along Gamma_C (the finest
+  /// segments that later adaptive cycles can make), which the deck's mesh cannot show: its segment
+  /// means average the penetration away. \p cause names the setting. Collective.
+  void checkInitialGapOnRefinements(int finerLevels, const std::string& cause) const;
 
  private:
   struct Impl;
