@@ -76,13 +76,15 @@ void onRootCollectively(const Comm& comm, const std::function<void()>& action) {
   MPI_Comm c = rawMpiComm(comm);
   int rank = 0;
   MPI_Comm_rank(c, &rank);
-  int kind = 0;  // 0: done, 1: user error, 2: another exception
+  int kind = 0;  // 0: done, 1: user error, 2: another exception, 3: solver error
   std::string message;
   if (rank == 0) {
     try {
       action();
     } catch (const UserError& e) {
       kind = 1, message = e.what();
+    } catch (const SolverError& e) {
+      kind = 3, message = e.what();
     } catch (const std::exception& e) {
       kind = 2, message = e.what();
     }
@@ -94,6 +96,7 @@ void onRootCollectively(const Comm& comm, const std::function<void()>& action) {
   message.resize(static_cast<size_t>(length));
   MPI_Bcast(message.data(), length, MPI_CHAR, 0, c);
   if (kind == 1) throw UserError(message);
+  if (kind == 3) throw SolverError(message);
   throw std::runtime_error(message);
 }
 

@@ -15,8 +15,8 @@ namespace signorini::core {
 MPI_Comm rawMpiComm(const Comm& comm);
 
 /// Runs \p action on rank 0 only (output files are written there) and makes its failure every
-/// rank's: a core::UserError thrown by \p action is rethrown on every rank with rank 0's message,
-/// any other std::exception as std::runtime_error. Collective: call it on every rank.
+/// rank's: a core::UserError or core::SolverError thrown by \p action is rethrown as such on every
+/// rank with rank 0's message, any other std::exception as std::runtime_error. Collective: call it on every rank.
 void onRootCollectively(const Comm& comm, const std::function<void()>& action);
 
 /// Makes a user error found on some ranks every rank's: if any rank passes a non-empty \p localMessage,

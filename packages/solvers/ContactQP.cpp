@@ -402,9 +402,14 @@ ContactQPResult ContactQP::solve(LinearSolver& solver, const fem::ContactCouplin
         std::ostringstream os;
         os << std::setprecision(3) << "contact QP: the multipliers diverged (the gaps updated with them "
            << "differ from those of the displacement by " << drift
-           << ", more than the KKT tolerance " << gapTol_ << "): Q_AA is singular. With Contact/Multiplier "
-           << "Segments = H = h a contact boundary between two Dirichlet ends has more segments than free nodes; "
-              "use H = 2h";
+           << ", more than the KKT tolerance " << gapTol_ << "): ";
+        if (params_.get<std::string>("Multiplier Segments") == "H = h")
+          os << "Q_AA is singular. With Contact/Multiplier Segments = H = h a contact boundary between two "
+                "Dirichlet ends has more segments than free nodes; use H = 2h";
+        else
+          os << "Q_AA is singular or nearly so, or the A-solves are not accurate enough for the KKT tolerance (a "
+                "step matrix close to singular, as for a body held by nothing but the contact at a large time step): "
+                "lower Linear Solver/Relative Tolerance or Time Integration/Time Step, or raise Contact/KKT Tolerance";
         throw core::SolverError(os.str());
       }
       break;

@@ -331,7 +331,16 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
                : core::withoutSourceLocation(e.what()));
     throw core::SolverError(os.str());
   } catch (const std::exception& e) {  // e.g. GCRODR's "Num Recycled Blocks" against its "Num Blocks"
-    if (I.params.sublist("Belos").numParams() == 0) throw;  // not the user's settings
+    if (I.params.sublist("Belos").numParams() == 0) {  // not the user's settings: the system
+      const std::string what = firstLines(e.what());
+      throw core::SolverError(
+          I.solverText() + " broke down: " + what +
+          (what.find("non-positive") != std::string::npos
+               ? " (the system matrix is not positive definite to rounding: its condition number is beyond what "
+                 "doubles hold, as with a time step far above the mesh's Courant limit on a stiff material; lower "
+                 "Time Integration/Time Step)"
+               : ""));
+    }
     SIGNORINI_USER_ERROR("Linear Solver/Belos: Belos' \"" << canonicalMethod(I.params.get<std::string>("Method"))
                          << "\" cannot solve with these parameters: " << firstLines(e.what()));
   }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <tuple>
 
@@ -238,7 +239,10 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
     for (long long k : B.canonicalKeys()[impl_->stripToOwned[s]]) stripKeys.push_back(k);
   const auto allKeys = gatherToRoot(raw, stripKeys);
   std::vector<double> canonicalQs;  // reproducible: B_s^T W summed on rank 0 in strip id order
-  if (comm->getRank() == 0 && m > 0) {
+  // Rank 0 factors the strip; its failure (a matrix that is not positive definite to rounding) is
+  // every rank's, which would otherwise wait for it in the scatter below.
+  core::onRootCollectively(*comm, [&] {
+    if (m == 0) return;
     const int n = static_cast<int>(stripSize_);
     // Rows in strip id order: position[id] is the row's place in the gathered (rank) order.
     std::vector<int> position(n), rowStart(n + 1, 0);
@@ -259,7 +263,18 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
                 W.begin() + static_cast<size_t>(id) * m);
     }
     const std::vector<double> Bs = reproducible ? W : std::vector<double>();
-    const EnvelopeCholesky As(n, rowPtr, cols, vals, orderAlongContact(n, m, rowPtr, cols, W, position, allKeys));
+    std::unique_ptr<EnvelopeCholesky> factor;
+    try {
+      factor = std::make_unique<EnvelopeCholesky>(n, rowPtr, cols, vals,
+                                                  orderAlongContact(n, m, rowPtr, cols, W, position, allKeys));
+    } catch (const core::SolverError& e) {
+      throw core::SolverError(std::string("the contact Schur preconditioner (the step matrix on a strip along "
+                                          "Gamma_C, Contact/Schur Preconditioner): ") + e.what() +
+                              ": the step matrix is not positive definite to rounding (its condition number is "
+                              "beyond what doubles hold, as with a time step far above the mesh's Courant limit "
+                              "on a stiff material; lower Time Integration/Time Step)");
+    }
+    const EnvelopeCholesky& As = *factor;
     ordersAlongContact_ = As.usesPreferredOrdering();
     As.solveInPlace(W, m);
     for (int id = 0; id < n; ++id)
@@ -274,7 +289,7 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
           for (int j = 0; j < m; ++j) canonicalQs[static_cast<size_t>(i) * m + j] += b * W[static_cast<size_t>(id) * m + j];
         }
     }
-  }
+  });
   {
     int along = ordersAlongContact_ ? 1 : 0;
     MPI_Bcast(&along, 1, MPI_INT, 0, raw);

@@ -319,6 +319,22 @@ signorini_add_driver_test(batch_good_then_bad EXIT 1
         "1 of 2 deck[(]s[)] failed"
   FILES good.steps.csv good.e)
 
+# A body held by nothing but the contact, at a time step 1e10 times its Courant limit: the step
+# matrix is not positive definite to rounding. Where it fails first depends on the stiffness: the
+# strip's factorisation (on rank 0 alone: the other rank used to wait for it forever), Belos' CG, or
+# the contact QP, whose message named H = h on a deck with H = 2h. Each says what to change.
+set(floating --set Adaptivity/Strategy=none --set "Problem/Initial Velocity=0,0" --set "Problem/Body Force=0,-100"
+    --set Problem/Obstacle=0 --set "Time Integration/Time Step=1e4" --set "Time Integration/Final Time=1e5")
+signorini_add_driver_test(floating_body_strip_factorisation EXIT 1
+  ARGS --output-dir {OUT} ${floating} --set "Problem/Young's Modulus=1e4" --set Problem/Density=1 ${decks}/rigid-drop.xml
+  REGEX "solver failure: the contact Schur preconditioner [(]the step matrix on a strip along Gamma_C.*not positive definite.*lower Time Integration/Time Step")
+signorini_add_driver_test(floating_body_cg_breakdown EXIT 1 NP 1  # on 2 ranks CG runs out of iterations instead
+  ARGS --output-dir {OUT} ${floating} ${decks}/rigid-drop.xml
+  REGEX "solver failure: step 1 [(]t = 10000[)]: linear solver CG [+] MueLu for the step matrix .* broke down: .*non-positive.*lower Time Integration/Time Step")
+signorini_add_driver_test(floating_body_contact_qp EXIT 1
+  ARGS --output-dir {OUT} ${floating} --set "Problem/Young's Modulus=100" --set Problem/Density=1 ${decks}/rigid-drop.xml
+  REGEX "contact QP: the multipliers diverged .*Q_AA is singular or nearly so, or the A-solves are not accurate enough.*raise Contact/KKT Tolerance")
+
 # A solver failure in the middle of the run (after steps 0 and 1 were written): every rank
 # exits 1 and the partial outputs are removed.
 signorini_add_driver_test(solver_failure_mid_run EXIT 1
