@@ -207,13 +207,12 @@ signorini_add_bad_deck_test(initial_penetration ${decks}/penetrating.xml
 # A penetration that the deck's segments average away but the finer segments of a later adaptive
 # cycle show: refused at set-up (it used to stop the run at the start of cycle 1); the same deck
 # with one cycle runs (the control).
+set(wavy_obstacle --set "Problem/Obstacle=0.01*sin(4*pi*y) - 0.002" --set "Adaptivity/Strategy=uniform")
 signorini_add_driver_test(initial_penetration_on_finer_segments EXIT 1
-  ARGS --output-dir {OUT} --set "Problem/Obstacle=0.01*sin(4*pi*y) - 0.002" --set "Adaptivity/Strategy=uniform"
-       --set "Adaptivity/Cycles=3" ${decks}/good.xml
+  ARGS --output-dir {OUT} ${wavy_obstacle} --set "Adaptivity/Cycles=3" ${decks}/good.xml
   REGEX "Problem/Initial Displacement penetrates the obstacle at t = 0 on the finer meshes that Adaptivity/Cycles = 3 can make: the mean gap on the contact segment of 2 edge[(]s[)] of length 0[.]0625 at [(]1, 0[.]0625[)] would be -0[.]0043")
 signorini_add_driver_test(initial_penetration_on_finer_segments_control EXIT 0
-  ARGS --check --output-dir {OUT} --set "Problem/Obstacle=0.01*sin(4*pi*y) - 0.002" --set "Adaptivity/Strategy=uniform"
-       --set "Adaptivity/Cycles=1" ${decks}/good.xml
+  ARGS --check --output-dir {OUT} ${wavy_obstacle} --set "Adaptivity/Cycles=1" ${decks}/good.xml
   REGEX "good[.]xml is valid")
 signorini_add_bad_deck_test(bad_expression ${decks}/bad-expression.xml
   "Problem/Obstacle: cannot parse expression 'sin[(]pi[*]y - 1[.]05'")
