@@ -189,10 +189,12 @@ AdaptiveSimulation::AdaptiveSimulation(const core::ParameterList& deck, const st
   checkAdaptivitySettings(deck, deckPath, *comm);
   sim_ = std::make_unique<dynamics::Simulation>(deck, deckPath, outputDir, comm);
   const auto& a = deck.sublist("Adaptivity");
-  if (a.get<std::string>("Strategy") != "none") {  // the initial gap on the finest segments the cycles can make
+  if (a.get<std::string>("Strategy") != "none") {  // the segments and the initial gap on the finest meshes the cycles can make
     const int finer = std::min(a.get<int>("Cycles") - 1,
                                a.get<int>("Maximum Level") - deck.sublist("Mesh").get<int>("Refinement Level"));
-    sim_->checkInitialGapOnRefinements(finer, "Adaptivity/Cycles = " + std::to_string(a.get<int>("Cycles")));
+    const std::string cause = "Adaptivity/Cycles = " + std::to_string(a.get<int>("Cycles"));
+    sim_->checkSegmentsOnRefinements(finer, cause);
+    sim_->checkInitialGapOnRefinements(finer, cause);
   }
   // Uniform refinement: the last cycle's mesh is known in advance (unless a criterion stops earlier).
   if (a.get<std::string>("Strategy") == "uniform" && a.get<double>("Maximum Total Unknowns") == 0 &&

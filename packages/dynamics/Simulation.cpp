@@ -672,10 +672,28 @@ struct Simulation::Impl {
   }
 };
 
+namespace {
+/// The most levels of refinement whose edge pieces, 2^level for each of \p localEdges edges summed
+/// over the ranks, stay within 2^22 (the set-up checks below test them one by one). Collective.
+int levelsWithinWork(const Comm& comm, long long localEdges) {
+  long long edges = 0;
+  MPI_Allreduce(&localEdges, &edges, 1, MPI_LONG_LONG, MPI_SUM, core::rawMpiComm(comm));
+  int levels = 0;
+  while (levels < 30 && (edges << (levels + 1)) <= (1LL << 22)) ++levels;
+  return levels;
+}
+}  // namespace
+
 void Simulation::checkInitialGapOnRefinements(int finerLevels, const std::string& cause) const {
   const auto& I = *impl_;
   const auto& d = *I.initialDiscretisation;
   if (!d.coupling || finerLevels <= 0) return;
+  {
+    long long contactEdges = 0;
+    for (const auto& be : d.mesh->boundaryEdges()) contactEdges += (be.segments & I.problem->contactMask) != 0;
+    finerLevels = std::min(finerLevels, levelsWithinWork(*I.comm, contactEdges));
+    if (finerLevels <= 0) return;
+  }
   // The finest segments are pairs of edges 2^-finerLevels of a deck edge (one such edge with H = h):
   // means over 2^(finerLevels - 1) (2^finerLevels) pieces of each deck edge, by the 3-point Gauss
   // rule on each finest edge, as the coupling integrates.
@@ -707,6 +725,36 @@ void Simulation::checkInitialGapOnRefinements(int finerLevels, const std::string
     }
   }
   core::throwFirstUserError(*I.comm, error.str());
+}
+
+void Simulation::checkSegmentsOnRefinements(int finerLevels, const std::string& cause) const {
+  const auto& I = *impl_;
+  const auto& p = *I.problem;
+  const unsigned used = p.dirichletMask | p.contactMask | p.neumannMask | p.componentDirichletMask[0] |
+                        p.componentDirichletMask[1];
+  const auto& edges = I.initialDiscretisation->mesh->boundaryEdges();
+  finerLevels = std::min(finerLevels, levelsWithinWork(*I.comm, static_cast<long long>(edges.size())));
+  std::vector<unsigned> mine(static_cast<size_t>(finerLevels) + 1, 0u), all(mine.size());
+  for (const auto& be : edges) {
+    mine[0] |= be.segments;
+    for (int level = 1; level <= finerLevels; ++level)
+      for (int piece = 0; piece < (1 << level); ++piece) {
+        const auto mid = be.at((piece + 0.5) / (1 << level));
+        mine[static_cast<size_t>(level)] |= I.segments->match(*I.coarse, be.tree, be.face, mid[0], mid[1]);
+      }
+  }
+  MPI_Allreduce(mine.data(), all.data(), static_cast<int>(mine.size()), MPI_UNSIGNED, MPI_BOR, core::rawMpiComm(*I.comm));
+  for (int level = 1; level <= finerLevels; ++level) {
+    const unsigned changed = (all[0] ^ all[static_cast<size_t>(level)]) & used;
+    for (int s = 0; s < I.segments->size(); ++s)
+      if (changed & (1u << s))
+        SIGNORINI_USER_ERROR("Mesh/Boundary Segments/" << I.segments->name(s) << ": holds "
+                             << ((all[0] & (1u << s)) ? "boundary edges on the deck's mesh but none"
+                                                      : "no boundary edge on the deck's mesh but some")
+                             << " on the meshes refined " << level << " level(s) further, which " << cause
+                             << " can make (its coordinate conditions select less than an edge, tested at the "
+                                "edges' midpoints): the later cycles would change the problem; widen the conditions");
+  }
 }
 
 Simulation::Simulation(const core::ParameterList& deck, const std::string& deckPath, const std::string& outputDir,

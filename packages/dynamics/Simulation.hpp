@@ -142,6 +142,11 @@ class Simulation {
   /// segments that later adaptive cycles can make), which the deck's mesh cannot show: its segment
   /// means average the penetration away. \p cause names the setting. Collective.
   void checkInitialGapOnRefinements(int finerLevels, const std::string& cause) const;
+  /// Throws core::UserError if a boundary segment that Problem uses holds boundary edges on the
+  /// deck's mesh but none on a mesh refined up to \p finerLevels more levels, or the other way
+  /// round (its coordinate conditions select less than an edge, tested at the edges' midpoints):
+  /// the later cycles would drop or gain a Dirichlet, Neumann or contact condition. Collective.
+  void checkSegmentsOnRefinements(int finerLevels, const std::string& cause) const;
 
  private:
   struct Impl;
