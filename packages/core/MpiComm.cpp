@@ -29,20 +29,33 @@ double memoryPerRank(const Comm& comm) {
   return bytes / ranksOnNode;
 }
 
-void throwFirstUserError(const Comm& comm, const std::string& localMessage) {
+namespace {
+/// The message of the lowest rank with a non-empty \p localMessage, on every rank ("" if none). Collective.
+std::string firstMessage(const Comm& comm, const std::string& localMessage) {
   MPI_Comm c = rawMpiComm(comm);
   int rank = 0, size = 1;
   MPI_Comm_rank(c, &rank);
   MPI_Comm_size(c, &size);
   int mine = localMessage.empty() ? size : rank, first = size;
   MPI_Allreduce(&mine, &first, 1, MPI_INT, MPI_MIN, c);
-  if (first == size) return;
+  if (first == size) return "";
   std::string message = rank == first ? localMessage : std::string();
   int length = static_cast<int>(message.size());
   MPI_Bcast(&length, 1, MPI_INT, first, c);
   message.resize(static_cast<size_t>(length));
   MPI_Bcast(message.data(), length, MPI_CHAR, first, c);
-  throw UserError(message);
+  return message;
+}
+}  // namespace
+
+void throwFirstUserError(const Comm& comm, const std::string& localMessage) {
+  const std::string message = firstMessage(comm, localMessage);
+  if (!message.empty()) throw UserError(message);
+}
+
+void throwFirstSolverError(const Comm& comm, const std::string& localMessage) {
+  const std::string message = firstMessage(comm, localMessage);
+  if (!message.empty()) throw SolverError(message);
 }
 
 void throwFirstUserErrorOrAbort(const Comm& comm, const std::string& localMessage, double seconds) {

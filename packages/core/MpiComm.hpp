@@ -22,6 +22,9 @@ void onRootCollectively(const Comm& comm, const std::function<void()>& action);
 /// Makes a user error found on some ranks every rank's: if any rank passes a non-empty \p localMessage,
 /// every rank throws core::UserError with the message of the lowest such rank. Collective.
 void throwFirstUserError(const Comm& comm, const std::string& localMessage);
+/// The same for a core::SolverError (a failure of work that every rank does for itself, such as
+/// factoring its own copy of a matrix, which may run out of memory on some ranks only). Collective.
+void throwFirstSolverError(const Comm& comm, const std::string& localMessage);
 
 /// throwFirstUserError() after a call into a library whose collectives a rank may have left by an
 /// exception while the others wait in them (MueLu's set-up failing on some ranks only): a rank with

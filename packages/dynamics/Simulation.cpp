@@ -356,19 +356,22 @@ struct Simulation::Impl {
       c->mesh = std::make_unique<mesh::Q1Mesh>(*c->forest, *segments, self);
       c->assembler = makeAssembler(*c->mesh);
       const double k = newmark->timeStep;
+      std::string userError, failure;  // each rank factors its own copy: a failure on some ranks is every rank's
       try {
         c->schur = std::make_unique<solvers::CoarseSchurCorrection>(
             c->assembler->assembleSystem(1.0, newmark->beta * k * k, *problem, lumpedUnknowns(*c->assembler)));
-      } catch (core::UserError&) {
-        throw;
+      } catch (core::UserError& e) {
+        userError = e.what();
       } catch (std::exception& e) {  // KLU2 out of memory on a fine initial mesh, typically
-        throw core::SolverError("the coarse Schur correction (Contact/Schur Preconditioner = auto or strip + coarse) "
-                                "could not factor its mesh of " + std::to_string(c->forest->numGlobalCells()) +
-                                " cells, " + std::to_string(c->assembler->ownedMap()->getGlobalNumElements()) +
-                                " unknowns on each rank (" + core::withoutSourceLocation(e.what()) +
-                                "); choose a smaller Contact/Coarse Correction Cells, Contact/Schur Preconditioner = "
-                                "strip, or a coarse mesh of fewer cells");
+        failure = "the coarse Schur correction (Contact/Schur Preconditioner = auto or strip + coarse) could not "
+                  "factor its mesh of " + std::to_string(c->forest->numGlobalCells()) + " cells, " +
+                  std::to_string(c->assembler->ownedMap()->getGlobalNumElements()) + " unknowns on each rank (" +
+                  core::withoutSourceLocation(e.what()) +
+                  "); choose a smaller Contact/Coarse Correction Cells, Contact/Schur Preconditioner = strip, or a "
+                  "coarse mesh of fewer cells";
       }
+      core::throwFirstUserError(*comm, userError);
+      core::throwFirstSolverError(*comm, failure);
       coarseProblem = std::move(c);
     }
     return *coarseProblem;
@@ -792,6 +795,8 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
       I.coarse = mesh::CoarseMesh::create(meshParams);
     } catch (const core::UserError& e) {
       error = e.what();
+    } catch (const std::exception& e) {  // a library's or the file system's failure, maybe on one node only
+      error = "Mesh/File: cannot read the mesh: " + core::withoutSourceLocation(e.what());
     }
     core::throwFirstUserError(*comm, error);
   }
@@ -1005,12 +1010,23 @@ RCP<const Comm> Simulation::comm() const { return impl_->comm; }
 const std::string& Simulation::outputBase() const { return impl_->outputBase; }
 const core::ParameterList& Simulation::deck() const { return impl_->deck; }
 
+namespace {
+/// core::memoryPerRank() of the rank that has the least (nodes may differ, or hold different
+/// numbers of ranks), so that every rank decides alike. Collective.
+double smallestMemoryPerRank(const Comm& comm) {
+  const double mine = core::memoryPerRank(comm);
+  double least = mine;
+  MPI_Allreduce(&mine, &least, 1, MPI_DOUBLE, MPI_MIN, core::rawMpiComm(comm));
+  return least;
+}
+}  // namespace
+
 void Simulation::checkMeshFits(double globalCells, const std::string& cause, double storedCells) const {
   const double perRank = globalCells / impl_->comm->getSize();
   const int nc = impl_->components;
   const double need = perRank * 750.0 * nc * nc + storedCells / impl_->comm->getSize(),
                budget = impl_->deck.sublist("Parallel").get<double>("Memory Per Rank"),
-               have = budget > 0 ? budget * 1e9 : core::memoryPerRank(*impl_->comm);
+               have = budget > 0 ? budget * 1e9 : smallestMemoryPerRank(*impl_->comm);
   const double indexLimit = std::numeric_limits<int>::max() / 9.0;  // 32-bit local indices, 9 entries per row
   std::ostringstream why;
   why << std::setprecision(3);
