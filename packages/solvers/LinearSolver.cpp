@@ -336,10 +336,8 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
       throw core::SolverError(
           I.solverText() + " broke down: " + what +
           (what.find("non-positive") != std::string::npos
-               ? " (the system matrix is not positive definite to rounding: its condition number is beyond what "
-                 "doubles hold, as with a time step far above the mesh's Courant limit on a stiff material; lower "
-                 "Time Integration/Time Step)"
-               : ""));
+               ? std::string(" (the system matrix is not positive definite to rounding: ") + kNotPositiveDefiniteHint + ")"
+               : std::string()));
     }
     SIGNORINI_USER_ERROR("Linear Solver/Belos: Belos' \"" << canonicalMethod(I.params.get<std::string>("Method"))
                          << "\" cannot solve with these parameters: " << firstLines(e.what()));

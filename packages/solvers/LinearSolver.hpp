@@ -13,6 +13,11 @@
 
 namespace signorini::solvers {
 
+/// Added to a solver failure on a step matrix that is not positive definite to rounding.
+inline constexpr const char* kNotPositiveDefiniteHint =
+    "its condition number is beyond what doubles hold, as with a time step far above the mesh's Courant limit on "
+    "a stiff material; lower Time Integration/Time Step";
+
 class LinearSolver {
  public:
   static core::ParameterList getValidParameters();

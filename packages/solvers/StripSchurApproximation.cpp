@@ -14,6 +14,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "EnvelopeCholesky.hpp"
+#include "LinearSolver.hpp"
 #include "Error.hpp"
 #include "MpiComm.hpp"
 #include "ReproducibleSum.hpp"
@@ -270,9 +271,8 @@ StripSchurApproximation::StripSchurApproximation(const CrsMatrix& A, const fem::
     } catch (const core::SolverError& e) {
       throw core::SolverError(std::string("the contact Schur preconditioner (the step matrix on a strip along "
                                           "Gamma_C, Contact/Schur Preconditioner): ") + e.what() +
-                              ": the step matrix is not positive definite to rounding (its condition number is "
-                              "beyond what doubles hold, as with a time step far above the mesh's Courant limit "
-                              "on a stiff material; lower Time Integration/Time Step)");
+                              ": the step matrix is not positive definite to rounding (" + kNotPositiveDefiniteHint +
+                              ")");
     }
     const EnvelopeCholesky& As = *factor;
     ordersAlongContact_ = As.usesPreferredOrdering();

@@ -47,8 +47,9 @@ bool contains(const std::string& s, const std::string& part) { return s.find(par
 }  // namespace
 
 TEST(CoarseMesh, TakesConformingConvexCellsAndCracks) {
-  EXPECT_EQ(errorOf(square2x2()), "");
-  EXPECT_EQ(mesh::CoarseMesh::fromQuads(square2x2().x, square2x2().y, square2x2().cells, {}, "mesh.exo")->crackNote(), "");
+  const Quads square = square2x2();
+  EXPECT_EQ(errorOf(square), "");
+  EXPECT_EQ(mesh::CoarseMesh::fromQuads(square.x, square.y, square.cells, {}, "mesh.exo")->crackNote(), "");
   Quads distorted = square2x2();
   distorted.x[4] = 0.6, distorted.y[4] = 0.45;  // still convex
   EXPECT_EQ(errorOf(distorted), "");
