@@ -10,7 +10,8 @@ namespace signorini::dynamics {
 
 core::ParameterList Newmark::getValidParameters() {
   core::ParameterList p("Time Integration");
-  core::addDouble(p, "Time Step", 0.0025, "k [time], constant", 1e-300, core::kInf);
+  core::addDouble(p, "Time Step", 0.0025, "k [time], constant; at least 1e-150, so that beta k^2 is a normal double", 1e-150,
+                  core::kInf);
   core::addDouble(p, "Final Time", 1.0, "T [time], a whole number of Time Steps (to 1e-6 relative): the run takes T / k steps", 1e-300, core::kInf);
   core::addDouble(p, "Alpha", 0.5, "Newmark alpha (= gamma); second order needs 1/2; 2 beta >= alpha >= 1/2", 0.0, 2.0);
   core::addDouble(p, "Beta", 0.5, "Newmark beta; with alpha = 1/2 the scheme conserves the Newmark energy (energy + (beta - 1/4) k^2/2 a^T M a, the steps table's newmark_energy; paper Sec. 3.1) without contact; with contact beta = 1/4 gains energy at impacts (README, Known behaviour), the paper's 1/2 does not", 0.0, 2.0);

@@ -138,6 +138,12 @@ signorini_add_bad_deck_test(zero_time_step ${decks}/zero-time-step.xml
   "zero-time-step[.]xml: 'Time Integration/Time Step' = 0 is not allowed")
 signorini_add_bad_deck_test(negative_time_step ${decks}/negative-time-step.xml
   "negative-time-step[.]xml: 'Time Integration/Time Step' = -0[.]0025 is not allowed")
+# beta k^2 below the normal doubles made the step matrix A = M + beta k^2 K and the acceleration
+# (u - u~) / (beta k^2) meaningless: the run failed in its second step without naming the key.
+signorini_add_driver_test(time_step_below_normal_doubles EXIT 1
+  ARGS --output-dir {OUT} --set "Time Integration/Time Step=1e-160" --set "Time Integration/Final Time=4e-160"
+       ${decks}/good.xml
+  REGEX "'Time Integration/Time Step' = 1e-160 is not allowed")
 # A value that is not a number of the declared type ("0.01s") must not be read as 0.01 silently.
 signorini_add_bad_deck_test(unparsable_number ${decks}/unparsable-number.xml
   "error: .*unparsable-number[.]xml.*Final Time")
