@@ -97,8 +97,8 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
                   "which bilinear elements represent exactly, refines nothing, on any number of ranks; 0: off",
                   0.0, 1e-3);
   core::addDouble(a, "Contact Zone Gap", 0.0,
-                  "Length [units of the mesh]: cells with a contact edge whose multiplier segment's mean gap to the "
-                  "obstacle is at most this are refined as well as those the strategy marks (below the Maximum "
+                  "Length [units of the mesh]: cells with a contact edge whose multiplier segment comes within this of "
+                  "the obstacle (its smallest gap at the ends and Gauss points of its fine edges) are refined as well as those the strategy marks (below the Maximum "
                   "Level) and never coarsened, so that the contact zone is resolved before the first contact also "
                   "where the estimate cannot foresee it (e.g. a body in rigid motion, whose estimate is 0); about the "
                   "distance the body moves towards the obstacle in a few steps. 0: off (the paper's method)",
@@ -448,14 +448,16 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         // Maximum Level) and never coarsened.
         std::vector<char> nearContact(r.cellIndicator.size(), 0);
         if (contactZoneGap > 0 && s.coupling) {
-          const std::vector<double> Bu = s.coupling->applyTranspose(s.u);
-          const std::vector<double> gbar = s.coupling->weightedObstacle(s.problem.obstacle, s.time);
+          // The smallest gap over each segment, not its mean: inside a segment the body can reach the
+          // obstacle by up to the obstacle's variation over it before the mean gap says so.
+          Vector uOverlap(s.assembler.overlapMap());
+          s.assembler.toOverlap(s.u, uOverlap);
+          const std::vector<double> gap = s.coupling->smallestGaps(s.mesh, uOverlap, s.problem.obstacle, s.time);
           const std::vector<int>& segment = s.coupling->localEdgeSegment();
-          const std::vector<double>& length = s.coupling->segmentLength();
           const auto& edges = s.mesh.boundaryEdges();
           for (size_t e = 0; e < edges.size(); ++e) {
             const int j = segment[e];
-            if (j >= 0 && (Bu[j] - gbar[j]) <= contactZoneGap * length[j]) nearContact[edges[e].cell] = 1;
+            if (j >= 0 && gap[j] <= contactZoneGap) nearContact[edges[e].cell] = 1;
           }
           for (size_t e = 0; e < flags.size(); ++e) flags[e] = flags[e] || (nearContact[e] && refinable[e]);
         }

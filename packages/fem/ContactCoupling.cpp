@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -501,6 +502,30 @@ std::vector<double> ContactCoupling::weightedObstacle(const core::Expression& g,
       });
   auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), gbar);
   return std::vector<double>(h.data(), h.data() + m);
+}
+
+std::vector<double> ContactCoupling::smallestGaps(const mesh::Q1Mesh& mesh, const Vector& uOverlap,
+                                                 const core::Expression& g, double t) const {
+  const auto& bedges = mesh.boundaryEdges();
+  SIGNORINI_ASSERT(bedges.size() == localEdgeSegment_.size(), "smallestGaps needs the coupling's own mesh");
+  const int nc = unknowns_.components, comp = unknowns_.component;
+  std::vector<double> mine(numSegments(), std::numeric_limits<double>::infinity()), smallest(mine.size());
+  auto uh = uOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
+  std::string bad;
+  for (size_t i = 0; i < bedges.size() && bad.empty(); ++i) {
+    const int j = localEdgeSegment_[i];
+    if (j < 0) continue;
+    const auto& be = bedges[i];
+    const double u0 = unknowns_.sign * uh(nc * be.node[0] + comp, 0), u1 = unknowns_.sign * uh(nc * be.node[1] + comp, 0);
+    for (double w : {0.0, kGauss3Point[0], kGauss3Point[1], kGauss3Point[2], 1.0}) {
+      const auto x = be.at(w);
+      mine[j] = std::min(mine[j], (1 - w) * u0 + w * u1 - g.sample(x[0], x[1], t, bad));
+    }
+  }
+  core::throwFirstUserError(*comm_, bad.empty() ? bad : bad + " on the contact boundary");
+  if (!mine.empty())
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, static_cast<int>(mine.size()), mine.data(), smallest.data());
+  return smallest;
 }
 
 std::vector<double> ContactCoupling::coarseLoads(const Assembler& coarse) const {

@@ -73,6 +73,45 @@ TEST(ContactCoupling, ColumnsSumToSegmentLengths) {
   }
 }
 
+TEST(ContactCoupling, SmallestGapsAreTheLowestPointsOfEachSegment) {
+  // u = 0.5 x (a Q1 function) on a graded bottom side, obstacle g = 3 x - 1: the gap u - g =
+  // 1 - 2.5 x falls along every segment, so its smallest value is at the segment's right end,
+  // where its mean is at the midpoint; on 1-3 ranks every rank gets every segment's value.
+  test::TestMesh tm(0.0, 2.0, 0.0, 1.0, 2, 1, 3);
+  tm.refineCorner();
+  const auto& m = tm.build();
+  fem::ContactCoupling B(m, kBottom, fem::ContactCoupling::SegmentSize::TwoEdges,
+                         std::vector<char>(m.overlapMap()->getNodeNumElements(), 0));
+  Vector u(m.overlapMap());
+  {
+    auto h = u.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (size_t i = 0; i < h.extent(0); ++i) h(i, 0) = 0.5 * m.nodeCoords()[i][0];
+  }
+  const auto smallest = B.smallestGaps(m, u, core::Expression("3*x - 1", "test"), 0.0);
+  ASSERT_EQ(static_cast<int>(smallest.size()), B.numSegments());
+  for (int j = 0; j < B.numSegments(); ++j) {
+    const double right = B.segmentMidpoint()[j][0] + B.segmentLength()[j] / 2;
+    EXPECT_NEAR(smallest[j], 1 - 2.5 * right, 1e-14) << "segment " << j;
+    EXPECT_LT(smallest[j], 1 - 2.5 * B.segmentMidpoint()[j][0] - 1e-3) << "segment " << j;  // below the mean gap
+  }
+  // An obstacle whose peak lies inside a segment: the smallest gap of u = 0 is -g at the peak (a
+  // fine edge's midpoint, x = 3/64 inside the segment [0, 1/16] of edges 1/32, sampled there) in
+  // the segment holding it, where the mean gap is positive.
+  u.putScalar(0.0);
+  const auto peak = B.smallestGaps(m, u, core::Expression("0.1 - 200*(x - 0.046875)^2", "test"), 0.0);
+  const auto gbar = B.weightedObstacle(core::Expression("0.1 - 200*(x - 0.046875)^2", "test"), 0.0);
+  bool seen = false;
+  for (int j = 0; j < B.numSegments(); ++j) {
+    const double x0 = B.segmentMidpoint()[j][0] - B.segmentLength()[j] / 2, x1 = x0 + B.segmentLength()[j];
+    if (x0 < 3.0 / 64 && 3.0 / 64 < x1) {
+      seen = true;
+      EXPECT_NEAR(peak[j], -0.1, 1e-14);
+      EXPECT_GT(-gbar[j] / B.segmentLength()[j], 0.0);  // the mean gap misses the contact
+    }
+  }
+  EXPECT_TRUE(seen);
+}
+
 TEST(ContactCoupling, SegmentsAreParentEdgesAndMirrorInvariant) {
   // Unit square, one tree, h = 1/8, refined three times around x = 0.3 and x = 0.7 of the bottom
   // side and 2:1 balanced: a graded contact boundary, mirror-symmetric about x = 0.5, with runs of
