@@ -267,6 +267,8 @@ std::string AdaptiveSimulation::plan() const {
       if (cycles > 1 && first >= maxDofs) os << " (cycle 0 alone has " << first << ": the run stops after it)";
     }
     if (a.get<double>("Tolerance") > 0) os << ", stop at eta <= " << a.get<double>("Tolerance");
+    if (const double gap = a.get<double>("Contact Zone Gap"); gap > 0 && strategy != "uniform")
+      os << ", also refining where the contact boundary comes within " << gap << " of the obstacle (Contact Zone Gap)";
   }
   if (deck_.sublist("Parallel").get<bool>("Reproducible Arithmetic"))
     os << "\nreproducible arithmetic: the same bits on any number of ranks";

@@ -505,6 +505,9 @@ signorini_add_driver_test(contact_zone_gap_without_obstacle EXIT 0
 signorini_add_driver_test(contact_zone_gap_with_uniform EXIT 0
   ARGS --check --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Contact Zone Gap=0.1" ${decks}/good.xml
   REGEX "warning: .*Strategy = uniform refines every cell; without effect: Adaptivity/Contact Zone Gap\n")
+signorini_add_driver_test(contact_zone_gap_in_the_plan EXIT 0
+  ARGS --check --output-dir {OUT} ${decks}/block-into-wall.xml
+  REGEX "Algorithm 5[.]1: 4 cycle[(]s[)], .*also refining where the contact boundary comes within 0[.]0001 of the obstacle [(]Contact Zone Gap[)]\n")
 signorini_add_driver_test(adaptive_keys_without_strategy EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Cycles=3" --set "Adaptivity/Refinement Fraction=0.2" ${decks}/good.xml
   REGEX "warning: .*Strategy = none .*without effect: Adaptivity/(Cycles, Adaptivity/Refinement Fraction|Refinement Fraction, Adaptivity/Cycles)\n"
