@@ -6,6 +6,7 @@
 #include "OutputStaging.hpp"
 
 #include <exodusII.h>
+#include <netcdf.h>
 
 #include <algorithm>
 #include <cctype>
@@ -378,6 +379,41 @@ struct ExodusSeriesWriter::Impl {
         sides[i] = sideSet->second[i][1] + 1;
       }
       check(ex_put_set(exoid, EX_SIDE_SET, 1, elements.data(), sides.data()), "ex_put_set");
+    }
+    clearTextBehindNul();
+  }
+
+  /// Exodus 6 writes each name into its row of a text variable (names, QA and info records) from a
+  /// buffer it does not clear: behind the name's NUL the row held whatever the heap held there,
+  /// e.g. pieces of the deck. Clears every row behind its first NUL, so that a file holds only
+  /// what the run wrote (ctest exodus_text_padding).
+  void clearTextBehindNul() {
+    const auto netcdf = [&](int status, const char* call) {
+      if (status != NC_NOERR)
+        SIGNORINI_USER_ERROR("Exodus II file '" << partPath << "': " << call << " failed (" << nc_strerror(status) << ")");
+    };
+    int numVars = 0, unlimited = -1;
+    netcdf(nc_inq_nvars(exoid, &numVars), "nc_inq_nvars");
+    netcdf(nc_inq_unlimdim(exoid, &unlimited), "nc_inq_unlimdim");
+    for (int v = 0; v < numVars; ++v) {
+      nc_type type;
+      int numDims = 0, dims[NC_MAX_VAR_DIMS];
+      netcdf(nc_inq_var(exoid, v, nullptr, &type, &numDims, dims, nullptr), "nc_inq_var");
+      if (type != NC_CHAR || numDims == 0 || dims[0] == unlimited) continue;
+      std::size_t total = 1, row = 1;
+      for (int d = 0; d < numDims; ++d) {
+        netcdf(nc_inq_dimlen(exoid, dims[d], &row), "nc_inq_dimlen");
+        total *= row;
+      }
+      if (total == 0) continue;
+      std::vector<char> text(total);
+      netcdf(nc_get_var_text(exoid, v, text.data()), "nc_get_var_text");
+      bool changed = false;
+      for (std::size_t at = 0; at < total; at += row) {
+        const auto begin = text.begin() + static_cast<std::ptrdiff_t>(at), end = begin + static_cast<std::ptrdiff_t>(row);
+        for (auto c = std::find(begin, end, '\0'); c != end; ++c) changed |= std::exchange(*c, '\0') != '\0';
+      }
+      if (changed) netcdf(nc_put_var_text(exoid, v, text.data()), "nc_put_var_text");
     }
   }
 
