@@ -539,6 +539,17 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       core::rootOut(rank) << std::scientific << std::setprecision(4) << "signorini: cycle " << l
                           << ": total unknowns " << last.totalDofs << ", eta " << etaMax << std::fixed
                           << ", " << cycles_.back().wallSeconds << " s" << std::endl;
+      // Refinement that raises the estimate: most likely energy injected where a refined step meets
+      // an impact (README, Known behaviour), which the user should see before trusting the estimate.
+      if (const auto best = std::min_element(cycles_.begin(), cycles_.end() - 1,
+                                             [](const CycleSummary& a, const CycleSummary& b) { return a.eta < b.eta; });
+          best != cycles_.end() - 1 && etaMax > best->eta)
+        core::rootOut(rank) << std::setprecision(4) << std::scientific << "signorini: warning: cycle " << l
+                            << "'s estimate " << etaMax << " is above cycle " << best->cycle << "'s " << best->eta
+                            << std::fixed
+                            << ": refinement did not lower it; a step refined at an impact can inject energy (the "
+                               "step table's newmark_energy; README, Known behaviour; Adaptivity/Contact Zone Gap)"
+                            << std::endl;
       if (stop) {
         if (!lastPlanned) {
           core::rootOut(rank) << "signorini: cycle " << l << " ends the run: "

@@ -11,7 +11,8 @@
 # the smallest gap of each segment, so every cycle keeps the energy within 2% of E(0) and finds
 # the first contact earlier, the last within two steps of the exact step 50 (with each segment's
 # mean gap, which stays positive while the block penetrates inside the segment, the energy grew
-# 16-19 times; without the option 35-40 times, the control). Cycles are numbered from 0.
+# 16-19 times; without the option 35-40 times, the control, with a warning that the estimate rose
+# over the cycles). Cycles are numbered from 0.
 # Usage: contact_zone_gap.sh SIGNORINI SOURCE_DIR WORK_DIR
 set -uo pipefail
 signorini=$1 src=$2 work=$3
@@ -31,6 +32,10 @@ run coarsening --set 'Adaptivity/Contact Zone Gap=2e-4' --set 'Adaptivity/Coarse
   --set 'Adaptivity/Maximum Level=2' --set 'Adaptivity/Cycles=4'
 run_deck block-into-wall wall
 run_deck block-into-wall wall-off --set 'Adaptivity/Contact Zone Gap=0'
+# The estimate rising over the cycles draws a warning (without the option), and only then.
+grep -q "warning: cycle 1's estimate .* is above cycle 0's" "$work/wall-off.log" ||
+  { cat "$work/wall-off.log"; fail "no warning for an estimate that rose over the cycles"; }
+! grep -q "warning" "$work/wall.log" || { cat "$work/wall.log"; fail "a warning for a run whose estimate falls"; }
 /usr/bin/python3 - "$work" <<'PY'
 import sys
 import numpy as np
