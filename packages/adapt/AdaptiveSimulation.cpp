@@ -103,7 +103,7 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
                   0.0, 1e-3);
   core::addDouble(a, "Contact Zone Gap", 0.0,
                   "Length [units of the mesh]: cells with a contact edge whose multiplier segment comes within this of "
-                  "the obstacle (its smallest gap at the ends and Gauss points of its fine edges) are refined as well as those the strategy marks (below the Maximum "
+                  "the obstacle (its smallest gap at the Gauss points of its fine edges) are refined as well as those the strategy marks (below the Maximum "
                   "Level) and never coarsened, so that the contact zone is resolved before the first contact also "
                   "where the estimate cannot foresee it (e.g. a body in rigid motion, whose estimate is 0); about the "
                   "distance the body moves towards the obstacle in a few steps. 0: off (the paper's method)",
@@ -555,14 +555,15 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, rounding, Teuchos::outArg(roundingEverywhere));
       if (const auto best = std::min_element(cycles_.begin(), cycles_.end() - 1,
                                              [](const CycleSummary& a, const CycleSummary& b) { return a.eta < b.eta; });
-          best != cycles_.end() - 1 && etaMax > kEstimateRiseWarning * best->eta && !roundingEverywhere)
-        core::rootOut(rank) << std::setprecision(4) << std::scientific << "signorini: warning: cycle " << l
-                            << "'s estimate " << etaMax << " is above cycle " << best->cycle << "'s " << best->eta
-                            << " by more than " << std::fixed << std::setprecision(0)
-                            << 100 * (kEstimateRiseWarning - 1)
-                            << "%: refinement raised it; where a step refined at an impact injects energy, the step "
-                               "table's newmark_energy shows it (README, Known behaviour; Adaptivity/Contact Zone Gap)"
-                            << std::endl;
+          best != cycles_.end() - 1 && etaMax > kEstimateRiseWarning * best->eta && !roundingEverywhere) {
+        std::ostringstream warning;  // its own format: the console's stays as the run set it
+        warning << std::setprecision(4) << std::scientific << "signorini: warning: cycle " << l << "'s estimate "
+                << etaMax << " is above cycle " << best->cycle << "'s " << best->eta << " by more than "
+                << std::lround(100 * (kEstimateRiseWarning - 1))
+                << "%: refinement raised it; where a step refined at an impact injects energy, the step table's "
+                   "newmark_energy shows it (README, Known behaviour; Adaptivity/Contact Zone Gap)";
+        core::rootOut(rank) << warning.str() << std::endl;
+      }
       if (stop) {
         if (!lastPlanned) {
           core::rootOut(rank) << "signorini: cycle " << l << " ends the run: "

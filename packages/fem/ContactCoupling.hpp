@@ -52,8 +52,8 @@ class ContactCoupling {
   std::vector<double> applyTranspose(const Vector& u) const;
   /// gbar_j = int_{E_j} g(., t) ds (3-point Gauss per fine edge), replicated.
   std::vector<double> weightedObstacle(const core::Expression& g, double t) const;
-  /// The smallest gap sign u_c - g(., t) [length] of each segment at points of its fine edges
-  /// (both ends and the 3 Gauss points of weightedObstacle()), u linear along each edge; replicated
+  /// The smallest gap sign u_c - g(., t) [length] of each segment at the 3 Gauss points of each of
+  /// its fine edges (those of weightedObstacle()), u linear along each edge; replicated
   /// (the minimum over the ranks). The mean gap (B^T u - gbar)_j / |E_j| can be positive while u
   /// penetrates the obstacle inside E_j by up to the obstacle's variation over it. \p uOverlap: u
   /// on the overlap unknowns of \p mesh, the mesh this coupling was built on.

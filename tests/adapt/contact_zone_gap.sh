@@ -36,6 +36,9 @@ run_deck block-into-wall wall-off --set 'Adaptivity/Contact Zone Gap=0'
 grep -q "warning: cycle 1's estimate .* is above cycle 0's" "$work/wall-off.log" ||
   { cat "$work/wall-off.log"; fail "no warning for an estimate that rose over the cycles"; }
 ! grep -q "warning" "$work/wall.log" || { cat "$work/wall.log"; fail "a warning for a run whose estimate falls"; }
+# The warning keeps the console's number format: the run's wall time after it still has decimals.
+grep -Eq "done: .*, [0-9]+[.][0-9]+ s$" "$work/wall-off.log" ||
+  { cat "$work/wall-off.log"; fail "the warning changed the number format of later output"; }
 /usr/bin/python3 - "$work" <<'PY'
 import sys
 import numpy as np

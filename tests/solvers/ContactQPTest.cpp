@@ -20,6 +20,7 @@
 #include "CoarseSchurCorrection.hpp"
 #include "ContactCoupling.hpp"
 #include "ContactQP.hpp"
+#include "ElasticityAssembler.hpp"
 #include "Expression.hpp"
 #include "JacobiCG.hpp"
 #include "LinearSolver.hpp"
@@ -74,39 +75,61 @@ TEST(ContactCoupling, ColumnsSumToSegmentLengths) {
 }
 
 TEST(ContactCoupling, SmallestGapsAreTheLowestPointsOfEachSegment) {
-  // u = 0.5 x (a Q1 function) on a graded bottom side, obstacle g = 3 x - 1: the gap u - g =
-  // 1 - 2.5 x falls along every segment, so its smallest value is at the segment's right end,
-  // where its mean is at the midpoint; on 1-3 ranks every rank gets every segment's value.
+  // Bottom side of [0, 2] x [0, 1] with edges of 1/8, segments of two: a gap that falls linearly
+  // along x, 1 - 2.5 x, is smallest at the last Gauss point of the segment's right edge,
+  // x1 - (1 - 0.8873) / 8, where the mean gap is at the midpoint; on 1-3 ranks every rank gets
+  // every segment's value. For the scalar wave (u = 0.5 x, g = 3 x - 1) and for plane strain with
+  // the constraint -u_y >= g on the second of two components (u_y = -0.5 x beside u_x = 100).
   test::TestMesh tm(0.0, 2.0, 0.0, 1.0, 2, 1, 3);
-  tm.refineCorner();
   const auto& m = tm.build();
-  fem::ContactCoupling B(m, kBottom, fem::ContactCoupling::SegmentSize::TwoEdges,
-                         std::vector<char>(m.overlapMap()->getNodeNumElements(), 0));
-  Vector u(m.overlapMap());
-  {
-    auto h = u.getLocalViewHost(Tpetra::Access::OverwriteAll);
-    for (size_t i = 0; i < h.extent(0); ++i) h(i, 0) = 0.5 * m.nodeCoords()[i][0];
+  const core::Expression g("3*x - 1", "test");
+  fem::ElasticityAssembler plane(m, std::vector<char>(2 * m.overlapMap()->getNodeNumElements(), 0), 1.0, 1.0);
+  for (const int components : {1, 2}) {
+    const fem::ContactUnknowns unknowns = components == 1 ? fem::ContactUnknowns()
+                                                          : fem::ContactUnknowns{plane.ownedMap(), plane.overlapMap(),
+                                                                                 2, 1, -1.0};
+    fem::ContactCoupling B(m, kBottom, fem::ContactCoupling::SegmentSize::TwoEdges,
+                           std::vector<char>(components * m.overlapMap()->getNodeNumElements(), 0), unknowns);
+    Vector u(components == 1 ? m.overlapMap() : plane.overlapMap());
+    {
+      auto h = u.getLocalViewHost(Tpetra::Access::OverwriteAll);
+      for (size_t i = 0; i < m.nodeCoords().size(); ++i) {
+        const double x = m.nodeCoords()[i][0];
+        if (components == 1)
+          h(i, 0) = 0.5 * x;
+        else
+          h(2 * i, 0) = 100.0, h(2 * i + 1, 0) = -0.5 * x;
+      }
+    }
+    const auto smallest = B.smallestGaps(m, u, g, 0.0);
+    ASSERT_EQ(static_cast<int>(smallest.size()), B.numSegments());
+    ASSERT_EQ(B.numSegments(), 8);
+    for (int j = 0; j < B.numSegments(); ++j) {
+      const double right = B.segmentMidpoint()[j][0] + B.segmentLength()[j] / 2;
+      EXPECT_NEAR(smallest[j], 1 - 2.5 * (right - (1 - 0.88729833462074169) / 8), 1e-14)
+          << components << " component(s), segment " << j;
+      EXPECT_LT(smallest[j], 1 - 2.5 * B.segmentMidpoint()[j][0] - 0.1) << "segment " << j;  // below the mean gap
+    }
   }
-  const auto smallest = B.smallestGaps(m, u, core::Expression("3*x - 1", "test"), 0.0);
-  ASSERT_EQ(static_cast<int>(smallest.size()), B.numSegments());
-  for (int j = 0; j < B.numSegments(); ++j) {
-    const double right = B.segmentMidpoint()[j][0] + B.segmentLength()[j] / 2;
-    EXPECT_NEAR(smallest[j], 1 - 2.5 * right, 1e-14) << "segment " << j;
-    EXPECT_LT(smallest[j], 1 - 2.5 * B.segmentMidpoint()[j][0] - 1e-3) << "segment " << j;  // below the mean gap
-  }
-  // An obstacle whose peak lies inside a segment: the smallest gap of u = 0 is -g at the peak (a
-  // fine edge's midpoint, x = 3/64 inside the segment [0, 1/16] of edges 1/32, sampled there) in
+  // On a graded side, an obstacle whose peak lies inside a segment: the smallest gap of u = 0 is
+  // -g at the peak (the midpoint of an edge of 1/32, x = 3/64, inside the segment [0, 1/16]) in
   // the segment holding it, where the mean gap is positive.
-  u.putScalar(0.0);
-  const auto peak = B.smallestGaps(m, u, core::Expression("0.1 - 200*(x - 0.046875)^2", "test"), 0.0);
-  const auto gbar = B.weightedObstacle(core::Expression("0.1 - 200*(x - 0.046875)^2", "test"), 0.0);
+  test::TestMesh graded(0.0, 2.0, 0.0, 1.0, 2, 1, 3);
+  graded.refineCorner();
+  const auto& mg = graded.build();
+  fem::ContactCoupling Bg(mg, kBottom, fem::ContactCoupling::SegmentSize::TwoEdges,
+                          std::vector<char>(mg.overlapMap()->getNodeNumElements(), 0));
+  Vector zero(mg.overlapMap());
+  const core::Expression peak("0.1 - 200*(x - 0.046875)^2", "test");
+  const auto smallest = Bg.smallestGaps(mg, zero, peak, 0.0);
+  const auto gbar = Bg.weightedObstacle(peak, 0.0);
   bool seen = false;
-  for (int j = 0; j < B.numSegments(); ++j) {
-    const double x0 = B.segmentMidpoint()[j][0] - B.segmentLength()[j] / 2, x1 = x0 + B.segmentLength()[j];
+  for (int j = 0; j < Bg.numSegments(); ++j) {
+    const double x0 = Bg.segmentMidpoint()[j][0] - Bg.segmentLength()[j] / 2, x1 = x0 + Bg.segmentLength()[j];
     if (x0 < 3.0 / 64 && 3.0 / 64 < x1) {
       seen = true;
-      EXPECT_NEAR(peak[j], -0.1, 1e-14);
-      EXPECT_GT(-gbar[j] / B.segmentLength()[j], 0.0);  // the mean gap misses the contact
+      EXPECT_NEAR(smallest[j], -0.1, 1e-14);
+      EXPECT_GT(-gbar[j] / Bg.segmentLength()[j], 0.0);  // the mean gap misses the contact
     }
   }
   EXPECT_TRUE(seen);
