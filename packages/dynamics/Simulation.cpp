@@ -415,6 +415,7 @@ struct Simulation::Impl {
       const unsigned fixed = problem->dirichletMask |
                              (problem->components() == 2 ? problem->componentDirichletMask[problem->contactComponent] : 0u);
       int overlapLocal = 0, overlapGlobal = 0;
+      unsigned intoBodyLocal = 0, intoBodyGlobal = 0;  // the contact segments with an edge that d points into
       const auto& corners = d->mesh->cornerCoordsHost;
       for (const auto& be : d->mesh->boundaryEdges())
         if (be.segments & problem->contactMask) {
@@ -429,11 +430,13 @@ struct Simulation::Impl {
             double nx = ty, ny = -tx;
             if (nx * (0.5 * (be.x[0][0] + be.x[1][0]) - cx) + ny * (0.5 * (be.x[0][1] + be.x[1][1]) - cy) < 0) nx = -nx, ny = -ny;
             const double dn = problem->contactSign * (problem->contactComponent == 0 ? nx : ny);
-            if (dn < -1e-3 * std::hypot(nx, ny)) overlapLocal |= 4;  // into the body here
+            if (dn < -1e-3 * std::hypot(nx, ny)) overlapLocal |= 4, intoBodyLocal |= be.segments;  // into the body here
             if (dn > 1e-3 * std::hypot(nx, ny)) overlapLocal |= 8;   // out of it: the obstacle is inside
           }
         }
       Teuchos::reduceAll(*comm, Teuchos::REDUCE_BOR, overlapLocal, Teuchos::outArg(overlapGlobal));
+      if (problem->components() == 2 && !directionChecked)
+        Teuchos::reduceAll(*comm, Teuchos::REDUCE_BOR, intoBodyLocal, Teuchos::outArg(intoBodyGlobal));
       if (overlapGlobal & 1)
         SIGNORINI_USER_ERROR("Problem: a boundary edge belongs to both a contact segment and a Dirichlet segment "
                              "that fixes the constrained component (Problem/Contact Segments against Dirichlet Segments"
@@ -449,6 +452,14 @@ struct Simulation::Impl {
         if ((overlapGlobal & 8) && comm->getRank() == 0)
           std::cerr << "signorini: warning: " << deckPath << ": Problem/Contact Direction points out of the body on "
                     << "some contact edges (d . u >= g puts the obstacle inside the body there)" << std::endl;
+        // A named contact segment on none of whose edges d points into the body (it runs along them
+        // all, e.g. +y on a left side): its constraint is no obstacle met from outside, most likely
+        // a segment named by mistake (a user review found one acting as an invisible obstacle).
+        for (int i = 0; i < segments->size() && comm->getRank() == 0; ++i)
+          if ((problem->contactMask & (1u << i)) && !(intoBodyGlobal & (1u << i)))
+            std::cerr << "signorini: warning: " << deckPath << ": Problem/Contact Segments: on no edge of '"
+                      << segments->name(i) << "' does Problem/Contact Direction point into the body (it runs along "
+                      << "or out of them), so d . u >= g there is no obstacle met from outside" << std::endl;
         directionChecked = true;
       }
       if (overlapGlobal & 2)
@@ -804,8 +815,17 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     checkMeshFits(I.coarse->numTrees() * std::pow(4.0, level + I.coarse->levelOffset()),
                   "Mesh/File with " + std::to_string(I.coarse->numTrees()) + " cells, Refinement Level = " +
                       std::to_string(level));
+  // Reproducible arithmetic orders its sums by the nodes' coordinates (Q1Mesh::canonicalKey), which
+  // do not tell apart the nodes on either side of a crack: the order, and so the bits, would be
+  // left to the partition (and the contact strip asserted distinct keys).
+  if (!I.coarse->crackNote().empty() && reproducible)
+    SIGNORINI_USER_ERROR("Parallel/Reproducible Arithmetic = true orders every sum by the nodes' coordinates, which "
+                         "cannot tell apart nodes at one point: "
+                         << I.coarse->crackNote() << "; or set Parallel/Reproducible Arithmetic = false");
   if (!I.coarse->crackNote().empty() && comm->getRank() == 0)
     std::cerr << "signorini: warning: " << deckPath << ": " << I.coarse->crackNote() << std::endl;
+  if (!I.coarse->interiorSidesNote().empty() && comm->getRank() == 0)
+    std::cerr << "signorini: warning: " << deckPath << ": " << I.coarse->interiorSidesNote() << std::endl;
   I.segments = std::make_unique<mesh::BoundarySegments>(meshParams.sublist("Boundary Segments"), *I.coarse);
   I.problem = std::make_unique<fem::ProblemData>(deck.sublist("Problem"), *I.segments);
   if (const auto note = I.problem->nearIncompressibility(); !note.empty() && comm->getRank() == 0)
@@ -918,9 +938,11 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     I.problem->checkFiniteOverTime(*d->mesh, I.newmark->timeStep, I.newmark->numSteps());
     // The KKT tolerance is absolute (Contact/KKT Tolerance times the domain diameter): a warning when
     // even the largest initial gap is within 1000 tolerances, so that the contact would be resolved
-    // to fewer than three digits (a problem whose motion is tiny against the domain).
+    // to fewer than three digits (a problem whose motion is tiny against the domain). Not for gaps
+    // that no tolerance could resolve (1000 times the smallest, 1e-14 of the diameter): the body
+    // starts on the obstacle, to rounding.
     const double largest = I.checkInitialGap(*d, u);
-    if (d->qp && largest > 0 && largest < 1000 * d->qp->gapTolerance() && comm->getRank() == 0)
+    if (d->qp && largest >= 1e-11 * I.coarse->diameter() && largest < 1000 * d->qp->gapTolerance() && comm->getRank() == 0)
       std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": the largest initial gap, " << largest
                 << ", is within 1000 times the contact tolerance " << d->qp->gapTolerance()
                 << " (Contact/KKT Tolerance times the domain diameter): the contact is resolved to fewer than "

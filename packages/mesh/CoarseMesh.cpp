@@ -246,14 +246,28 @@ std::shared_ptr<CoarseMesh> CoarseMesh::fromQuads(
   p4est_connectivity_complete(m->conn_);
   if (!p4est_connectivity_is_valid(m->conn_)) SIGNORINI_USER_ERROR(source << ": the cells do not form a valid conforming mesh");
   static const int sideToFace[4] = {2, 1, 3, 0};  // CCW side s joins corners s, s+1
+  long interior = 0;
+  std::ostringstream firstInterior;
   for (const auto& [name, sides] : sideSets) {
     if (sides.empty()) m->emptySets_.insert(name);
     for (const auto& s : sides) {
       if (s[0] < 0 || s[0] >= nt || s[1] < 0 || s[1] > 3)
         SIGNORINI_USER_ERROR(source << ": side set '" << name << "' names a side that does not exist");
-      m->faceSets_[s[0]][sideToFace[s[1]]].push_back(name);
+      const int f = sideToFace[s[1]];
+      m->faceSets_[s[0]][f].push_back(name);
+      const bool boundary = m->conn_->tree_to_tree[4 * s[0] + f] == s[0] && m->conn_->tree_to_face[4 * s[0] + f] == f;
+      if (!boundary && interior++ == 0) {
+        const auto& q = quadsCcw[s[0]];
+        firstInterior << "side set '" << name << "' lists the side from (" << x[q[s[1]]] << ", " << y[q[s[1]]]
+                      << ") to (" << x[q[(s[1] + 1) % 4]] << ", " << y[q[(s[1] + 1) % 4]] << ") of cell " << s[0] + 1
+                      << ", which lies between two cells";
+      }
     }
   }
+  if (interior > 0)
+    m->interiorSidesNote_ = source + ": " + firstInterior.str() +
+                            (interior > 1 ? " (and " + std::to_string(interior - 1) + " more such sides)" : std::string()) +
+                            ": a boundary segment takes boundary edges only, so it is left out";
   return m;
 }
 

@@ -63,6 +63,9 @@ class CoarseMesh {
   /// A warning for the user when vertices of different cells lie at one point (a crack: the forest
   /// leaves the cells unconnected there, as a mesh whose nodes were not merged would); else "".
   const std::string& crackNote() const { return crackNote_; }
+  /// A warning for the user when side sets list sides between two cells (not on the boundary: a
+  /// boundary segment cannot take them, so they are left out); else "".
+  const std::string& interiorSidesNote() const { return interiorSidesNote_; }
   /// Whether the mesh file has a side set of this name without any side (hasSet is false for it).
   bool isEmptySet(const std::string& name) const { return emptySets_.count(name) > 0; }
   /// Where the mesh came from, for messages ("rectangle 16x16" or the file name).
@@ -80,6 +83,7 @@ class CoarseMesh {
   std::vector<std::array<std::vector<std::string>, 4>> faceSets_;
   std::set<std::string> emptySets_;
   std::string crackNote_;
+  std::string interiorSidesNote_;
   std::string source_;
   int levelOffset_ = 0;
 };

@@ -1,6 +1,6 @@
 # run_bad_deck.cmake: runs the signorini driver on NP MPI ranks and checks how it ends.
 #   cmake -DSIGNORINI=... -DMPIEXEC='mpiexec|-n|--oversubscribe' -DNP=2 -DWORK_DIR=... -DWRAPPER=.../rank_status.sh
-#         -DARGS='--output-dir|{OUT}|deck.xml' -DEXPECT_EXIT=1 -DEXPECT_REGEX='re1<AND>re2'
+#         -DARGS='--output-dir|{OUT}|deck.xml' -DEXPECT_EXIT=1 -DEXPECT_REGEX='re1<AND>re2' [-DABSENT_REGEX='re3']
 #         [-DEXPECT_FILES='a.steps.csv|a.e'] [-DBLOCK='a.e|a.cycles.csv'] [-DSEED='a.e|a.e-s.0003']
 #         [-DUNCHANGED='a.e'] [-DTIMEOUT=50] -P run_bad_deck.cmake
 #
@@ -16,7 +16,7 @@
 #    records the exit status of every rank.
 # 3. Checks that EVERY rank exited with EXPECT_EXIT (a crash gives 134/139, a killed or hung
 #    rank gives no status at all), that stdout + stderr match each regular expression in
-#    EXPECT_REGEX (separated by "<AND>") and show no crash, and that the output directory then
+#    EXPECT_REGEX (separated by "<AND>"), none in ABSENT_REGEX, and show no crash, and that the output directory then
 #    holds exactly EXPECT_FILES (non-empty) -- by default nothing at all, not even a .part file.
 cmake_minimum_required(VERSION 3.16)  # policies for -P scripts (IN_LIST)
 foreach(v SIGNORINI MPIEXEC WORK_DIR WRAPPER EXPECT_EXIT)
@@ -115,6 +115,14 @@ if(NOT "${EXPECT_REGEX}" STREQUAL "")
     string(REPLACE "<SEMICOLON>" ";" re "${re}")  # a ";" of the message (tests.cmake)
     if(NOT "${all}" MATCHES "${re}")
       fail("the output does not match the regular expression: ${re}")
+    endif()
+  endforeach()
+endif()
+if(NOT "${ABSENT_REGEX}" STREQUAL "")
+  string(REPLACE "<AND>" ";" regexes "${ABSENT_REGEX}")
+  foreach(re IN LISTS regexes)
+    if("${all}" MATCHES "${re}")
+      fail("the output matches the regular expression it must not: ${re}")
     endif()
   endforeach()
 endif()

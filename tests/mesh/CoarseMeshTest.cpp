@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -124,4 +125,26 @@ TEST(CoarseMesh, RefusesACoordinateThatIsNotANumber) {
   Quads q = square2x2();
   q.y[7] = std::numeric_limits<double>::quiet_NaN();
   EXPECT_TRUE(contains(errorOf(q), "mesh.exo: vertex 8 has a coordinate that is not a finite number")) << errorOf(q);
+}
+
+// A side set that lists a side between two cells (a mesh generator's interface set, or a mistake
+// in the file): the side is left out of every boundary segment, with a note that names it. The
+// crack's sides are boundary sides: no note.
+TEST(CoarseMesh, NotesSideSetEntriesBetweenTwoCells) {
+  const Quads square = square2x2();
+  // Cell 1's side 0 (corners 0-1) is the bottom; its side 1 (corners 1-2) is shared with cell 2.
+  const std::map<std::string, std::vector<std::array<int, 2>>> bottom{{"bottom", {{0, 0}, {1, 0}}}};
+  EXPECT_EQ(mesh::CoarseMesh::fromQuads(square.x, square.y, square.cells, bottom, "mesh.exo")->interiorSidesNote(), "");
+  const std::map<std::string, std::vector<std::array<int, 2>>> mixed{{"bottom", {{0, 0}, {1, 0}, {0, 1}, {2, 0}}}};
+  const auto note = mesh::CoarseMesh::fromQuads(square.x, square.y, square.cells, mixed, "mesh.exo")->interiorSidesNote();
+  EXPECT_EQ(note, "mesh.exo: side set 'bottom' lists the side from (0.5, 0) to (0.5, 0.5) of cell 1, which lies between "
+                  "two cells (and 1 more such sides): a boundary segment takes boundary edges only, so it is left out");
+  Quads crack = square2x2();  // cells 3 and 4 apart from cells 1 and 2: the side between them is a boundary
+  crack.x.push_back(0.0), crack.y.push_back(0.5);
+  crack.x.push_back(0.5), crack.y.push_back(0.5);
+  crack.x.push_back(1.0), crack.y.push_back(0.5);
+  crack.cells[2] = {9, 10, 7, 6};
+  crack.cells[3] = {10, 11, 8, 7};
+  const std::map<std::string, std::vector<std::array<int, 2>>> slit{{"slit", {{0, 2}, {2, 0}}}};
+  EXPECT_EQ(mesh::CoarseMesh::fromQuads(crack.x, crack.y, crack.cells, slit, "mesh.exo")->interiorSidesNote(), "");
 }
