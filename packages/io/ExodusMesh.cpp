@@ -214,7 +214,8 @@ QuadMesh readExodusQuadMesh(const std::string& path) {
       reversed[q] = true;
     } else if (area2 == 0.0) {
       SIGNORINI_USER_ERROR("Exodus II mesh file '" << path << "': element " << q + 1
-                                                   << " has zero area");
+                                                   << " has zero area (its corners on one line, or a cell that "
+                                                      "crosses itself, as a bowtie whose two halves cancel)");
     }
   }
 

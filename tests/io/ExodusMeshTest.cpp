@@ -412,6 +412,13 @@ TEST_F(ExodusMeshTest, TriangleBlockIsUserError) {
   expectReadError(path("tri.exo"), {path("tri.exo"), "block 7", "TRI3"});
 }
 
+// A bowtie whose two triangles have equal areas of opposite sign: zero area, and the message says
+// what such a cell may be (a user review found "zero area" alone puzzling for a crossed cell).
+TEST_F(ExodusMeshTest, ACellThatCrossesItselfIsNamed) {
+  writeRawMesh(path("bowtie.exo"), 2, {0, 1, 1, 0}, {0, 1, 0, 1}, {}, "QUAD4", 4, {1, 2, 3, 4});
+  expectReadError(path("bowtie.exo"), {path("bowtie.exo"), "element 1 has zero area", "crosses itself"});
+}
+
 TEST_F(ExodusMeshTest, ThreeDimensionalMeshIsUserError) {
   writeRawMesh(path("hex.exo"), 3, {0, 1, 1, 0, 0, 1, 1, 0}, {0, 0, 1, 1, 0, 0, 1, 1},
                {0, 0, 0, 0, 1, 1, 1, 1}, "HEX8", 8, {1, 2, 3, 4, 5, 6, 7, 8});
