@@ -584,7 +584,10 @@ struct Simulation::Impl {
       if ((gap[j] - gbar[j]) / len[j] < -d.qp->gapTolerance()) {
         const auto& mp = d.coupling->segmentMidpoint()[j];
         SIGNORINI_USER_ERROR("Problem/Initial Displacement penetrates the obstacle at t = 0: the mean gap on the contact "
-                             "segment at (" << mp[0] << ", " << mp[1] << ") is " << (gap[j] - gbar[j]) / len[j]);
+                             "segment at (" << mp[0] << ", " << mp[1] << ") is " << (gap[j] - gbar[j]) / len[j]
+                                            << "; the constraint holds in the means over the segments of the initial "
+                                               "state on the mesh (one that follows a concave obstacle exactly lies "
+                                               "below it between the nodes): lift it there by at least that much");
       }
       largest = std::max(largest, (gap[j] - gbar[j]) / len[j]);
     }
