@@ -39,6 +39,7 @@
 #include "Newmark.hpp"
 #include "PhaseTimers.hpp"
 #include "ProblemData.hpp"
+#include "Q1Kernels.hpp"
 #include "ElasticityAssembler.hpp"
 #include "Q1Assembler.hpp"
 #include "MeshTransfer.hpp"
@@ -719,8 +720,8 @@ void Simulation::checkInitialGapOnRefinements(int finerLevels, const std::string
   const int nc = I.problem->components();
   const auto& u0 = I.problem->initialDisplacement[nc == 1 ? 0 : I.problem->contactComponent];
   const double sign = nc == 1 ? 1.0 : I.problem->contactSign;
-  static const double gauss[3] = {0.5 - 0.5 * std::sqrt(0.6), 0.5, 0.5 + 0.5 * std::sqrt(0.6)};
-  static const double weight[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+  const auto& gauss = fem::kGauss3Point;
+  const auto& weight = fem::kGauss3Weight;
   std::ostringstream error;
   for (const auto& be : d.mesh->boundaryEdges()) {
     if (!(be.segments & I.problem->contactMask) || !error.str().empty()) continue;

@@ -25,8 +25,8 @@
 namespace signorini::estimate {
 
 /// 3-point Gauss rule on [0,1] (exact for quintics).
-constexpr double kG3[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
-constexpr double kW3[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+inline constexpr const auto& kG3 = fem::kGauss3Point;
+inline constexpr const auto& kW3 = fem::kGauss3Weight;
 
 /// Longest diagonal of a cell (h_K).
 KOKKOS_INLINE_FUNCTION double cellDiameter(const double X[4][2]) {

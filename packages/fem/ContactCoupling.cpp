@@ -14,14 +14,9 @@
 #include "Error.hpp"
 #include "ReproducibleSum.hpp"
 #include "MpiComm.hpp"
+#include "Q1Kernels.hpp"
 
 namespace signorini::fem {
-namespace {
-
-constexpr double kGauss3Point[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
-
-
-}  // namespace
 
 ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask, SegmentSize size,
                                  const std::vector<char>& dirichlet, const Unknowns& unknowns)

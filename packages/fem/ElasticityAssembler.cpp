@@ -256,8 +256,8 @@ std::pair<double, double> ElasticityAssembler::errorNorms(const Vector& uOwned, 
   toOverlap(uOwned, u);
   auto uh = u.getLocalViewHost(Tpetra::Access::ReadOnly);
   const auto& X = mesh_.cornerCoordsHost;
-  static const double gp[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
-  static const double gw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+  const auto& gp = kGauss3Point;
+  const auto& gw = kGauss3Weight;
   const double eps = 1e-6 * mesh_.hMin();
   double l2 = 0, h1 = 0;
   std::string bad;  // the first sample of the exact solution that is not a finite number

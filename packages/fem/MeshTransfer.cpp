@@ -14,8 +14,6 @@
 
 namespace signorini::fem {
 namespace {
-constexpr double kGp[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
-constexpr double kGw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
 
 /// The determinant of tree t's map if it is constant (parallelogram trees, every rectangle), else NaN.
 double constantJacobianDeterminant(const mesh::CoarseMesh& coarse, int t) {
@@ -116,8 +114,8 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
         const auto& R = Q.size < K.size ? Q : K;  // the cell of the common refinement
         for (int i = 0; i < 3; ++i)
           for (int j = 0; j < 3; ++j) {
-            const double s = R.s0 + kGp[i] * R.size, r = R.r0 + kGp[j] * R.size;
-            const double w = kGw[i] * kGw[j] * R.size * R.size * coarse_.jacobianDeterminant(K.tree, s, r);
+            const double s = R.s0 + kGauss3Point[i] * R.size, r = R.r0 + kGauss3Point[j] * R.size;
+            const double w = kGauss3Weight[i] * kGauss3Weight[j] * R.size * R.size * coarse_.jacobianDeterminant(K.tree, s, r);
             double N[4], dNds[4], dNdr[4];
             q1Shape((s - K.s0) / K.size, (r - K.r0) / K.size, N, dNds, dNdr);
             for (int f = 0; f < nf; ++f) {

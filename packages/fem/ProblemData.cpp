@@ -201,7 +201,7 @@ void ProblemData::checkFiniteOverTime(const mesh::Q1Mesh& mesh, double timeStep,
   // the error norms at their 3x3 ones with the central differences' neighbours
   // (Assembler::errorNorms), the boundary data at their edges' Gauss points.
   const auto& X = mesh.cornerCoordsHost;
-  constexpr double gauss3[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
+  const auto& gauss3 = kGauss3Point;
   const double eps = 1e-6 * mesh.hMin();
   auto pointOf = [&](LO e, double s, double r) {
     double N[4], ds[4], dr[4];

@@ -344,8 +344,8 @@ std::pair<double, double> Q1Assembler::errorNorms(const Vector& uOwned, const co
   const auto& X = mesh_.cornerCoordsHost;
   const auto& dofs = mesh_.cornerDofsHost;
   const auto& wts = mesh_.cornerWeightsHost;
-  static const double gp[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
-  static const double gw[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+  const auto& gp = kGauss3Point;
+  const auto& gw = kGauss3Weight;
   const double eps = 1e-6 * mesh_.hMin();
   double l2 = 0, h1 = 0;
   std::vector<double> cellL2, cellH1;  // per cell, for reproducible sums
