@@ -21,15 +21,15 @@
 #include <mpi.h>
 #include <p4est_config.h>
 
-#include "Allocator.hpp"
-#include "DeckReader.hpp"
-#include "Error.hpp"
-#include "Interrupt.hpp"
-#include "OutputStaging.hpp"
-#include "ProblemData.hpp"
-#include "ParameterTools.hpp"
-#include "PhaseTimers.hpp"
-#include "AdaptiveSimulation.hpp"
+#include "signorini/core/Allocator.hpp"
+#include "signorini/io/DeckReader.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/Interrupt.hpp"
+#include "signorini/io/OutputStaging.hpp"
+#include "signorini/fem/ProblemData.hpp"
+#include "signorini/core/ParameterTools.hpp"
+#include "signorini/core/PhaseTimers.hpp"
+#include "signorini/adapt/AdaptiveSimulation.hpp"
 
 namespace {
 

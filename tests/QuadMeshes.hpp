@@ -14,9 +14,9 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
-#include "CoarseMesh.hpp"
-#include "ExodusMesh.hpp"
-#include "Types.hpp"
+#include "signorini/mesh/CoarseMesh.hpp"
+#include "signorini/io/ExodusMesh.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::test {
 

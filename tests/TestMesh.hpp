@@ -6,12 +6,12 @@
 
 #include <Tpetra_Core.hpp>
 
-#include "BoundarySegments.hpp"
-#include "CoarseMesh.hpp"
-#include "Forest.hpp"
-#include "MpiComm.hpp"
-#include "Q1Mesh.hpp"
-#include "ReproducibleSum.hpp"
+#include "signorini/mesh/BoundarySegments.hpp"
+#include "signorini/mesh/CoarseMesh.hpp"
+#include "signorini/mesh/Forest.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/mesh/Q1Mesh.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 namespace signorini::test {
 

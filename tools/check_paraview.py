@@ -12,7 +12,8 @@ step table:
   - at every time the mesh (points, cells, coordinates) is that of the file holding the time,
     and its cells are the table's `cells`;
   - the nodal variables (u, v, a; elasticity's u_x, u_y, ... as the vectors u, v, a), the cell
-    variables (level; indicator in adaptive runs) and, on the side set `contact`, lambda and gap
+    variables (level; indicator in adaptive runs; the stresses sigma_xx, sigma_yy, sigma_xy,
+    sigma_zz and von_mises for elasticity) and, on the side set `contact`, lambda and gap
     equal the file's values bit for bit; the side set's edges are boundary edges of the mesh;
     min/max lambda and min gap are the table's, and -sum lambda |E| its contact_force;
   - every column of the table but step, t and the timings is a global variable whose value at
@@ -324,6 +325,10 @@ for want in ("u", "v", "a"):
         fail("%s: no nodal variable %s (nodal: %s)" % (file_steps[0].path, want, list(file_steps[0].nodal)))
 if "level" not in file_steps[0].cell:
     fail("%s: no cell variable level" % file_steps[0].path)
+elastic = any(len(members) > 1 for members in nodal_groups.values())
+for name in ("sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz", "von_mises") if elastic else ():
+    if name not in file_steps[0].cell:
+        fail("%s: no cell variable %s in an elasticity run" % (file_steps[0].path, name))
 if adaptive != ("indicator" in file_steps[0].cell):
     fail("%s: cell variable indicator %s in a%s run" % (file_steps[0].path, "missing" if adaptive else "present",
                                                         "n adaptive" if adaptive else " non-adaptive"))

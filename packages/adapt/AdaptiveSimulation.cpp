@@ -1,4 +1,4 @@
-#include "AdaptiveSimulation.hpp"
+#include "signorini/adapt/AdaptiveSimulation.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -15,19 +15,19 @@
 
 #include <Tpetra_Vector.hpp>
 
-#include "CsvWriter.hpp"
-#include "Error.hpp"
-#include "StringTools.hpp"
-#include "Interrupt.hpp"
-#include "MpiComm.hpp"
-#include "OutputStaging.hpp"
-#include "JacobiCG.hpp"
-#include "Marking.hpp"
-#include "PhaseTimers.hpp"
-#include "ElasticityEstimator.hpp"
-#include "ExodusMesh.hpp"
-#include "ResidualEstimator.hpp"
-#include "TemporalRegularisation.hpp"
+#include "signorini/io/CsvWriter.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/StringTools.hpp"
+#include "signorini/core/Interrupt.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/io/OutputStaging.hpp"
+#include "signorini/solvers/JacobiCG.hpp"
+#include "signorini/adapt/Marking.hpp"
+#include "signorini/core/PhaseTimers.hpp"
+#include "signorini/estimate/ElasticityEstimator.hpp"
+#include "signorini/io/ExodusMesh.hpp"
+#include "signorini/estimate/ResidualEstimator.hpp"
+#include "signorini/mesh/TemporalRegularisation.hpp"
 
 namespace signorini::adapt {
 namespace {
@@ -142,7 +142,8 @@ std::string keysSetWithoutEffect(const core::ParameterList& deck, const std::str
 
 /// Settings that are valid one by one but cannot work together: user errors naming the keys. With
 /// Strategy = none the Adaptivity and Estimator keys the deck sets have no effect, with Strategy =
-/// uniform the marking's and Transfer, with Compute S1 = false its tolerance: a warning lists them.
+/// uniform the marking's and Transfer, with Compute S1 = false s1's tolerance and length scale: a
+/// warning lists them.
 void checkAdaptivitySettings(const core::ParameterList& deck, const std::string& deckPath, const Comm& comm) {
   const auto& a = deck.sublist("Adaptivity");
   const std::string strategy = a.get<std::string>("Strategy");
@@ -159,7 +160,9 @@ void checkAdaptivitySettings(const core::ParameterList& deck, const std::string&
   }
   if (!deck.sublist("Estimator").get<bool>("Compute S1"))
     warn("Estimator/Compute S1 = false",
-         keysSetWithoutEffect(deck, "Estimator", [](const std::string& k) { return k == "S1 Relative Tolerance"; }));
+         keysSetWithoutEffect(deck, "Estimator", [](const std::string& k) {
+           return k == "S1 Relative Tolerance" || k == "S1 Length Scale";
+         }));
   if (strategy == "uniform")
     warn("Adaptivity/Strategy = uniform refines every cell", keysSetWithoutEffect(deck, "Adaptivity", [](const std::string& k) {
            // (every step of a cycle has the same mesh: nothing is transferred)

@@ -1,20 +1,17 @@
 #pragma once
 /// \file AdaptiveSimulation.hpp
-/// Paper Algorithm 5.1 (DESIGN 1.3): cycles of whole passes over [0, T]; after step n of cycle l
-/// the estimator eta^n_l marks cells of T^n_l, which refined and 2:1 balanced (Algorithm 5.2)
-/// becomes T^n_{l+1}; after each pass the step meshes are regularised in time (Algorithm 5.3).
-/// Strategy "uniform" marks every cell, so uniform comparison runs use the same driver; strategy
-/// "none" runs one pass on the deck's mesh without the estimator.
+/// The adaptive driver of paper Algorithm 5.1 (AdaptiveSimulation) and its per-cycle summary (CycleSummary).
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "Simulation.hpp"
+#include "signorini/dynamics/Simulation.hpp"
 
 namespace signorini::adapt {
 
+/// The totals of one cycle of Algorithm 5.1: one row of \<basename\>.cycles.csv.
 struct CycleSummary {
-  int cycle;
+  int cycle;             ///< cycle index l (0: the deck's mesh)
   long long totalDofs;   ///< sum over the steps of the unknowns of T^n
   double eta;            ///< max_n eta^n
   double wallSeconds;    ///< the cycle's pass with Algorithm 5.3 after it (cycles.csv's wall_seconds) [s]
@@ -25,14 +22,25 @@ struct CycleSummary {
   long meshRebuilds;       ///< steps whose mesh differed from the previous step's (operators rebuilt)
 };
 
+/// Paper Algorithm 5.1 (DESIGN 1.3): cycles of whole passes over [0, T]; after step n of cycle l the estimator eta^n_l
+/// marks cells of T^n_l, which refined and 2:1 balanced (Algorithm 5.2) become T^n_{l+1}; after each pass the step
+/// meshes are regularised in time (Algorithm 5.3). Strategy "uniform" marks every cell (the comparison runs), "none"
+/// runs one pass on the deck's mesh without the estimator. Owns a copy of the deck and its dynamics::Simulation.
 class AdaptiveSimulation {
  public:
-  /// The whole deck: Simulation's sublists plus "Adaptivity" and "Estimator".
+  /// The valid parameter list of the whole deck, with defaults, doc strings and validators: the sublists of
+  /// dynamics::Simulation::getValidParameters() plus "Adaptivity" and "Estimator".
   static core::ParameterList getValidParameters();
+  /// Checks the settings that conflict (core::UserError naming the keys; a warning on rank 0 for keys without
+  /// effect) and builds the dynamics::Simulation, which keeps \p comm; writes nothing.
+  /// \param deck      validated deck (core::validateDeck with getValidParameters()); copied.
+  /// \param deckPath  the deck's file (messages, relative mesh files, the default basename).
+  /// \param outputDir overrides Output/Directory when not empty.
+  /// \param comm      the run's communicator. Collective over it.
   AdaptiveSimulation(const core::ParameterList& deck, const std::string& deckPath, const std::string& outputDir,
                      RCP<const Comm> comm);
   ~AdaptiveSimulation();
-  /// Runs all cycles; writes <basename>.cycles.csv and per-cycle step tables and results.
+  /// Runs all cycles; writes \<basename\>.cycles.csv and per-cycle step tables and results.
   dynamics::RunSummary run();
   /// What run() will do, in a few lines (steps, unknowns of the initial mesh, cycles and
   /// strategy, output base): the driver's --check prints it.
@@ -41,6 +49,7 @@ class AdaptiveSimulation {
   const std::string& outputBase() const;
   /// The deck as the run uses it (dynamics::Simulation::deck()).
   const core::ParameterList& deck() const;
+  /// The cycles run() has completed, in order (empty before run()).
   const std::vector<CycleSummary>& cycles() const { return cycles_; }
 
  private:

@@ -1,4 +1,4 @@
-#include "Marking.hpp"
+#include "signorini/adapt/Marking.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 
 #include <Teuchos_DefaultMpiComm.hpp>
 
-#include "Error.hpp"
-#include "ReproducibleSum.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 namespace signorini::adapt {
 namespace {

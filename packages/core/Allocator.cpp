@@ -1,4 +1,4 @@
-#include "Allocator.hpp"
+#include "signorini/core/Allocator.hpp"
 
 #include <cstdlib>
 

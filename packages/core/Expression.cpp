@@ -1,11 +1,11 @@
-#include "Expression.hpp"
+#include "signorini/core/Expression.hpp"
 
 #include <cmath>
 #include <sstream>
 #include <muParser.h>
 
-#include "Error.hpp"
-#include "StringTools.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/StringTools.hpp"
 
 namespace signorini::core {
 

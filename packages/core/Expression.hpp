@@ -16,10 +16,13 @@ class Expression {
   /// Throws core::UserError if the text does not parse, uses a variable other than x, y, t,
   /// or evaluates to NaN/inf at (0,0,0).
   Expression(const std::string& text, const std::string& where);
+  /// Parses other's text again (each Expression owns its parser).
   Expression(const Expression& other);
+  /// Parses other's text again (each Expression owns its parser).
   Expression& operator=(const Expression& other);
   ~Expression();
 
+  /// f(x, y, t). Not thread-safe: the parser's variables are set for each call.
   double operator()(double x, double y, double t) const;
   /// f(x, y, t); the first value that is not a finite number is described in \p bad ("<where>:
   /// evaluates to nan at (x, y), t = ..."), for core::throwFirstUserError() after the sampling.
@@ -32,6 +35,7 @@ class Expression {
   bool isTimeIndependent() const { return timeIndependent_; }
   /// True if the expression does not use y.
   bool isIndependentOfY() const { return yIndependent_; }
+  /// The expression as the deck gives it.
   const std::string& text() const { return text_; }
 
  private:
@@ -50,13 +54,19 @@ class ExpressionList {
   /// Throws core::UserError naming \p where for a wrong number of components or a bad expression.
   ExpressionList(const std::string& text, const std::string& where, int components = 1);
 
+  /// Number of components.
   int size() const { return static_cast<int>(items_.size()); }
+  /// Component \p c (throws std::out_of_range outside [0, size())).
   const Expression& operator[](int c) const { return items_.at(static_cast<size_t>(c)); }
   /// The single component of a scalar field (asserts size() == 1).
   const Expression& scalar() const;
+  /// scalar(): a scalar field used as an Expression.
   operator const Expression&() const { return scalar(); }
+  /// scalar()(x, y, t).
   double operator()(double x, double y, double t) const { return scalar()(x, y, t); }
+  /// True if every component is constant (Expression::isConstant()).
   bool isConstant() const;
+  /// The whole text as the deck gives it.
   const std::string& text() const { return text_; }
 
  private:

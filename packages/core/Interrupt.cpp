@@ -1,4 +1,4 @@
-#include "Interrupt.hpp"
+#include "signorini/core/Interrupt.hpp"
 
 #include <time.h>
 #include <unistd.h>

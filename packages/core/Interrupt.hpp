@@ -3,19 +3,21 @@
 /// Ctrl-C (SIGINT), SIGTERM, SIGHUP and SIGPIPE end a run cleanly: the handler only records the
 /// signal, the time stepper checks at every step (and the runs before their files get their
 /// final names) on all ranks together and throws Interrupted, and the run's output staging
-/// removes its files on the way out (io::OutputStaging). A second SIGINT, SIGTERM or SIGHUP more
-/// than a second after the first ends the process at once (the default action); copies within a
-/// second (a signal to the process and to its group) count as one.
+/// removes its files on the way out (io::OutputStaging). A second SIGINT, SIGTERM or SIGHUP ends the
+/// process at once (the default action), except a copy of the first within a second (a signal to
+/// the process and to its group), which counts as one; SIGPIPE never ends it at once.
 #include <stdexcept>
 
-#include "Types.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::core {
 
-/// Thrown on every rank when a rank received SIGINT or SIGTERM.
+/// Thrown on every rank when a rank received SIGINT, SIGTERM, SIGHUP or SIGPIPE.
 class Interrupted : public std::runtime_error {
  public:
+  /// The message names \p signal ("interrupted by signal 2 (Interrupt)").
   explicit Interrupted(int signal);
+  /// The signal number (throwIfInterrupted(): the largest over the ranks that received one).
   int signal() const { return signal_; }
 
  private:

@@ -1,4 +1,4 @@
-#include "MpiComm.hpp"
+#include "signorini/core/MpiComm.hpp"
 
 #include <chrono>
 #include <iostream>
@@ -9,7 +9,7 @@
 
 #include <Teuchos_DefaultMpiComm.hpp>
 
-#include "Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini::core {
 

@@ -7,7 +7,7 @@
 
 #include <mpi.h>
 
-#include "Types.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::core {
 
@@ -40,12 +40,16 @@ double memoryPerRank(const Comm& comm);
 /// The MPI datatype of T (int, long long, double, char).
 template <class T>
 MPI_Datatype mpiType();
+/// MPI_INT.
 template <>
 inline MPI_Datatype mpiType<int>() { return MPI_INT; }
+/// MPI_LONG_LONG.
 template <>
 inline MPI_Datatype mpiType<long long>() { return MPI_LONG_LONG; }
+/// MPI_DOUBLE.
 template <>
 inline MPI_Datatype mpiType<double>() { return MPI_DOUBLE; }
+/// MPI_CHAR.
 template <>
 inline MPI_Datatype mpiType<char>() { return MPI_CHAR; }
 
@@ -66,8 +70,8 @@ std::vector<T> allGatherv(MPI_Comm comm, const std::vector<T>& mine) {
 /// [offsets[r], offsets[r + 1]).
 template <class T>
 struct Exchanged {
-  std::vector<T> values;
-  std::vector<int> offsets;
+  std::vector<T> values;     ///< the received values, by source rank
+  std::vector<int> offsets;  ///< one entry per rank and the end: rank r's values start at offsets[r]
 };
 
 /// All-to-all exchange: send[sendOffsets[r] .. sendOffsets[r + 1]) goes to rank r (\p sendOffsets:

@@ -1,4 +1,4 @@
-#include "ParameterTools.hpp"
+#include "signorini/core/ParameterTools.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -10,8 +10,8 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "Error.hpp"
-#include "StringTools.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/StringTools.hpp"
 
 namespace signorini::core {
 namespace {

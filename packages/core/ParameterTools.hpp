@@ -12,8 +12,9 @@
 
 namespace signorini::core {
 
-using ParameterList = Teuchos::ParameterList;
+using ParameterList = Teuchos::ParameterList;  ///< decks, sublists and their valid lists
 
+/// +infinity: "no upper bound" for addDouble().
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 /// A double entry valid in [min, max].
@@ -22,6 +23,7 @@ void addDouble(ParameterList& valid, const std::string& name, double def, const 
 /// An int entry valid in [min, max].
 void addInt(ParameterList& valid, const std::string& name, int def, const std::string& doc,
             int min = std::numeric_limits<int>::min(), int max = std::numeric_limits<int>::max());
+/// A bool entry.
 void addBool(ParameterList& valid, const std::string& name, bool def, const std::string& doc);
 /// A free string (expressions, file names, lists); its consumer checks the content.
 void addString(ParameterList& valid, const std::string& name, const std::string& def,
@@ -57,6 +59,7 @@ void printParameters(std::ostream& os, const ParameterList& valid);
 enum class NumberText { valid, notANumber, outOfRange };
 /// \p value is set when the text is valid. A double never counts as out of range (1e999 reads as inf).
 NumberText readDouble(const std::string& text, double& value);
+/// The same for an int (base 10): out of range beyond the limits of int.
 NumberText readInt(const std::string& text, int& value);
 /// A bool as a deck or --set may write it: true/false, yes/no or 1/0 in any case, blanks around it
 /// allowed (Teuchos' XML reader takes the same words in any case, without blanks).

@@ -1,4 +1,4 @@
-#include "PhaseTimers.hpp"
+#include "signorini/core/PhaseTimers.hpp"
 
 #include <iostream>
 #include <streambuf>

@@ -1,4 +1,4 @@
-#include "ReproducibleLinearAlgebra.hpp"
+#include "signorini/core/ReproducibleLinearAlgebra.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,8 +11,8 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
-#include "Error.hpp"
-#include "ReproducibleSum.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 namespace signorini::core {
 

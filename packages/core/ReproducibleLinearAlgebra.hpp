@@ -6,7 +6,7 @@
 #include <array>
 #include <vector>
 
-#include "Types.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::core {
 

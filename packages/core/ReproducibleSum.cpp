@@ -1,4 +1,4 @@
-#include "ReproducibleSum.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 #include <Teuchos_CommHelpers.hpp>
 

@@ -21,8 +21,8 @@
 #include <cstdint>
 #include <cstring>
 
-#include "Error.hpp"
-#include "MpiComm.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
 
 #ifdef __FAST_MATH__
 #error "reproducible sums need value-safe floating point: do not build with -ffast-math"
@@ -33,6 +33,7 @@ namespace signorini::core {
 namespace detail {
 /// Splitting constants 1.5 * 2^(52 - 27 (f + 1)): (sigma + t) - sigma rounds t to a multiple of 2^(-27 (f + 1)).
 inline constexpr double kFoldSigma[3] = {1.5 * 33554432.0, 1.5 * 0.25, 1.5 * 0.25 / 134217728.0};
+/// Most terms of one reproducible sum over all ranks (2^26; asserted).
 inline constexpr std::size_t kMaxTerms = std::size_t(1) << 26;
 
 /// The exponent e with |t| < 2^e for every term bounded by \p largest (> 0, finite), at least
@@ -54,7 +55,8 @@ inline void addFolded(double t, double* folds) {
 /// Short sums (at most 64 terms, a matrix row): two parts, multiples of 2^-46 and 2^-92, whose sums
 /// of 64 terms stay exact (constants 1.5 * 2^(52 - 46 (f + 1))); the error is below 64 2^-93 max|t|.
 inline constexpr std::size_t kMaxShortTerms = 64;
-inline constexpr double kShortFoldSigma[2] = {1.5 * 64.0, 1.5 / 1099511627776.0};
+inline constexpr double kShortFoldSigma[2] = {1.5 * 64.0, 1.5 / 1099511627776.0};  ///< the short sums' constants
+/// Adds the two parts of \p t (|t| < 1) to folds[0..1] (as addFolded()).
 inline void addFoldedShort(double t, double* folds) {
   for (int f = 0; f < 2; ++f) {
     const double part = (kShortFoldSigma[f] + t) - kShortFoldSigma[f];
@@ -224,6 +226,7 @@ void reproducibleSumsGivenLargest(const Comm& comm, int count, std::size_t n, co
 /// solvers and assemblers that support it order every sum so that its bits do not depend on the
 /// number of ranks (docs/reproducibility.md lists which do). Set once by the driver from the deck.
 void setReproducibleArithmetic(bool on);
+/// Whether partition-independent arithmetic is on (setReproducibleArithmetic()).
 bool reproducibleArithmetic();
 
 /// One reproducible sum of \p n local terms.

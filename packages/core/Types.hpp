@@ -13,20 +13,20 @@
 
 namespace signorini {
 
-using Scalar = double;
-using Map = Tpetra::Map<>;
-using LO = Map::local_ordinal_type;
-using GO = Map::global_ordinal_type;
-using Node = Map::node_type;
-using Vector = Tpetra::Vector<Scalar, LO, GO, Node>;
-using MultiVector = Tpetra::MultiVector<Scalar, LO, GO, Node>;
-using CrsMatrix = Tpetra::CrsMatrix<Scalar, LO, GO, Node>;
-using Operator = Tpetra::Operator<Scalar, LO, GO, Node>;
-using Comm = Teuchos::Comm<int>;
+using Scalar = double;                                         ///< matrix and vector entries
+using Map = Tpetra::Map<>;                                     ///< distribution of rows/entries over the ranks
+using LO = Map::local_ordinal_type;                            ///< local (per-rank) index
+using GO = Map::global_ordinal_type;                           ///< global index
+using Node = Map::node_type;                                   ///< Tpetra's Kokkos node (Trilinos' default)
+using Vector = Tpetra::Vector<Scalar, LO, GO, Node>;           ///< distributed vector
+using MultiVector = Tpetra::MultiVector<Scalar, LO, GO, Node>; ///< distributed set of vectors
+using CrsMatrix = Tpetra::CrsMatrix<Scalar, LO, GO, Node>;     ///< distributed sparse matrix
+using Operator = Tpetra::Operator<Scalar, LO, GO, Node>;       ///< linear operator (e.g. a preconditioner)
+using Comm = Teuchos::Comm<int>;                               ///< the MPI communicator as Teuchos wraps it
 
-using ExecSpace = Node::execution_space;
-using MemSpace = Node::memory_space;
-using DeviceType = Node::device_type;
+using ExecSpace = Node::execution_space;  ///< where the Kokkos kernels run
+using MemSpace = Node::memory_space;      ///< where the Kokkos views live
+using DeviceType = Node::device_type;     ///< ExecSpace and MemSpace together
 /// Scatter-adds from assembly kernels need atomics only where cells run concurrently.
 #ifdef KOKKOS_ENABLE_SERIAL
 inline constexpr bool kAtomicScatter = !std::is_same_v<ExecSpace, Kokkos::Serial>;
@@ -34,6 +34,7 @@ inline constexpr bool kAtomicScatter = !std::is_same_v<ExecSpace, Kokkos::Serial
 inline constexpr bool kAtomicScatter = true;
 #endif
 
+/// Teuchos' reference-counted pointer (shared ownership).
 template <class T>
 using RCP = Teuchos::RCP<T>;
 

@@ -1,13 +1,16 @@
 #pragma once
 /// \file Newmark.hpp
-/// Newmark time stepping (paper (3.1)-(3.2); alpha is Newmark's gamma): parameters from the
-/// deck's "Time Integration" sublist and the velocity/acceleration updates.
-#include "ParameterTools.hpp"
-#include "Types.hpp"
+/// Newmark time stepping, paper (3.1)-(3.2).
+#include "signorini/core/ParameterTools.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::dynamics {
 
+/// The Newmark scheme of paper (3.1)-(3.2) (alpha is Newmark's gamma): the parameters of the deck's "Time Integration"
+/// sublist and the predictor and velocity/acceleration updates on caller-owned vectors. A plain value type.
 struct Newmark {
+  /// The valid "Time Integration" sublist (Time Step, Final Time, Alpha, Beta, Contact Stabilisation) with
+  /// defaults, doc strings and validators.
   static core::ParameterList getValidParameters();
   /// Reads a validated "Time Integration" sublist; throws core::UserError unless
   /// 2 beta >= alpha >= 1/2 (unconditional stability), naming the keys.
@@ -15,9 +18,10 @@ struct Newmark {
 
   double timeStep;   ///< k [time]
   double finalTime;  ///< T [time]
-  double alpha;      ///< Newmark gamma (paper alpha)
-  double beta;
+  double alpha;      ///< Newmark gamma (paper alpha), in [1/2, 2 beta]
+  double beta;       ///< Newmark beta (paper beta); the step matrix is M + beta k^2 K
   bool stabilised = false;  ///< project the predictor onto the admissible set before each step
+  /// Number of steps N = T / k (rounded to the nearest integer).
   int numSteps() const;
 
   /// Predictor u^{n-1} + k v^{n-1} + (1/2 - beta) k^2 a^{n-1}; F^n = M * predictor + beta k^2 (loads).

@@ -1,11 +1,11 @@
-#include "ResultWriter.hpp"
+#include "signorini/dynamics/ResultWriter.hpp"
 
 #include <unordered_map>
 
 #include <Tpetra_Vector.hpp>
 
-#include "Error.hpp"
-#include "MpiComm.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
 
 namespace signorini::dynamics {
 namespace {

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "ExodusMesh.hpp"
-#include "Q1Mesh.hpp"
+#include "signorini/io/ExodusMesh.hpp"
+#include "signorini/mesh/Q1Mesh.hpp"
 
 namespace signorini::dynamics {
 

@@ -1,4 +1,4 @@
-#include "Simulation.hpp"
+#include "signorini/dynamics/Simulation.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -21,29 +21,29 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "CoarseSchurCorrection.hpp"
-#include "ContactCoupling.hpp"
-#include "ContactQP.hpp"
-#include "CsvWriter.hpp"
-#include "OutputStaging.hpp"
-#include "ParameterTools.hpp"
-#include "Error.hpp"
-#include "StringTools.hpp"
-#include "Forest.hpp"
-#include "Interrupt.hpp"
-#include "JacobiCG.hpp"
-#include "ReproducibleLinearAlgebra.hpp"
-#include "ReproducibleSum.hpp"
-#include "LinearSolver.hpp"
-#include "MpiComm.hpp"
-#include "Newmark.hpp"
-#include "PhaseTimers.hpp"
-#include "ProblemData.hpp"
-#include "Q1Kernels.hpp"
-#include "ElasticityAssembler.hpp"
-#include "Q1Assembler.hpp"
-#include "MeshTransfer.hpp"
-#include "ResultWriter.hpp"
+#include "signorini/solvers/CoarseSchurCorrection.hpp"
+#include "signorini/fem/ContactCoupling.hpp"
+#include "signorini/solvers/ContactQP.hpp"
+#include "signorini/io/CsvWriter.hpp"
+#include "signorini/io/OutputStaging.hpp"
+#include "signorini/core/ParameterTools.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/StringTools.hpp"
+#include "signorini/mesh/Forest.hpp"
+#include "signorini/core/Interrupt.hpp"
+#include "signorini/solvers/JacobiCG.hpp"
+#include "signorini/core/ReproducibleLinearAlgebra.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
+#include "signorini/solvers/LinearSolver.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/dynamics/Newmark.hpp"
+#include "signorini/core/PhaseTimers.hpp"
+#include "signorini/fem/ProblemData.hpp"
+#include "signorini/fem/Q1Kernels.hpp"
+#include "signorini/fem/ElasticityAssembler.hpp"
+#include "signorini/fem/Q1Assembler.hpp"
+#include "signorini/fem/MeshTransfer.hpp"
+#include "signorini/dynamics/ResultWriter.hpp"
 
 namespace signorini::dynamics {
 namespace {
@@ -1128,6 +1128,9 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   std::unique_ptr<ResultWriter> exodus;
   std::vector<std::string> cellNames = {"level"};
   if (!options.cellFieldName.empty()) cellNames.push_back(options.cellFieldName);
+  // Elasticity: the stress at the cell centres (ElasticityAssembler::cellCentreStresses).
+  if (nc == 2)
+    for (const char* name : {"sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz", "von_mises"}) cellNames.push_back(name);
   // The step table's columns but the step, the time and the timings are the Exodus files' global variables.
   std::vector<size_t> globalColumns;
   for (size_t c = 0; c < columns.size(); ++c)
@@ -1219,6 +1222,10 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       std::vector<std::vector<double>> cell = {std::vector<double>(d->mesh->cellLevel().begin(), d->mesh->cellLevel().end())};
       if (!options.cellFieldName.empty())
         cell.push_back(extras.cellField.empty() ? std::vector<double>(d->mesh->numLocalCells(), 0.0) : extras.cellField);
+      if (nc == 2) {
+        const auto& elastic = dynamic_cast<const fem::ElasticityAssembler&>(*d->assembler);
+        for (auto& quantity : elastic.cellCentreStresses(uOverlap)) cell.push_back(std::move(quantity));
+      }
       std::vector<int> contactEdges;
       std::vector<std::vector<double>> contact(2);
       if (d->coupling)

@@ -9,14 +9,14 @@
 
 #include <functional>
 
-#include "ContactCoupling.hpp"
-#include "Forest.hpp"
-#include "LinearSolver.hpp"
-#include "OutputStaging.hpp"
-#include "ParameterTools.hpp"
-#include "ProblemData.hpp"
-#include "Q1Assembler.hpp"
-#include "Types.hpp"
+#include "signorini/fem/ContactCoupling.hpp"
+#include "signorini/mesh/Forest.hpp"
+#include "signorini/solvers/LinearSolver.hpp"
+#include "signorini/io/OutputStaging.hpp"
+#include "signorini/core/ParameterTools.hpp"
+#include "signorini/fem/ProblemData.hpp"
+#include "signorini/fem/Q1Assembler.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::dynamics {
 

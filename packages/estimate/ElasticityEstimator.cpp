@@ -2,7 +2,7 @@
 /// The residual estimator for plane strain elasticity; the same layout as ResidualEstimator.cpp
 /// (cell kernel, face jumps through p4est's face iteration with a ghost layer, boundary edges,
 /// s0, s1) with vector residuals. h_K is the longest diagonal of K.
-#include "ElasticityEstimator.hpp"
+#include "signorini/estimate/ElasticityEstimator.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,10 +13,10 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "Error.hpp"
-#include "EstimatorTools.hpp"
-#include "HarmonicContinuation.hpp"
-#include "Q1Kernels.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/estimate/EstimatorTools.hpp"
+#include "signorini/estimate/HarmonicContinuation.hpp"
+#include "signorini/fem/Q1Kernels.hpp"
 
 namespace signorini::estimate {
 
@@ -246,9 +246,10 @@ EstimatorResult ElasticityEstimator::estimate(const ElasticityEstimatorInput& in
     std::vector<char> fixedNodes(dirichlet.size() / 2);
     for (size_t i = 0; i < fixedNodes.size(); ++i) fixedNodes[i] = dirichlet[2 * i + comp];
     auto uo = in.u.getLocalViewHost(Tpetra::Access::ReadOnly);
+    const double l = params_.get<double>("S1 Length Scale");
     res.s1 = geometricContactTerm(mesh, problem.contactMask, problem.obstacle, t,
                                   [&](LO i) { return sign * uo(2 * i + comp, 0); }, fixedNodes, nullptr, in.solveSPD,
-                                  &continuation_, in.meshId, in.continuationGuess);
+                                  &continuation_, in.meshId, in.continuationGuess, {}, 1.0 / (l * l));
   }
   if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2 * (lambda + 2 * mu));
   res.eta = res.etaStar + res.s0 + res.s1;

@@ -12,21 +12,21 @@
 #include <p4est_iterate.h>
 #include <Teuchos_CommHelpers.hpp>
 
-#include "CoordinateTable.hpp"
-#include "Error.hpp"
-#include "ReproducibleSum.hpp"
-#include "Q1Kernels.hpp"
-#include "ResidualEstimator.hpp"
-#include "Expression.hpp"
-#include "Forest.hpp"
-#include "Q1Mesh.hpp"
-#include "Types.hpp"
+#include "signorini/mesh/CoordinateTable.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
+#include "signorini/fem/Q1Kernels.hpp"
+#include "signorini/estimate/ResidualEstimator.hpp"
+#include "signorini/core/Expression.hpp"
+#include "signorini/mesh/Forest.hpp"
+#include "signorini/mesh/Q1Mesh.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::estimate {
 
 /// 3-point Gauss rule on [0,1] (exact for quintics).
 inline constexpr const auto& kG3 = fem::kGauss3Point;
-inline constexpr const auto& kW3 = fem::kGauss3Weight;
+inline constexpr const auto& kW3 = fem::kGauss3Weight;  ///< weights of kG3 (sum 1)
 
 /// Longest diagonal of a cell (h_K).
 KOKKOS_INLINE_FUNCTION double cellDiameter(const double X[4][2]) {
@@ -171,18 +171,21 @@ inline double positivePartAlongEdge(const mesh::BoundaryEdge& be, const core::Ex
 /// One cell on one side of a face: its payload, its local index (-1 for a ghost) and its face.
 template <class Payload>
 struct FaceSide {
-  const Payload* data;
-  LO local;
-  int face;
+  const Payload* data;  ///< the cell's payload (not owned)
+  LO local;             ///< local cell index; -1 for a ghost
+  int face;             ///< p4est face of the cell: 0:-x 1:+x 2:-y 3:+y
 };
 
 namespace detail {
+/// The user data of p4est_iterate's face callback in forEachInteriorFace: pointers (not owned) to the payloads of
+/// the local cells and of the face ghosts, and to the function called for each pair of cells across a fine edge.
 template <class Payload, class OnPair>
 struct FaceIteration {
-  const std::vector<Payload>* local;
-  const std::vector<Payload>* ghosts;
-  OnPair* onPair;
+  const std::vector<Payload>* local;   ///< payloads of the local cells (local cell order)
+  const std::vector<Payload>* ghosts;  ///< payloads of the face ghost layer (ghost order)
+  OnPair* onPair;                      ///< called as onPair(A, B), see forEachInteriorFace
 
+  /// The FaceSide of cell \p quadid of tree \p tree (a ghost index if \p isGhost).
   FaceSide<Payload> side(p4est_t* p4est, p4est_topidx_t tree, int face, int8_t isGhost, p4est_locidx_t quadid) const {
     if (isGhost) {
       SIGNORINI_ASSERT(quadid >= 0 && static_cast<size_t>(quadid) < ghosts->size(),
@@ -194,6 +197,7 @@ struct FaceIteration {
     return {&(*local)[e], e, face};
   }
 
+  /// The p4est_iter_face_t callback (\p user: a FaceIteration): skips boundary faces, splits 2:1 faces.
   static void callback(p4est_iter_face_info_t* info, void* user) {
     const auto& it = *static_cast<const FaceIteration*>(user);
     if (info->sides.elem_count != 2) return;  // domain boundary: from Q1Mesh::boundaryEdges()
@@ -323,9 +327,11 @@ void forEachInteriorFace(const mesh::Forest& forest, const std::vector<Payload>&
 /// partition) does not change the bits.
 class CellSums {
  public:
+  /// Sums for \p n cells, all 0; ordered when core::reproducibleArithmetic() is on now.
   explicit CellSums(size_t n) : sum_(n, 0.0), ordered_(core::reproducibleArithmetic()) {
     if (ordered_) terms_.resize(kSlots * n), count_.assign(n, 0);
   }
+  /// Adds \p value to the sum of local cell \p cell.
   void add(LO cell, double value) {
     if (!ordered_) {
       sum_[cell] += value;
@@ -392,8 +398,9 @@ EstimatorResult combineCellTerms(const Volume& volume, const std::vector<double>
 }
 
 /// The "physical" scaling of the estimate of the step equation: eta_* / s, s0 / sqrt(s), the cell
-/// indicators term by term, s = beta k^2 kappa (kappa the stiffness [force / length^(d-2)]: kappa, or
-/// lambda + 2 mu in elasticity). The residual of the step equation divided by beta k^2 is that of
+/// indicators term by term, s = beta k^2 kappa (kappa the stiffness: kappa [force / length] for the
+/// scalar wave, lambda + 2 mu [force / area] in elasticity). The residual of the step equation
+/// divided by beta k^2 is that of
 /// rho u_tt - div(kappa grad u) = f; divided by kappa as well, eta_* estimates the error's gradient
 /// and s0^2 = |<lambda, (g - u_h)_+>| / kappa the product of two displacements: eta_*, s0 and s1 all
 /// come out in units of the displacement, independent of the units of force (DESIGN 1.3-1.4).

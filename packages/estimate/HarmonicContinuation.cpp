@@ -1,4 +1,4 @@
-#include "HarmonicContinuation.hpp"
+#include "signorini/estimate/HarmonicContinuation.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,8 +9,8 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "Error.hpp"
-#include "ReproducibleLinearAlgebra.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/ReproducibleLinearAlgebra.hpp"
 
 namespace signorini::estimate {
 
@@ -113,7 +113,7 @@ double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, cons
                             const fem::Q1Assembler* scalar,
                             const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD,
                             ContinuationCache* cache, long meshId, const Vector* guess,
-                            const std::function<RCP<const CrsMatrix>()>& h1Operator) {
+                            const std::function<RCP<const CrsMatrix>()>& h1Operator, double massWeight) {
   const auto owned = mesh.ownedMap();
   const LO nOwned = static_cast<LO>(owned->getNodeNumElements());
   const std::vector<char> contact = mesh.nodesOnSegments(contactMask);
@@ -141,7 +141,7 @@ double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, cons
     if (cache->full.is_null()) {
       std::unique_ptr<fem::Q1Assembler> own;
       if (!scalar) scalar = (own = std::make_unique<fem::Q1Assembler>(mesh, fixed)).get();
-      cache->full = scalar->assembleOperator(1.0, 1.0, 1.0, 1.0);
+      cache->full = scalar->assembleOperator(massWeight, 1.0, 1.0, 1.0);
     }
     cache->constrained = withPrescribedRows(*cache->full, cache->prescribed);
     cache->last = Teuchos::rcp(new Vector(owned));  // zero: the first guess is the data itself

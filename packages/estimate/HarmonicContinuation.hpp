@@ -2,13 +2,15 @@
 /// \file HarmonicContinuation.hpp
 /// s1 = ||w||_{1/2, Gamma_C} of the paper's Remark 4.1 for nodal boundary data w on Gamma_C,
 /// evaluated as the H^1 norm of the discrete harmonic continuation: the minimiser d of
-/// ||v||_1^2 = int |grad v|^2 + v^2 over the Q1 functions with v = w at the contact nodes and
-/// v = 0 at the fixed (Dirichlet) nodes. Every extension of w bounds s1 from above, so an
+/// ||v||_1^2 = int |grad v|^2 + m v^2 over the Q1 functions with v = w at the contact nodes and
+/// v = 0 at the fixed (Dirichlet) nodes. The paper's norm has m = 1 in the deck's unit of length;
+/// m = 1/l^2 for a length l of the problem makes s1 a length whatever that unit
+/// (Estimator/S1 Length Scale). Every extension of w bounds s1 from above, so an
 /// iterative solve approaches s1 from above.
 #include <functional>
 #include <vector>
 
-#include "Q1Assembler.hpp"
+#include "signorini/fem/Q1Assembler.hpp"
 
 namespace signorini::estimate {
 
@@ -32,13 +34,13 @@ struct ContinuationCache {
 /// assembler whose Dirichlet nodes are \p fixed, or null to build one when it is needed. With a
 /// \p cache and \p meshId >= 0, the operators are built once per mesh and each solve starts from
 /// the previous continuation on the same mesh, or from \p guess (owned nodes) on a new mesh.
-/// \p h1Operator (optional, may return null) supplies K + M with unit coefficients and the fixed
-/// nodes eliminated instead of an assembly.
+/// \p h1Operator (optional, may return null) supplies K + m M with unit coefficients and the fixed
+/// nodes eliminated instead of an assembly; \p massWeight is m (1/length^2 in the deck's units).
 double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, const core::Expression& g, double t,
                             const std::function<double(LO)>& w, const std::vector<char>& fixed,
                             const fem::Q1Assembler* scalar,
                             const std::function<void(const RCP<const CrsMatrix>&, const Vector&, Vector&)>& solveSPD,
                             ContinuationCache* cache = nullptr, long meshId = -1, const Vector* guess = nullptr,
-                            const std::function<RCP<const CrsMatrix>()>& h1Operator = {});
+                            const std::function<RCP<const CrsMatrix>()>& h1Operator = {}, double massWeight = 1.0);
 
 }  // namespace signorini::estimate

@@ -18,7 +18,7 @@
 /// s0^2 = |sum_j lambda_j int_{E_j} (g - u_h)_+ ds| (each rank its own contact edges, summed), and
 /// each fine contact edge's |lambda_j int_E (g - u_h)_+| is added to its cell's indicator (these
 /// shares sum to s0^2 because the multipliers are <= 0).
-#include "ResidualEstimator.hpp"
+#include "signorini/estimate/ResidualEstimator.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -29,10 +29,10 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "Error.hpp"
-#include "EstimatorTools.hpp"
-#include "HarmonicContinuation.hpp"
-#include "Q1Kernels.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/estimate/EstimatorTools.hpp"
+#include "signorini/estimate/HarmonicContinuation.hpp"
+#include "signorini/fem/Q1Kernels.hpp"
 
 namespace signorini::estimate {
 
@@ -156,8 +156,9 @@ core::ParameterList ResidualEstimator::getValidParameters() {
                   "(F_h, phi), whose residuals carry the factor beta k^2 (so eta_* and s0 are 1e-6 and s1 dominates "
                   "eta); \"physical\": the same terms divided by beta k^2 kappa (eta_*) and sqrt(beta k^2 kappa) (s0), "
                   "kappa the stiffness (Problem/Stiffness; elasticity: lambda + 2 mu), i.e. for the equation divided "
-                  "by beta k^2 kappa with the physical multiplier: all three terms in units of the displacement, "
-                  "whatever the units of force, and ordered as in the paper's Fig. 4.1 (s1 smallest)",
+                  "by beta k^2 kappa with the physical multiplier: eta_* and s0 in units of the displacement, "
+                  "whatever the units of force and length (s1 too, with S1 Length Scale a length of the problem), "
+                  "and ordered as in the paper's Fig. 4.1 (s1 smallest)",
                   {"physical", "step"});
   core::addDouble(p, "S1 Relative Tolerance", 1e-2,
                   "Residual tolerance (relative to the right-hand side) of the Jacobi CG that computes the harmonic "
@@ -165,6 +166,14 @@ core::ParameterList ResidualEstimator::getValidParameters() {
                   "1e-2 leaves it at most 0.22% too large on the membrane deck and 0.15% on the bar (1e-3: 4.3e-5, "
                   "3e-2: 1.6%)",
                   1e-14, 0.5);
+  core::addDouble(p, "S1 Length Scale", 1.0,
+                  "The length l (in the deck's unit of length) in the norm of s1: s1 is the smallest "
+                  "(|v|_1^2 + ||v||_0^2 / l^2)^(1/2) over the v with v = (g - u_h)_+ on Gamma_C and v = 0 on Gamma_D. "
+                  "The default 1 is the paper's H^1 norm, whose L2 part carries one more power of length than its "
+                  "gradient part: s1, and with it eta, then change with the unit of length (metres against "
+                  "millimetres) in another proportion than the displacement. A length of the problem (e.g. the "
+                  "domain's diameter) makes s1 a length whatever the unit. The marking leaves s1 out",
+                  1e-100, 1e100);
   return p;
 }
 
@@ -324,17 +333,19 @@ EstimatorResult ResidualEstimator::estimate(const EstimatorInput& in) const {
   EstimatorResult res = combineCellTerms(volHost, edgeTerm, s0Share, s0Terms, *comm);
 
   // --- s1: the harmonic continuation d of the nodal values of (g - u_h)_+ on Gamma_C, i.e. the
-  //     minimiser of ||v||_1^2 = int |grad v|^2 + v^2 with v = 0 on Gamma_D (first) and v = (g - u_h)_+
-  //     at the other contact nodes; s1 = ||d||_1.
+  //     minimiser of ||v||_1^2 = int |grad v|^2 + v^2 / l^2 with v = 0 on Gamma_D (first) and
+  //     v = (g - u_h)_+ at the other contact nodes; s1 = ||d||_1.
   if (in.coupling && params_.get<bool>("Compute S1")) {
+    const double l = params_.get<double>("S1 Length Scale"), massWeight = 1.0 / (l * l);
     auto uo = in.u.getLocalViewHost(Tpetra::Access::ReadOnly);
     res.s1 = geometricContactTerm(mesh, problem.contactMask, problem.obstacle, t, [&](LO i) { return uo(i, 0); },
                                   in.assembler.dirichletFlags(), &in.assembler, in.solveSPD, &continuation_, in.meshId,
                                   in.continuationGuess, [&]() -> RCP<const CrsMatrix> {
                                     if (in.mass.is_null() || in.stiffness.is_null()) return Teuchos::null;
-                                    return fem::combineOnGraph(*in.mass, 1.0 / rho, *in.stiffness, 1.0 / kappa,
-                                                               in.assembler.dirichletFlags());
-                                  });
+                                    return fem::combineOnGraph(*in.mass, massWeight / rho, *in.stiffness,
+                                                               1.0 / kappa, in.assembler.dirichletFlags());
+                                  },
+                                  massWeight);
   }
   if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2 * kappa);
   res.eta = res.etaStar + res.s0 + res.s1;

@@ -1,10 +1,10 @@
-#include "Assembler.hpp"
+#include "signorini/fem/Assembler.hpp"
 
 #include <tuple>
 
 #include <Tpetra_CrsMatrix.hpp>
 
-#include "Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini::fem {
 

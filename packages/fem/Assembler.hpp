@@ -1,18 +1,15 @@
 #pragma once
 /// \file Assembler.hpp
-/// What the time stepper needs from a finite element discretisation on one Q1Mesh, whatever the
-/// number of unknowns per node: the scalar wave equation (Q1Assembler, one unknown per node) or
-/// plane strain elasticity (ElasticityAssembler, two). Unknown c of overlap node i is overlap
-/// entry components() * i + c (owned entries likewise; owned nodes come first in the overlap order).
+/// The discretisation interface of the time stepper (Assembler) and helpers for its vectors and matrices.
 #include <utility>
 #include <vector>
 
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "Expression.hpp"
-#include "ProblemData.hpp"
-#include "Q1Mesh.hpp"
+#include "signorini/core/Expression.hpp"
+#include "signorini/fem/ProblemData.hpp"
+#include "signorini/mesh/Q1Mesh.hpp"
 
 namespace signorini::fem {
 
@@ -36,15 +33,22 @@ inline void addExported(const Vector& overlap, const Tpetra::Export<LO, GO, Node
 RCP<CrsMatrix> combineOnGraph(const CrsMatrix& M, double cm, const CrsMatrix& K, double ck,
                               const std::vector<char>& identityRows);
 
+/// What the time stepper needs from a finite element discretisation on one Q1Mesh, whatever the
+/// number of unknowns per node: the scalar wave equation (Q1Assembler, one unknown per node) or
+/// plane strain elasticity (ElasticityAssembler, two). Unknown c of overlap node i is overlap
+/// entry components() * i + c (owned entries likewise; owned nodes come first in the overlap order).
+/// The implementations keep a reference to their mesh, which must outlive them; each assembly returns a new matrix.
 class Assembler {
  public:
   virtual ~Assembler() = default;
 
+  /// The mesh the assembler was built on (a reference it keeps).
   virtual const mesh::Q1Mesh& mesh() const = 0;
   /// Unknowns per node (1 or 2).
   virtual int components() const = 0;
   /// Owned unknowns (rows of the matrices) and owned + shared unknowns.
   virtual RCP<const Map> ownedMap() const = 0;
+  /// Owned unknowns followed by the shared ones owned by other ranks.
   virtual RCP<const Map> overlapMap() const = 0;
   /// Dirichlet flags on the overlap unknowns.
   virtual const std::vector<char>& dirichletFlags() const = 0;
@@ -77,12 +81,18 @@ class Assembler {
     return {assembleSystem(1.0, 0.0, problem, lumpAt), assembleSystem(0.0, 1.0, problem)};
   }
 
-  /// The step's matrices on one graph: M (mass, lumped at \p lumpAt), K (stiffness) and
-  /// A = M + stiffCoeff K (paper (3.7)), Dirichlet rows and columns the identity in each. A is
-  /// formed from the values of M and K (two assemblies instead of three).
+  /// The step's matrices, on one graph, Dirichlet rows and columns the identity in each.
   struct StepMatrices {
+    /// \var M
+    /// mass matrix M_rho (lumped at the flagged unknowns)
+    /// \var K
+    /// stiffness matrix (K_kappa, or elasticity's)
+    /// \var A
+    /// step matrix A = M + stiffCoeff K
     RCP<CrsMatrix> M, K, A;
   };
+  /// M (mass, lumped at \p lumpAt), K (stiffness) and A = M + stiffCoeff K (paper (3.7); stiffCoeff = beta k^2).
+  /// A is formed from the values of M and K (two assemblies instead of three).
   StepMatrices assembleStepMatrices(double stiffCoeff, const ProblemData& problem,
                                     const std::vector<char>& lumpAt = {}) const;
 

@@ -8,9 +8,9 @@
 
 #include <Tpetra_Map.hpp>
 
-#include "Error.hpp"
-#include "Q1Mesh.hpp"
-#include "Q1Pattern.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/mesh/Q1Mesh.hpp"
+#include "signorini/fem/Q1Pattern.hpp"
 
 namespace signorini::fem {
 
@@ -27,10 +27,15 @@ inline Kokkos::View<int*, DeviceType> deviceFlags(const std::vector<char>& flags
 /// neighbours of overlap node n (itself included) are adjacent[offset[n] .. offset[n] + count[n]),
 /// sorted and distinct (here count[n] = offset[n + 1] - offset[n]).
 struct Q1NodeAdjacency {
+  /// \var offset
+  /// start of node n's neighbours in adjacent (nNodes + 1 entries)
+  /// \var count
+  /// number of node n's neighbours
   std::vector<size_t> offset, count;
-  std::vector<LO> adjacent;
+  std::vector<LO> adjacent;  ///< the neighbours of all nodes, node by node (overlap ids)
 };
 
+/// The Q1NodeAdjacency of the local cells of \p mesh; \p nNodes: overlap nodes (more than any id the cells use).
 inline Q1NodeAdjacency q1NodeAdjacency(const mesh::Q1Mesh& mesh, size_t nNodes) {
   const auto& dofs = mesh.cornerDofsHost;
   const LO nc = mesh.numLocalCells();

@@ -1,4 +1,4 @@
-#include "ContactCoupling.hpp"
+#include "signorini/fem/ContactCoupling.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,10 +11,10 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "Error.hpp"
-#include "ReproducibleSum.hpp"
-#include "MpiComm.hpp"
-#include "Q1Kernels.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/fem/Q1Kernels.hpp"
 
 namespace signorini::fem {
 

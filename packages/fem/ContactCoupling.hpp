@@ -1,19 +1,13 @@
 #pragma once
 /// \file ContactCoupling.hpp
-/// The contact boundary Gamma_C split into multiplier segments E_j (paper Sec. 3.2): H = 2h
-/// following the local mesh size on graded meshes, each segment two sibling fine edges (the halves
-/// of one edge of the parent cells); a lone edge, whose sibling half is refined further, joins the
-/// segment next to it inside that half, so a segment is at most its edges' parent edge and a mesh
-/// and its mirror image get mirrored segments. Or one edge each (H = h). Provides B_ij = int_{E_j} phi_i ds (3.7)-(3.8)
-/// as a Tpetra matrix, its products with replicated multiplier vectors, and the weighted
-/// obstacle gbar_j = int_{E_j} g ds. The segment data (a few hundred numbers) are replicated
-/// on every rank in the same order, independent of the number of ranks.
+/// The multiplier segments of Gamma_C and the coupling matrix B of paper (3.7)-(3.8) (ContactCoupling).
 #include <array>
+#include <utility>
 #include <vector>
 
-#include "Assembler.hpp"
-#include "Expression.hpp"
-#include "Q1Mesh.hpp"
+#include "signorini/fem/Assembler.hpp"
+#include "signorini/core/Expression.hpp"
+#include "signorini/mesh/Q1Mesh.hpp"
 
 namespace signorini::fem {
 
@@ -21,21 +15,40 @@ namespace signorini::fem {
 /// \p components per node, numbered as in fem::Assembler), with \p sign: sign u_c >= g.
 /// Null maps: the mesh's node maps (one unknown per node).
 struct ContactUnknowns {
+  /// \var owned
+  /// owned unknowns (null: the mesh's owned node map)
+  /// \var overlap
+  /// owned + shared unknowns (null: the mesh's overlap node map)
   RCP<const Map> owned, overlap;
+  /// \var components
+  /// unknowns per node
+  /// \var component
+  /// the constrained component c
   int components = 1, component = 0;
-  double sign = 1.0;
+  double sign = 1.0;  ///< +1 or -1: the constraint sign u_c >= g
 };
 
+/// The contact boundary Gamma_C split into multiplier segments E_j (paper Sec. 3.2): H = 2h
+/// following the local mesh size on graded meshes, each segment two sibling fine edges (the halves
+/// of one edge of the parent cells); a lone edge, whose sibling half is refined further, joins the
+/// segment next to it inside that half, so a segment is at most its edges' parent edge and a mesh
+/// and its mirror image get mirrored segments. Or one edge each (H = h). Provides B_ij = int_{E_j} phi_i ds
+/// of (3.7)-(3.8) as a Tpetra matrix, its products with replicated multiplier vectors, and the weighted
+/// obstacle gbar_j = int_{E_j} g ds. The segment data (a few hundred numbers) are replicated
+/// on every rank in the same order, independent of the number of ranks.
+/// Keeps no reference to the mesh; B's row map is unknowns.owned (or the mesh's owned map), shared.
 class ContactCoupling {
  public:
+  /// Segments of two sibling fine edges (H = 2h, the paper's) or of one edge (H = h, unstable: paper Fig. 3.1).
   enum class SegmentSize { TwoEdges, OneEdge };
-  using Unknowns = ContactUnknowns;
+  using Unknowns = ContactUnknowns;  ///< which unknowns the constraint acts on
 
   /// Segments of the boundary edges in \p contactMask; rows of Dirichlet unknowns (flags on the
-  /// overlap unknowns) stay empty.
+  /// overlap unknowns) stay empty. Collective over the mesh's communicator.
   ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask, SegmentSize size, const std::vector<char>& dirichlet,
                   const Unknowns& unknowns = Unknowns());
 
+  /// m, the number of segments (columns of B), the same on every rank.
   int numSegments() const { return static_cast<int>(length_.size()); }
   /// |E_j| [length], replicated.
   const std::vector<double>& segmentLength() const { return length_; }
@@ -66,8 +79,8 @@ class ContactCoupling {
   /// coarse unknowns i of the constrained component (3-point Gauss on every fine edge; Dirichlet
   /// unknowns of \p coarse left zero). Dense, column-major, n_coarse x m, the same on every rank.
   std::vector<double> coarseLoads(const Assembler& coarse) const;
-  /// For every segment j: sum_i B_ij^2 / d_i ... the "lumped" Schur complement B^T D^{-1} B for a
-  /// positive diagonal d (owned vector), as a dense row-major m x m matrix replicated on all ranks.
+  /// The "lumped" Schur complement B^T D^{-1} B, entries sum_i B_ij B_il / d_i, for a positive diagonal
+  /// D = diag(d) (\p d an owned vector): the full dense row-major m x m matrix, replicated on all ranks. Collective.
   std::vector<double> lumpedSchurComplement(const Vector& d) const;
   /// A key of each owned unknown that does not depend on the partition (its node's coordinates
   /// rounded to h_min / 64, then its component): orders the strip of StripSchurApproximation

@@ -1,4 +1,4 @@
-#include "ElasticityAssembler.hpp"
+#include "signorini/fem/ElasticityAssembler.hpp"
 
 #include <cmath>
 #include <limits>
@@ -8,10 +8,10 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "AssemblyTools.hpp"
-#include "Error.hpp"
-#include "MpiComm.hpp"
-#include "Q1Kernels.hpp"
+#include "signorini/fem/AssemblyTools.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/fem/Q1Kernels.hpp"
 
 namespace signorini::fem {
 
@@ -334,6 +334,22 @@ std::array<double, 3> ElasticityAssembler::stressAt(const Vector& uOverlap, LO e
     for (int i = 0; i < 2; ++i) du[i][0] += gx[a] * ue[i][a], du[i][1] += gy[a] * ue[i][a];
   const double tr = du[0][0] + du[1][1];
   return {lambda_ * tr + 2 * mu_ * du[0][0], lambda_ * tr + 2 * mu_ * du[1][1], mu_ * (du[0][1] + du[1][0])};
+}
+
+std::array<std::vector<double>, 5> ElasticityAssembler::cellCentreStresses(const Vector& uOverlap) const {
+  const LO nc = mesh_.numLocalCells();
+  std::array<std::vector<double>, 5> out;
+  for (auto& v : out) v.resize(nc);
+  // sigma_xx + sigma_yy = 2 (lambda + mu) tr(eps), so sigma_zz = lambda tr(eps) follows from them.
+  const double zzPerTrace = lambda_ / (2 * (lambda_ + mu_));
+  for (LO e = 0; e < nc; ++e) {
+    const auto [sxx, syy, sxy] = stressAt(uOverlap, e, 0.5, 0.5);
+    const double szz = zzPerTrace * (sxx + syy);
+    out[0][e] = sxx, out[1][e] = syy, out[2][e] = sxy, out[3][e] = szz;
+    out[4][e] = std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+                          3 * sxy * sxy);
+  }
+  return out;
 }
 
 }  // namespace signorini::fem

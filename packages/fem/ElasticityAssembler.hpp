@@ -9,11 +9,12 @@
 /// through the mesh's corner constraints; Dirichlet unknowns (per component) get identity rows.
 #include <array>
 #include <memory>
+#include <vector>
 
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Import.hpp>
 
-#include "Assembler.hpp"
+#include "signorini/fem/Assembler.hpp"
 
 namespace signorini::fem {
 
@@ -59,6 +60,11 @@ class ElasticityAssembler : public Assembler {
   /// Nodal stress sigma_xx, sigma_yy, sigma_xy at a point of a local cell (reference
   /// coordinates s, r) for overlap values \p uOverlap; for tests and output.
   std::array<double, 3> stressAt(const Vector& uOverlap, LO cell, double s, double r) const;
+  /// The stress at the centre of every local cell, in the unit of the Lame parameters, one vector
+  /// per quantity (for output): sigma_xx, sigma_yy, sigma_xy, sigma_zz = lambda (eps_xx + eps_yy) (plane
+  /// strain: eps_zz = 0) and the von Mises stress
+  /// sqrt(((sigma_xx - sigma_yy)^2 + (sigma_yy - sigma_zz)^2 + (sigma_zz - sigma_xx)^2) / 2 + 3 sigma_xy^2).
+  std::array<std::vector<double>, 5> cellCentreStresses(const Vector& uOverlap) const;
 
  private:
   const mesh::Q1Mesh& mesh_;

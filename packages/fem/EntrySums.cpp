@@ -1,4 +1,4 @@
-#include "EntrySums.hpp"
+#include "signorini/fem/EntrySums.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -9,9 +9,9 @@
 #include <Tpetra_Distributor.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "Error.hpp"
-#include "MpiComm.hpp"
-#include "ReproducibleSum.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 namespace signorini::fem {
 

@@ -1,27 +1,20 @@
 #pragma once
 /// \file EntrySums.hpp
-/// Partition-independent assembly sums (reproducible arithmetic, docs/reproducibility.md): each
-/// contribution of a cell to an entry (row, column) of a matrix or vector goes to the rank that
-/// owns the row, and the contributions of an entry are added in the order one rank would add them:
-/// by source rank, each rank's in the order of its list. p4est's partition gives each rank a
-/// consecutive piece of the space-filling curve, so when every rank lists its contributions in the
-/// order of its cells, that is the order of the cells along the curve, the same on any number of
-/// ranks, and the order in which the serial assembly kernels add (Serial execution space). A rank's
-/// partial sum, added to the owner's by an export, is not partition-independent.
+/// Partition-independent assembly sums (EntrySums) for reproducible arithmetic (docs/reproducibility.md).
 #include <vector>
 
 #include <Tpetra_Import.hpp>
 
-#include "Types.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::fem {
 
 /// One cell's contribution to entry (row, column): row an overlap-map local id, column a global id
 /// (0 for vectors).
 struct Contribution {
-  LO row;
-  GO column;
-  double value;
+  LO row;        ///< overlap-map local id of the row
+  GO column;     ///< global column id (0 for vectors)
+  double value;  ///< the cell's contribution
 };
 
 /// Whether an assembly on \p comm needs EntrySums for partition-independent sums: under
@@ -35,6 +28,15 @@ bool needEntrySums(const Comm& comm);
 /// kernel that adds them in the order of the cells (serial) already sums them as one rank would.
 std::vector<char> sharedRows(const Map& overlap, const Tpetra::Import<LO, GO, Node>& ownedToOverlap);
 
+/// Partition-independent assembly sums (reproducible arithmetic, docs/reproducibility.md): each
+/// contribution of a cell to an entry (row, column) of a matrix or vector goes to the rank that
+/// owns the row, and the contributions of an entry are added in the order one rank would add them:
+/// by source rank, each rank's in the order of its list. p4est's partition gives each rank a
+/// consecutive piece of the space-filling curve, so when every rank lists its contributions in the
+/// order of its cells, that is the order of the cells along the curve, the same on any number of
+/// ranks, and the order in which the serial assembly kernels add (Serial execution space). A rank's
+/// partial sum, added to the owner's by an export, is not partition-independent.
+/// The sums of the owned rows are computed in the constructor and stored; no reference to the arguments is kept.
 class EntrySums {
  public:
   /// Collective. \p contributions in the order of this rank's cells (within a cell, in an order

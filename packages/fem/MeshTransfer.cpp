@@ -1,4 +1,4 @@
-#include "MeshTransfer.hpp"
+#include "signorini/fem/MeshTransfer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,10 +7,10 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "EntrySums.hpp"
-#include "Error.hpp"
-#include "Q1Kernels.hpp"
-#include "ReproducibleSum.hpp"
+#include "signorini/fem/EntrySums.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/fem/Q1Kernels.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 namespace signorini::fem {
 namespace {

@@ -1,19 +1,22 @@
 #pragma once
 /// \file MeshTransfer.hpp
-/// Transfer I_h of finite element fields from the mesh of step n-1 to the mesh of step n
-/// (paper Sec. 3.2, DESIGN 1.2): the L2 projection, computed exactly on the common refinement of
-/// the two meshes (both refine one coarse mesh), or nodal interpolation. Works across MPI ranks
-/// with differently partitioned meshes (mesh::ForestOverlap).
+/// The transfer I_h of finite element fields between step meshes (MeshTransfer).
+#include <memory>
 #include <vector>
 
-#include "ForestOverlap.hpp"
-#include "Q1Assembler.hpp"
+#include "signorini/mesh/ForestOverlap.hpp"
+#include "signorini/fem/Q1Assembler.hpp"
 
 namespace signorini::fem {
 
+/// Transfer I_h of finite element fields from the mesh of step n-1 to the mesh of step n (paper Sec. 3.2, DESIGN 1.2):
+/// the L2 projection, exact on the common refinement of the two meshes (both refine one coarse mesh), or nodal
+/// interpolation; across differently partitioned meshes (mesh::ForestOverlap). Keeps references to the new Q1Mesh and
+/// the new forest's CoarseMesh, which must outlive it; the old forest, mesh and fields may go after the constructor.
 class MeshTransfer {
  public:
-  /// Prepares the transfer of \p fields (owned vectors on the old mesh).
+  /// Prepares the transfer of \p fields (owned vectors on the old mesh): copies their values, cell by cell, to
+  /// the ranks of the overlapping new cells. Both forests must be expanded. Collective.
   MeshTransfer(const mesh::Forest& oldForest, const mesh::Q1Mesh& oldMesh, const std::vector<const Vector*>& fields,
                const mesh::Forest& newForest, const mesh::Q1Mesh& newMesh);
 

@@ -1,4 +1,4 @@
-#include "ProblemData.hpp"
+#include "signorini/fem/ProblemData.hpp"
 
 #include <algorithm>
 #include <array>
@@ -8,10 +8,10 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
-#include "Error.hpp"
-#include "MpiComm.hpp"
-#include "Q1Kernels.hpp"
-#include "StringTools.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/fem/Q1Kernels.hpp"
+#include "signorini/core/StringTools.hpp"
 
 namespace signorini::fem {
 
@@ -25,7 +25,7 @@ core::ParameterList ProblemData::getValidParameters() {
   // leave the range of doubles (1e-160 lost the initial velocity altogether).
   core::addDouble(p, "Density", 1.0, "rho [mass/area] (scalar wave) or [mass/volume] (elasticity), in [1e-100, 1e100]",
                   1e-100, 1e100);
-  core::addDouble(p, "Stiffness", 1.0, "Scalar wave: kappa [force]; wave speed sqrt(kappa/rho); in [1e-100, 1e100]",
+  core::addDouble(p, "Stiffness", 1.0, "Scalar wave: kappa [force/length] (a tension); wave speed sqrt(kappa/rho); in [1e-100, 1e100]",
                   1e-100, 1e100);
   core::addDouble(p, "Young's Modulus", 1.0, "Elasticity: E [force/area], in [1e-100, 1e100]", 1e-100, 1e100);
   // Measured on the bar (CG + MueLu, iterations per solve): 19 at nu = 0.33, 71 at 0.49, about 460 at

@@ -1,20 +1,23 @@
 #pragma once
 /// \file ProblemData.hpp
-/// The deck's "Problem" sublist: material, data functions (muParser expressions in x, y, t)
-/// and the roles of the named boundary segments (DESIGN 1.1).
+/// The deck's "Problem" sublist, read (ProblemData).
 #include <optional>
 #include <string>
 
-#include "BoundarySegments.hpp"
-#include "Q1Mesh.hpp"
-#include "Expression.hpp"
-#include "ParameterTools.hpp"
+#include "signorini/mesh/BoundarySegments.hpp"
+#include "signorini/mesh/Q1Mesh.hpp"
+#include "signorini/core/Expression.hpp"
+#include "signorini/core/ParameterTools.hpp"
 
 namespace signorini::fem {
 
+/// The deck's "Problem" sublist (DESIGN 1.1): model, material, data functions (muParser expressions in x, y, t) and
+/// the roles of the named boundary segments as bit masks (bit i: BoundarySegments index i). A value type: it keeps
+/// no reference to the segments.
 struct ProblemData {
+  /// rho u_tt - div(kappa grad u) = f (one unknown per node) or plane strain elasticity (two per node).
   enum class Model { ScalarWave, PlaneStrainElasticity };
-  /// Valid "Problem" parameters.
+  /// The valid "Problem" sublist with defaults, doc strings and validators.
   static core::ParameterList getValidParameters();
   /// Reads a validated "Problem" sublist; resolves segment names against \p segments.
   /// Throws core::UserError naming the key for an expression that does not parse or an unknown segment.
@@ -26,20 +29,36 @@ struct ProblemData {
   /// warning ("no Problem/Neumann Segments; without effect: Problem/Neumann Data"); empty if none.
   static std::string checkParameters(const core::ParameterList& p);
 
-  Model model = Model::ScalarWave;
+  Model model = Model::ScalarWave;  ///< Problem/Type
   double density = 1.0;    ///< rho [mass / area] (scalar wave) or [mass / volume] (elasticity)
-  double stiffness = 1.0;  ///< kappa [force] (scalar wave: wave speed sqrt(kappa / rho))
+  double stiffness = 1.0;  ///< kappa [force / length] (scalar wave: wave speed sqrt(kappa / rho))
+  /// \var lameLambda
+  /// plane strain Lame parameter lambda [force / area] from E and nu (0 for the scalar wave)
   double lameLambda = 0.0, lameMu = 0.0;  ///< plane strain Lame parameters [force / area] from E and nu
   /// Fields with one component per unknown of a node (1 for the scalar wave, 2 for elasticity).
+  /// \var bodyForce
+  /// f [force / area]; elasticity [force / volume]
+  /// \var initialDisplacement
+  /// u0 [length] at t = 0
+  /// \var initialVelocity
+  /// v0 [length / time] at t = 0
+  /// \var neumannData
+  /// q on the Neumann segments: kappa du/dn [force / length]; elasticity: the traction sigma n [force / area]
   core::ExpressionList bodyForce, initialDisplacement, initialVelocity, neumannData;
   core::Expression obstacle;  ///< g: the constraint is d . u >= g with d = contactDirection (scalar: u >= g)
-  std::optional<core::ExpressionList> exactSolution;
-  bool hasObstacle = true;
-  /// Segments with every component fixed, and with only component c fixed (elasticity rollers).
+  std::optional<core::ExpressionList> exactSolution;  ///< exact u(x, y, t) for the error norms, if the deck gives one
+  bool hasObstacle = true;  ///< whether Problem/Obstacle is set (else \p obstacle is the constant 0)
+  /// \var dirichletMask
+  /// Gamma_D: segments with every component fixed (only component c: componentDirichletMask, elasticity rollers)
+  /// \var contactMask
+  /// Gamma_C: the contact segments
+  /// \var neumannMask
+  /// Gamma_N: the segments with Neumann data (the rest of the boundary is homogeneous Neumann)
   unsigned dirichletMask = 0, contactMask = 0, neumannMask = 0;
-  unsigned componentDirichletMask[2] = {0, 0};
+  unsigned componentDirichletMask[2] = {0, 0};  ///< segments with only u_x (index 0) or u_y (1) fixed (rollers)
   int contactComponent = 0;    ///< component of u the obstacle constrains (elasticity)
   double contactSign = 1.0;    ///< +1: u_c >= g, -1: -u_c >= g
+  /// Unknowns per node: 1 (scalar wave) or 2 (elasticity).
   int components() const { return model == Model::ScalarWave ? 1 : 2; }
   /// Fastest wave speed: sqrt(kappa / rho), or the P-wave speed sqrt((lambda + 2 mu) / rho).
   double waveSpeed() const;

@@ -1,4 +1,4 @@
-#include "Q1Assembler.hpp"
+#include "signorini/fem/Q1Assembler.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,13 +7,13 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "AssemblyTools.hpp"
-#include "EntrySums.hpp"
-#include "Error.hpp"
-#include "MpiComm.hpp"
-#include "Q1Kernels.hpp"
-#include "ReproducibleLinearAlgebra.hpp"
-#include "ReproducibleSum.hpp"
+#include "signorini/fem/AssemblyTools.hpp"
+#include "signorini/fem/EntrySums.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/fem/Q1Kernels.hpp"
+#include "signorini/core/ReproducibleLinearAlgebra.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 namespace signorini::fem {
 

@@ -1,18 +1,16 @@
 #pragma once
 /// \file Q1Assembler.hpp
-/// Kokkos assembly of bilinear finite element matrices and vectors on one Q1Mesh into Tpetra
-/// objects: c_M M + c_K K (mass and stiffness, paper (3.7)), loads, Neumann loads; plus the
-/// error norms against an exact solution and point evaluation (probes). Hanging nodes are
-/// eliminated through the corner constraints of the mesh; homogeneous Dirichlet nodes get
-/// identity rows and zero columns.
+/// Kokkos assembly of the scalar wave's bilinear finite element matrices and vectors (Q1Assembler).
 #include <memory>
+#include <utility>
+#include <vector>
 
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Import.hpp>
 
-#include "Assembler.hpp"
-#include "Expression.hpp"
-#include "Q1Mesh.hpp"
+#include "signorini/fem/Assembler.hpp"
+#include "signorini/core/Expression.hpp"
+#include "signorini/mesh/Q1Mesh.hpp"
 
 namespace signorini::fem {
 
@@ -20,9 +18,14 @@ class Q1Pattern;
 class EntrySums;
 struct Contribution;
 
+/// Kokkos assembly on one Q1Mesh into Tpetra objects, one unknown per node: c_M M + c_K K (mass and stiffness, paper
+/// (3.7)), loads, Neumann loads, error norms and point evaluation (probes). Hanging nodes are eliminated through the
+/// mesh's corner constraints; homogeneous Dirichlet nodes get identity rows and zero columns.
 class Q1Assembler : public Assembler {
  public:
-  /// \param dirichlet  flags on the mesh's overlap map (from Q1Mesh::nodesOnSegments).
+  /// Collective (builds the matrices' sparsity pattern).
+  /// \param mesh       the mesh; the assembler keeps references to it and its transfers: it must outlive the assembler.
+  /// \param dirichlet  flags on the mesh's overlap map (from Q1Mesh::nodesOnSegments); copied.
   Q1Assembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet);
   ~Q1Assembler() override;
 
@@ -30,7 +33,8 @@ class Q1Assembler : public Assembler {
   int components() const override { return 1; }
   RCP<const Map> ownedMap() const override { return mesh_.ownedMap(); }
   RCP<const Map> overlapMap() const override { return mesh_.overlapMap(); }
-  /// rho_coeff M + kappa_coeff K with the problem's rho and kappa (the Assembler interface).
+  /// massCoeff * M_rho + stiffCoeff * K_kappa with the problem's rho and kappa (the Assembler interface;
+  /// assembleOperator()).
   RCP<CrsMatrix> assembleSystem(double massCoeff, double stiffCoeff, const ProblemData& problem,
                                 const std::vector<char>& lumpAt = {}) const override {
     return assembleOperator(massCoeff, stiffCoeff, problem.density, problem.stiffness, lumpAt);
@@ -78,6 +82,7 @@ class Q1Assembler : public Assembler {
   const std::vector<char>& dirichletFlags() const override { return dirichlet_; }
 
   // Public only because nvcc refuses a KOKKOS_LAMBDA in a private or protected member function.
+  /// The device-side CRS matrix the kernels sum into.
   using LocalMatrix = CrsMatrix::local_matrix_device_type;
   /// Cell kernel shared by assembleOperator and assembleMassAndStiffness: mass part times cm summed
   /// into \p first, stiffness part times ck into \p second (the same matrix for a combined

@@ -8,11 +8,11 @@ namespace signorini::fem {
 
 /// Gauss points on [0,1]: 2-point rule (exact for cubics).
 KOKKOS_INLINE_FUNCTION double gauss2Point(int i) { return i == 0 ? 0.21132486540518713 : 0.78867513459481287; }
-constexpr double kGauss2Weight = 0.5;
+constexpr double kGauss2Weight = 0.5;  ///< weight of each gauss2Point()
 /// Gauss points and weights on [0,1]: 3-point rule (exact for quintics), for host loops (edges,
 /// error norms, the mean gaps of the contact segments).
 constexpr double kGauss3Point[3] = {0.11270166537925831, 0.5, 0.88729833462074169};
-constexpr double kGauss3Weight[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};
+constexpr double kGauss3Weight[3] = {5.0 / 18, 8.0 / 18, 5.0 / 18};  ///< weights of kGauss3Point (sum 1)
 
 /// Shape function values N_c(s, r) and reference gradients.
 KOKKOS_INLINE_FUNCTION void q1Shape(double s, double r, double N[4], double dNds[4], double dNdr[4]) {

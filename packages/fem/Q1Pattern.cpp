@@ -1,4 +1,4 @@
-#include "Q1Pattern.hpp"
+#include "signorini/fem/Q1Pattern.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -8,9 +8,9 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 
-#include "AssemblyTools.hpp"
-#include "Error.hpp"
-#include "MpiComm.hpp"
+#include "signorini/fem/AssemblyTools.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
 
 namespace signorini::fem {
 

@@ -6,8 +6,8 @@
 
 #include <Tpetra_Import.hpp>
 
-#include "Q1Mesh.hpp"
-#include "Types.hpp"
+#include "signorini/mesh/Q1Mesh.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::fem {
 
@@ -28,7 +28,7 @@ namespace signorini::fem {
 /// and column indices: none may change its graph.
 class Q1Pattern {
  public:
-  using LocalMatrix = CrsMatrix::local_matrix_device_type;
+  using LocalMatrix = CrsMatrix::local_matrix_device_type;  ///< the device-side CRS arrays the kernels sum into
 
   /// \p owned and \p overlap: the assembler's maps of unknowns (owned first in the overlap order;
   /// on one rank the same). Collective.
@@ -37,7 +37,7 @@ class Q1Pattern {
   /// A matrix being assembled: its kernels sum into local's values (row: overlap unknown; column:
   /// toColumn() of the overlap unknown).
   struct Fill {
-    LocalMatrix local;
+    LocalMatrix local;  ///< every overlap row, the owned ones first; shares the pattern's graph
   };
   /// A new zero matrix on the pattern, open for summing.
   Fill begin() const;

@@ -1,4 +1,4 @@
-#include "CsvWriter.hpp"
+#include "signorini/io/CsvWriter.hpp"
 
 #include <cerrno>
 #include <charconv>
@@ -10,8 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "Error.hpp"
-#include "OutputStaging.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/io/OutputStaging.hpp"
 
 namespace signorini::io {
 

@@ -1,13 +1,15 @@
 #pragma once
 /// \file CsvWriter.hpp
-/// A CSV table written under "<path>.part" and renamed to <path> by commit(), so an interrupted
-/// or failed run never leaves a torn file under the final name. Rows are flushed as written.
+/// Writing (CsvWriter) and reading (readCsv) the CSV tables of a run.
 #include <fstream>
 #include <string>
 #include <vector>
 
 namespace signorini::io {
 
+/// A CSV table written under "\<path\>.part" and renamed to `path` by commit(), so an interrupted or failed run never
+/// leaves a torn file under the final name. Rows are flushed as written. Owns the open file; not collective (the
+/// caller chooses the writing rank).
 class CsvWriter {
  public:
   /// Opens "<path>.part" and writes the header. Throws core::UserError naming the path if it
@@ -27,7 +29,9 @@ class CsvWriter {
   void abandon();
   /// Removes the file, committed or not (a later failure of the run it belongs to).
   void remove();
+  /// The header's column names.
   const std::vector<std::string>& columns() const { return columns_; }
+  /// The final path (without ".part").
   const std::string& path() const { return path_; }
 
  private:
@@ -40,11 +44,12 @@ class CsvWriter {
 
 /// Reads a CSV file written by CsvWriter: header names and rows of numbers.
 struct CsvTable {
-  std::vector<std::string> columns;
-  std::vector<std::vector<double>> rows;
+  std::vector<std::string> columns;       ///< header names
+  std::vector<std::vector<double>> rows;  ///< one vector per non-empty line after the header
   /// Index of a column; throws std::out_of_range if absent.
   size_t column(const std::string& name) const;
 };
+/// The table in \p path. Throws core::UserError if the file cannot be read or a field is not a number.
 CsvTable readCsv(const std::string& path);
 
 }  // namespace signorini::io

@@ -1,4 +1,4 @@
-#include "DeckReader.hpp"
+#include "signorini/io/DeckReader.hpp"
 
 #include <cstdint>
 #include <fstream>
@@ -13,9 +13,9 @@
 #include <Teuchos_XMLObject.hpp>
 #include <Teuchos_XMLParameterListReader.hpp>
 
-#include "Error.hpp"
-#include "MpiComm.hpp"
-#include "ParameterTools.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/core/ParameterTools.hpp"
 
 namespace signorini::io {
 namespace {

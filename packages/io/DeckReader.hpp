@@ -6,7 +6,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "Types.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::io {
 

@@ -1,9 +1,9 @@
 /// \file ExodusMesh.cpp
 /// Exodus II mesh input and result-series output on the Exodus II C API (version 6.02).
-#include "ExodusMesh.hpp"
+#include "signorini/io/ExodusMesh.hpp"
 
-#include "Error.hpp"
-#include "OutputStaging.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/io/OutputStaging.hpp"
 
 #include <exodusII.h>
 #include <netcdf.h>

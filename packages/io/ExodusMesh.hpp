@@ -13,6 +13,8 @@ namespace signorini::io {
 
 /// A 2D quadrilateral mesh as read from or written to Exodus II.
 struct QuadMesh {
+  /// \var x
+  /// vertex x coordinates (length units of the deck)
   std::vector<double> x, y;                ///< vertex coordinates (length units of the deck)
   std::vector<std::array<int, 4>> quads;   ///< 0-based vertex ids, counter-clockwise (Exodus QUAD4 order)
   /// Named side sets: name -> list of (quad index, local side s), side s joins vertices s and (s+1)%4
@@ -44,7 +46,7 @@ struct ExodusDescription {
   /// 79 characters and a backslash (so a line that itself ends in a backslash reads as continued;
   /// core::deckAsXml's lines end in '>').
   std::vector<std::string> info;
-  std::vector<std::string> globalNames;
+  std::vector<std::string> globalNames;  ///< names of the global variables (one value each per output time)
 };
 
 /// Writes a time series of results in Exodus II that ParaView opens as one series even

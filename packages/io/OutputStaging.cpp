@@ -1,4 +1,4 @@
-#include "OutputStaging.hpp"
+#include "signorini/io/OutputStaging.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -18,8 +18,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "Error.hpp"
-#include "StringTools.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/StringTools.hpp"
 
 namespace signorini::io {
 namespace fs = std::filesystem;

@@ -42,6 +42,8 @@ class OutputStaging {
 /// be created, the run goes on without the lock, with a warning.
 class OutputLock {
  public:
+  /// Takes "<base>.lock"; throws core::UserError if another process holds it (a warning instead where it cannot
+  /// be created or locked).
   explicit OutputLock(const std::string& base);
   ~OutputLock();
   OutputLock(const OutputLock&) = delete;

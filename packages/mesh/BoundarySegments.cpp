@@ -1,11 +1,11 @@
-#include "BoundarySegments.hpp"
+#include "signorini/mesh/BoundarySegments.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
 
-#include "Error.hpp"
-#include "StringTools.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/StringTools.hpp"
 
 namespace signorini::mesh {
 namespace {
@@ -50,8 +50,14 @@ void BoundarySegments::add(const std::string& name, const std::string& spec, con
     if (c.empty())
       SIGNORINI_USER_ERROR(key << ": empty condition in '" << spec
                                << "' (a comma at the end, or two commas in a row); expected \"<side set>[, x >= value]...\"");
-    if (c[0] != 'x' && c[0] != 'y')
-      SIGNORINI_USER_ERROR(key << ": condition '" << c << "' must start with x or y");
+    if (c[0] != 'x' && c[0] != 'y') {
+      if (coarse.hasSet(c))  // "top, bottom": a second side set where a condition belongs
+        SIGNORINI_USER_ERROR(key << ": '" << c << "' is a second side set; a segment is one side set followed by "
+                                 "conditions on x or y (\"<side set>[, x >= value]...\"): make one segment per side "
+                                 "set and name all of them in the Problem list (e.g. \"" << name << "_" << c << "\")");
+      SIGNORINI_USER_ERROR(key << ": condition '" << c << "' must start with x or y (a segment is \"<side set>[, "
+                               "x >= value]...\": one side set, then conditions)");
+    }
     cond.coord = c[0] == 'x' ? 0 : 1;
     std::string rest = trim(c.substr(1));
     int op = -1;

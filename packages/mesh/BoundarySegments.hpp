@@ -1,14 +1,17 @@
 #pragma once
 /// \file BoundarySegments.hpp
-/// Named boundary segments: a side set of the coarse mesh restricted by coordinate ranges,
-/// e.g. "bottom, x >= 0.15". Tested at the midpoint of each fine boundary edge.
+/// Named boundary segments of the deck's "Mesh/Boundary Segments" sublist (BoundarySegments).
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "CoarseMesh.hpp"
+#include "signorini/mesh/CoarseMesh.hpp"
 
 namespace signorini::mesh {
 
+/// Named boundary segments: a side set of the coarse mesh restricted by coordinate ranges, e.g. "bottom, x >= 0.15",
+/// tested at the midpoint of each fine boundary edge. Segment i is bit i of a segment mask (at most 32 segments).
+/// Keeps no reference to the coarse mesh.
 class BoundarySegments {
  public:
   /// Parses the "Mesh/Boundary Segments" sublist. Throws core::UserError naming the key for a
@@ -17,7 +20,9 @@ class BoundarySegments {
   /// Segments with the given (name, spec) pairs.
   BoundarySegments(const std::vector<std::pair<std::string, std::string>>& specs, const CoarseMesh& coarse);
 
+  /// Number of segments.
   int size() const { return static_cast<int>(segments_.size()); }
+  /// Name of segment \p i (its key in the sublist).
   const std::string& name(int i) const { return segments_[i].name; }
   /// Index of the named segment; throws core::UserError naming \p key and the closest name.
   int index(const std::string& name, const std::string& key) const;

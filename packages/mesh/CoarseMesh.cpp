@@ -1,4 +1,4 @@
-#include "CoarseMesh.hpp"
+#include "signorini/mesh/CoarseMesh.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <set>
 #include <sstream>
 
-#include "Error.hpp"
-#include "ExodusMesh.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/io/ExodusMesh.hpp"
 
 namespace signorini::mesh {
 

@@ -11,7 +11,7 @@
 
 #include <p4est_connectivity.h>
 
-#include "ParameterTools.hpp"
+#include "signorini/core/ParameterTools.hpp"
 
 namespace signorini::mesh {
 
@@ -47,7 +47,9 @@ class CoarseMesh {
   CoarseMesh(const CoarseMesh&) = delete;
   CoarseMesh& operator=(const CoarseMesh&) = delete;
 
+  /// The p4est connectivity, owned by the coarse mesh (destroyed with it; forests share it).
   p4est_connectivity_t* connectivity() const { return conn_; }
+  /// Number of p4est trees.
   int numTrees() const { return static_cast<int>(treeCorners_.size()); }
   /// Physical corner c (z-order) of tree t.
   const std::array<double, 2>& treeCorner(int t, int c) const { return treeCorners_[t][c]; }
@@ -59,6 +61,7 @@ class CoarseMesh {
   const std::vector<std::string>& faceSets(int t, int f) const { return faceSets_[t][f]; }
   /// All side set names, for messages.
   std::vector<std::string> setNames() const;
+  /// True if a tree face belongs to the side set \p name.
   bool hasSet(const std::string& name) const;
   /// A warning for the user when vertices of different cells lie at one point (a crack: the forest
   /// leaves the cells unconnected there, as a mesh whose nodes were not merged would); else "".

@@ -1,16 +1,18 @@
 #pragma once
 /// \file CoordinateTable.hpp
-/// A hash table from integer p4est coordinates (x, y) within one tree to a local index: the
-/// corner points of Q1Mesh's direct numbering and the cells of the estimator's face walk.
+/// A hash table from p4est coordinates to local indices (CoordinateTable).
 #include <cstdint>
 #include <vector>
 
 #include <p4est.h>
 
-#include "Types.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::mesh {
 
+/// A hash table from integer p4est coordinates (x, y) within one tree to a local index: the corner points of
+/// Q1Mesh's direct numbering and the cells of the estimator's face walk. Open addressing with a capacity fixed by the
+/// constructor (no growth: insert at most maxEntries keys); no removal.
 class CoordinateTable {
  public:
   /// Room for \p maxEntries entries (open addressing, at most half full).

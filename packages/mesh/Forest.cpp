@@ -1,4 +1,4 @@
-#include "Forest.hpp"
+#include "signorini/mesh/Forest.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -12,9 +12,9 @@
 #include <p4est_ghost.h>
 #include <p4est_iterate.h>
 
-#include "Error.hpp"
-#include "Morton.hpp"
-#include "MpiComm.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/mesh/Morton.hpp"
+#include "signorini/core/MpiComm.hpp"
 #include <sc.h>
 
 namespace signorini::mesh {

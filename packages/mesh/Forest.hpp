@@ -1,7 +1,6 @@
 #pragma once
 /// \file Forest.hpp
-/// One adaptive quadrilateral mesh: a p4est forest refining a CoarseMesh, distributed over the
-/// ranks of an MPI communicator along p4est's space-filling curve.
+/// One adaptive quadrilateral mesh as a p4est forest (Forest).
 #include <functional>
 #include <memory>
 #include <vector>
@@ -9,27 +8,37 @@
 #include <mpi.h>
 #include <p4est.h>
 
-#include "CoarseMesh.hpp"
+#include "signorini/mesh/CoarseMesh.hpp"
 
 namespace signorini::mesh {
 
 /// Initialises libsc/p4est once per process (quiet logging). Safe to call repeatedly.
 void initializeP4est(MPI_Comm comm);
 
+/// One adaptive quadrilateral mesh: a p4est forest refining a CoarseMesh, distributed over the ranks of an MPI
+/// communicator along p4est's space-filling curve, stored as a p4est (expanded) or as levels only (compact()).
+/// Owns its p4est; shares the CoarseMesh (and its connectivity); stores the raw MPI_Comm without duplicating it.
 class Forest {
  public:
-  /// Uniform forest at \p level on \p coarse, partitioned over \p comm.
+  /// Uniform forest at \p level on \p coarse, partitioned over \p comm. \p comm is stored as given (not
+  /// duplicated): it must stay valid while the forest lives. Collective.
   Forest(std::shared_ptr<const CoarseMesh> coarse, MPI_Comm comm, int level);
-  Forest(const Forest& other);  ///< deep copy (same partition)
+  Forest(const Forest& other);  ///< deep copy (same partition, same form, same communicator)
   Forest& operator=(const Forest&) = delete;
   ~Forest();
 
-  /// The p4est of an expanded forest (asserts !isCompact()).
+  /// The p4est of an expanded forest (asserts !isCompact()). Owned by the forest: do not destroy it; compact() and
+  /// the destructor destroy it, expand() makes a new one; refinement, coarsening and partition() change it in place.
   p4est_t* p4est() const;
+  /// The coarse mesh the forest refines (shared; lives as long as any forest or holder of coarsePtr()).
   const CoarseMesh& coarse() const { return *coarse_; }
+  /// The shared pointer to the coarse mesh.
   std::shared_ptr<const CoarseMesh> coarsePtr() const { return coarse_; }
+  /// The communicator given to the constructor (not owned).
   MPI_Comm comm() const { return comm_; }
+  /// Cells on all ranks (either form).
   long long numGlobalCells() const;
+  /// Cells on this rank (either form).
   int numLocalCells() const;
   /// Position on the space-filling curve of this rank's first cell among the cells of all ranks
   /// (local cell i is at firstGlobalCell() + i): the same cell has the same position on any
@@ -44,6 +53,7 @@ class Forest {
   /// Rebuilds the p4est from the compact form (p4est_inflate): the same cells and partition as
   /// before compact(). Collective. No-op if expanded.
   void expand();
+  /// True between compact() and expand(): p4est() is then unavailable.
   bool isCompact() const { return p4est_ == nullptr; }
 
   /// Refines every local cell for which \p refine(tree, quadrant) is true (once, not recursively).
@@ -69,7 +79,8 @@ class Forest {
   int minimumLevel() const;
   /// Bytes of memory this rank uses for the forest (in whichever form it is).
   size_t bytes() const;
-  /// Enforces the 2:1 face balance (at most one hanging node per edge; paper Algorithm 5.2).
+  /// Enforces the 2:1 balance across faces and corners (P4EST_CONNECT_FULL; at most one hanging node per edge;
+  /// paper Algorithm 5.2). Collective.
   void balance();
   /// Re-partitions the cells evenly over the ranks.
   void partition();

@@ -1,12 +1,12 @@
-#include "ForestOverlap.hpp"
+#include "signorini/mesh/ForestOverlap.hpp"
 
 #include <algorithm>
 
 #include <p4est_bits.h>
 
-#include "Error.hpp"
-#include "Morton.hpp"
-#include "MpiComm.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/mesh/Morton.hpp"
+#include "signorini/core/MpiComm.hpp"
 
 namespace signorini::mesh {
 namespace {

@@ -1,4 +1,4 @@
-#include "Q1Mesh.hpp"
+#include "signorini/mesh/Q1Mesh.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,9 +14,9 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "CoordinateTable.hpp"
-#include "Error.hpp"
-#include "MpiComm.hpp"
+#include "signorini/mesh/CoordinateTable.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
 
 namespace signorini::mesh {
 

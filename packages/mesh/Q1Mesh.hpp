@@ -1,18 +1,15 @@
 #pragma once
 /// \file Q1Mesh.hpp
-/// Bilinear (Q1) node numbering of one 2:1 balanced Forest, hanging nodes included (p4est
-/// lnodes, or on one rank and one tree a direct numbering of the corner points): the Tpetra
-/// maps of owned and owned-plus-shared nodes, per-cell geometry and corner constraints in
-/// Kokkos views, and the boundary edges with their segment tags.
+/// Bilinear (Q1) node numbering of one Forest (Q1Mesh) and its boundary edges (BoundaryEdge).
 #include <array>
 #include <vector>
 
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Import.hpp>
 
-#include "BoundarySegments.hpp"
-#include "Forest.hpp"
-#include "Types.hpp"
+#include "signorini/mesh/BoundarySegments.hpp"
+#include "signorini/mesh/Forest.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::mesh {
 
@@ -27,8 +24,9 @@ struct BoundaryEdge {
   /// Place of the edge in its tree's dyadic hierarchy: tree, p4est level of the cell and index
   /// of the edge along the tree face at that level (the edge's parent has index faceIndex / 2).
   int tree;
-  int quadrantLevel;
-  long long faceIndex;
+  int quadrantLevel;    ///< p4est level of the cell (level plus the coarse mesh's level offset)
+  long long faceIndex;  ///< index of the edge along its tree face at quadrantLevel
+  /// |x[1] - x[0]| [length, the deck's unit].
   double length() const;
   /// The point (1 - w) x[0] + w x[1] of the edge.
   std::array<double, 2> at(double w) const {
@@ -36,11 +34,15 @@ struct BoundaryEdge {
   }
 };
 
+/// Bilinear (Q1) node numbering of one 2:1 balanced Forest, hanging nodes included (p4est lnodes, or on one tree a
+/// direct numbering of the corner points): the Tpetra maps of owned and owned-plus-shared nodes, per-cell geometry
+/// and corner constraints in Kokkos views, and the boundary edges with their segment tags. Copies what it needs from
+/// the forest (which may be compacted afterwards) and keeps \p comm.
 class Q1Mesh {
  public:
-  using CellCoords = Kokkos::View<double* [4][2], DeviceType>;
-  using CellDofs = Kokkos::View<LO* [4][2], DeviceType>;
-  using CellWeights = Kokkos::View<double* [4][2], DeviceType>;
+  using CellCoords = Kokkos::View<double* [4][2], DeviceType>;  ///< per cell, corner and dimension: coordinates
+  using CellDofs = Kokkos::View<LO* [4][2], DeviceType>;        ///< per cell, corner and slot: overlap node id or -1
+  using CellWeights = Kokkos::View<double* [4][2], DeviceType>; ///< per cell, corner and slot: constraint weight
 
   /// How the nodes are found: p4est lnodes always, or (automatic) a direct numbering of the
   /// corner points when the forest has one tree, on any number of ranks (the same nodes and
@@ -49,12 +51,14 @@ class Q1Mesh {
   /// benchmark, on two ranks the last cycle's 0.88 -> 0.42 s per rank).
   /// (direct: the direct numbering, which must apply.)
   enum class Numbering { automatic, lnodes, direct };
-  /// \p forest must be 2:1 balanced (Forest::balance()).
+  /// \p forest must be 2:1 balanced (Forest::balance()) and expanded; \p segments tag the boundary edges;
+  /// \p comm spans the forest's ranks (kept: the maps live on it). Collective.
   Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const Comm> comm,
          Numbering numbering = Numbering::automatic);
   Q1Mesh(const Q1Mesh&) = delete;
   Q1Mesh& operator=(const Q1Mesh&) = delete;
 
+  /// The communicator given to the constructor.
   RCP<const Comm> comm() const { return comm_; }
   /// The numbering used: Numbering::direct or Numbering::lnodes.
   Numbering numbering() const { return numbering_; }
@@ -64,9 +68,13 @@ class Q1Mesh {
   RCP<const Map> overlapMap() const { return overlapMap_; }
   /// Owned to overlap (values of shared nodes from their owners) and overlap to owned (sums).
   const Tpetra::Import<LO, GO, Node>& ownedToOverlap() const { return *importer_; }
+  /// Overlap to owned (sums of the shared nodes' values at their owners).
   const Tpetra::Export<LO, GO, Node>& overlapToOwned() const { return *exporter_; }
+  /// Cells on this rank (the forest's local cells, in its order).
   LO numLocalCells() const { return numCells_; }
+  /// Independent (non-hanging) nodes on all ranks.
   GO numGlobalNodes() const { return ownedMap_->getGlobalNumElements(); }
+  /// Cells on all ranks.
   long long numGlobalCells() const { return numGlobalCells_; }
 
   /// Corner c (z-order) of cell e: physical coordinates cornerCoords(e,c,d).
@@ -74,11 +82,12 @@ class Q1Mesh {
   /// Value at corner c of cell e = sum_k cornerWeights(e,c,k) * u[cornerDofs(e,c,k)] (overlap ids;
   /// k = 1 is used only at hanging corners, where both weights are 1/2; unused slots hold -1 / 0).
   CellDofs cornerDofs;
-  CellWeights cornerWeights;
-  CellCoords::HostMirror cornerCoordsHost;
-  CellDofs::HostMirror cornerDofsHost;
-  CellWeights::HostMirror cornerWeightsHost;
+  CellWeights cornerWeights;  ///< the weights of cornerDofs (see there)
+  CellCoords::HostMirror cornerCoordsHost;    ///< host copy of cornerCoords
+  CellDofs::HostMirror cornerDofsHost;        ///< host copy of cornerDofs
+  CellWeights::HostMirror cornerWeightsHost;  ///< host copy of cornerWeights
 
+  /// Refinement level of each local cell, counted from the coarse mesh's cells (0 on them).
   const std::vector<int>& cellLevel() const { return cellLevel_; }
   /// The cells that refining the \p flagged ones (local cell order) forces under 2:1 balance over
   /// faces and corners, flags included, for a balanced forest: refining them once gives the
@@ -86,7 +95,9 @@ class Q1Mesh {
   /// of a balanced forest share a regular corner node, so the closure spreads through the nodes
   /// (finest flagged level per node, exchanged between ranks): no p4est face/corner iteration.
   std::vector<char> balanceClosure(const std::vector<char>& flagged) const;
+  /// p4est tree of each local cell.
   const std::vector<int>& cellTree() const { return cellTree_; }
+  /// The fine edges of the local cells on the domain boundary, in cell order.
   const std::vector<BoundaryEdge>& boundaryEdges() const { return boundaryEdges_; }
   /// Coordinates of every overlap node.
   const std::vector<std::array<double, 2>>& nodeCoords() const { return nodeCoords_; }
@@ -94,15 +105,15 @@ class Q1Mesh {
   /// spacing hMin() / 64 (the same integers on any partition, where the node's coordinates may
   /// come from another cell and differ in the last bits; distinct for distinct nodes).
   std::array<long long, 2> canonicalKey(LO node) const;
-  /// Smallest and largest edge length over all cells of all ranks.
+  /// Smallest and largest edge length over all cells of all ranks [length, the deck's unit].
   double hMin() const { return hMin_; }
-  double hMax() const { return hMax_; }
+  double hMax() const { return hMax_; }  ///< largest edge length over all cells of all ranks [length]
 
   /// Local cell containing (x, y) and the point's reference coordinates (s, r) in [0,1]^2; -1 if
   /// no local cell contains it.
   LO locate(double x, double y, double& s, double& r) const;
-  /// Flags (1.0 / 0.0) on the overlap map for the nodes that lie on a boundary edge whose
-  /// segment mask intersects \p mask, consistent across ranks.
+  /// Flags (1 / 0, one char per node) on the overlap map for the nodes that lie on a boundary edge whose
+  /// segment mask intersects \p mask, consistent across ranks. Collective.
   std::vector<char> nodesOnSegments(unsigned mask) const;
 
  private:

@@ -1,4 +1,4 @@
-#include "TemporalRegularisation.hpp"
+#include "signorini/mesh/TemporalRegularisation.hpp"
 
 #include <algorithm>
 #include <set>
@@ -6,9 +6,9 @@
 
 #include <p4est_bits.h>
 
-#include "Error.hpp"
-#include "ForestOverlap.hpp"
-#include "Morton.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/mesh/ForestOverlap.hpp"
+#include "signorini/mesh/Morton.hpp"
 
 namespace signorini::mesh {
 namespace {

@@ -5,7 +5,7 @@
 #include <memory>
 #include <vector>
 
-#include "Forest.hpp"
+#include "signorini/mesh/Forest.hpp"
 
 namespace signorini::mesh {
 

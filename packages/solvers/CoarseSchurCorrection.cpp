@@ -1,10 +1,10 @@
-#include "CoarseSchurCorrection.hpp"
+#include "signorini/solvers/CoarseSchurCorrection.hpp"
 
 #include <Amesos2.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 
-#include "Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini::solvers {
 

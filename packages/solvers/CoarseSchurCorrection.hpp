@@ -1,5 +1,13 @@
 #pragma once
 /// \file CoarseSchurCorrection.hpp
+/// The far-field part of the Schur complement Q = B^T A^{-1} B (CoarseSchurCorrection).
+#include <memory>
+#include <vector>
+
+#include "signorini/core/Types.hpp"
+
+namespace signorini::solvers {
+
 /// The far-field part of the Schur complement Q = B^T A^{-1} B (DESIGN 1.6): the step matrix A_c
 /// of a coarse mesh (a uniform refinement of the deck's coarse mesh no finer than its initial mesh,
 /// Contact/Coarse Correction Cells), held whole on every rank and factored once per run
@@ -7,16 +15,11 @@
 /// Added to the strip approximation it forms B^T (R^T A_s^{-1} R + P A_c^{-1} P^T) B, the
 /// two-level additive Schwarz approximation of A^{-1} seen through B: needed when A^{-1} reaches
 /// further than any affordable strip (elasticity, where c k is as large as the body).
-#include <memory>
-#include <vector>
-
-#include "Types.hpp"
-
-namespace signorini::solvers {
-
+/// Keeps the RCP of A_c it is given and owns the factorisation.
 class CoarseSchurCorrection {
  public:
-  /// \param A the coarse step matrix on a one-rank communicator (each rank its own copy).
+  /// Factors \p A (KLU2) at once: later changes of its values are not seen.
+  /// \param A the coarse step matrix on a one-rank communicator (each rank its own copy); kept.
   explicit CoarseSchurCorrection(RCP<const CrsMatrix> A);
   ~CoarseSchurCorrection();
   /// L^T A_c^{-1} L for the column-major n x m loads L (fem::ContactCoupling::coarseLoads):

@@ -1,4 +1,4 @@
-#include "ContactQP.hpp"
+#include "signorini/solvers/ContactQP.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini::solvers {
 namespace {

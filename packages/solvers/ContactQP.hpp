@@ -1,26 +1,20 @@
 #pragma once
 /// \file ContactQP.hpp
-/// The per-step contact problem in Schur-complement form (DESIGN 1.2, paper Sec. 3.2):
-///   min 1/2 l^T Q l - l^T (B^T A^{-1} F - gbar)  s.t.  l <= 0,   Q = B^T A^{-1} B,
-/// whose KKT multiplier is the weighted gap G = B^T u - gbar >= 0 with u = A^{-1}(F - B l).
-/// Solved by a primal-dual active set (semismooth Newton) method; each Newton step solves
-/// Q_AA d = G_A by conjugate gradients (one A-solve per iteration, u accumulated on the way)
-/// preconditioned by a local approximation of Q on the active set: B^T A_s^{-1} B with A_s the
-/// step matrix on a strip along Gamma_C (default), or the lumped B^T diag(A)^{-1} B. With the strip,
-/// A_s^{-1} B p also starts each A-solve, so the exact solves need few iterations.
+/// The per-step contact problem (3.7)-(3.8) as a QP (ContactQP) and what its solve reports (ContactQPResult).
 #include <string>
 #include <vector>
 
 #include <map>
 #include <memory>
 
-#include "ContactCoupling.hpp"
-#include "LinearSolver.hpp"
-#include "ParameterTools.hpp"
-#include "StripSchurApproximation.hpp"
+#include "signorini/fem/ContactCoupling.hpp"
+#include "signorini/solvers/LinearSolver.hpp"
+#include "signorini/core/ParameterTools.hpp"
+#include "signorini/solvers/StripSchurApproximation.hpp"
 
 namespace signorini::solvers {
 
+/// What ContactQP::solve() did and the KKT quantities of its result (replicated on every rank).
 struct ContactQPResult {
   int activeSetIterations = 0;  ///< semismooth Newton steps
   int cgIterations = 0;         ///< CG iterations on Q (one A-solve each)
@@ -33,15 +27,28 @@ struct ContactQPResult {
   double maxComplementarity = 0;  ///< max_j |lambda_j G_j| / |E_j|
 };
 
+/// The discrete contact system (3.7)-(3.8) of one step in Schur-complement form (DESIGN 1.2, paper Sec. 3.2):
+///   min 1/2 l^T Q l - l^T (B^T A^{-1} F - gbar)  s.t.  l <= 0,   Q = B^T A^{-1} B,
+/// whose KKT multiplier is the weighted gap G = B^T u - gbar >= 0 with u = A^{-1}(F - B l).
+/// Solved by a primal-dual active set (semismooth Newton) method; each Newton step solves
+/// Q_AA d = G_A by conjugate gradients (one A-solve per iteration, u accumulated on the way)
+/// preconditioned by a local approximation of Q on the active set: B^T A_s^{-1} B with A_s the
+/// step matrix on a strip along Gamma_C (default), or the lumped B^T diag(A)^{-1} B. With the strip,
+/// A_s^{-1} B p also starts each A-solve, so the exact solves need few iterations.
+/// Owns a copy of its parameters and the Schur preconditioner of the current system (setSystem()); keeps no
+/// reference to the matrix, the coupling or the linear solver.
 class ContactQP {
  public:
+  /// The valid "Contact" sublist (multiplier segments, KKT tolerance, iteration limits, Newton step solver, boundary
+  /// mass, Schur preconditioner, strip and coarse correction) with defaults, doc strings and validators.
   static core::ParameterList getValidParameters();
   /// A warning (empty if none) for keys of the validated "Contact" sublist \p params that the
   /// chosen Schur preconditioner does not use ("Coarse Correction Cells" without the coarse
   /// correction, "Strip Width" without the strip).
   static std::string checkParameters(const core::ParameterList& params);
-  /// \param params validated "Contact" sublist; \p lengthScale (the domain diameter) makes the
-  /// KKT tolerance an absolute gap tolerance [length].
+  /// \param params      validated "Contact" sublist; copied.
+  /// \param lengthScale the domain diameter [length]: makes the relative KKT Tolerance an absolute gap
+  ///                    tolerance [length] (gapTolerance()).
   ContactQP(const core::ParameterList& params, double lengthScale);
 
   ~ContactQP();

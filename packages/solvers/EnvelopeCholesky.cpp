@@ -1,11 +1,11 @@
-#include "EnvelopeCholesky.hpp"
+#include "signorini/solvers/EnvelopeCholesky.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <string>
 
-#include "Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini::solvers {
 

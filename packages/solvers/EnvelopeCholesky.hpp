@@ -1,16 +1,18 @@
 #pragma once
 /// \file EnvelopeCholesky.hpp
+/// A serial sparse (envelope) Cholesky factorisation for thin domains (EnvelopeCholesky).
+#include <cstddef>
+#include <vector>
+
+namespace signorini::solvers {
+
 /// A serial sparse Cholesky factorisation A = L L^T for the small SPD matrices of thin domains
 /// (the strip along Gamma_C of StripSchurApproximation): reverse Cuthill-McKee ordering (or a
 /// given one with a much smaller envelope), then
 /// L stored row by row from the first non-zero of each row (the envelope, which holds all fill).
 /// A strip of w node layers has an envelope of about 2 w entries per row, so the factorisation
 /// costs O(n w^2) and a solve O(n w) per right-hand side, with no set-up beyond that.
-#include <cstddef>
-#include <vector>
-
-namespace signorini::solvers {
-
+/// Owns the factor; keeps no reference to the input arrays.
 class EnvelopeCholesky {
  public:
   /// Factors the n x n matrix given by CRS arrays holding both triangles (columns in any order,

@@ -1,4 +1,4 @@
-#include "JacobiCG.hpp"
+#include "signorini/solvers/JacobiCG.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,9 +12,9 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "Error.hpp"
-#include "ReproducibleLinearAlgebra.hpp"
-#include "ReproducibleSum.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/ReproducibleLinearAlgebra.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 namespace signorini::solvers {
 

@@ -6,7 +6,7 @@
 /// iteration, the inverse diagonal computed once, no solver or preconditioner objects to set up per call.
 #include <vector>
 
-#include "Types.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::solvers {
 

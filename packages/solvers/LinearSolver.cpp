@@ -1,4 +1,4 @@
-#include "LinearSolver.hpp"
+#include "signorini/solvers/LinearSolver.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -12,11 +12,11 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "Error.hpp"
-#include "MpiComm.hpp"
-#include "ParameterTools.hpp"
-#include "JacobiCG.hpp"
-#include "ReproducibleSum.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/core/ParameterTools.hpp"
+#include "signorini/solvers/JacobiCG.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 namespace signorini::solvers {
 

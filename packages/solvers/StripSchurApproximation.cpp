@@ -1,4 +1,4 @@
-#include "StripSchurApproximation.hpp"
+#include "signorini/solvers/StripSchurApproximation.hpp"
 
 #include <algorithm>
 #include <array>
@@ -13,11 +13,11 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "EnvelopeCholesky.hpp"
-#include "LinearSolver.hpp"
-#include "Error.hpp"
-#include "MpiComm.hpp"
-#include "ReproducibleSum.hpp"
+#include "signorini/solvers/EnvelopeCholesky.hpp"
+#include "signorini/solvers/LinearSolver.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 namespace signorini::solvers {
 

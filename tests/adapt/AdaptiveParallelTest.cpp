@@ -11,8 +11,8 @@
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
-#include "AdaptiveSimulation.hpp"
-#include "CsvWriter.hpp"
+#include "signorini/adapt/AdaptiveSimulation.hpp"
+#include "signorini/io/CsvWriter.hpp"
 
 using namespace signorini;
 

@@ -8,8 +8,8 @@
 
 #include <Tpetra_Core.hpp>
 
-#include "Marking.hpp"
-#include "MpiComm.hpp"
+#include "signorini/adapt/Marking.hpp"
+#include "signorini/core/MpiComm.hpp"
 
 using namespace signorini;
 

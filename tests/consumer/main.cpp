@@ -3,8 +3,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include <Expression.hpp>
-#include <Types.hpp>
+#include <signorini/core/Expression.hpp>
+#include <signorini/core/Types.hpp>
+#include <signorini/io/DeckReader.hpp>  // includes core's Types.hpp from another package's folder
 
 int main() {
   static_assert(std::is_same_v<signorini::Scalar, double>);

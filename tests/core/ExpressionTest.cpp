@@ -6,8 +6,8 @@
 #include <memory>
 #include <string>
 
-#include "Error.hpp"
-#include "Expression.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/Expression.hpp"
 
 using signorini::core::Expression;
 using signorini::core::UserError;

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "Error.hpp"
-#include "ParameterTools.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/ParameterTools.hpp"
 
 using namespace signorini::core;
 

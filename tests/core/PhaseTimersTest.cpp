@@ -5,7 +5,7 @@
 #include <chrono>
 #include <thread>
 
-#include "PhaseTimers.hpp"
+#include "signorini/core/PhaseTimers.hpp"
 
 using signorini::core::PhaseTimers;
 

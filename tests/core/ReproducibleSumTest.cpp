@@ -16,7 +16,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultComm.hpp>
 
-#include "ReproducibleSum.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 namespace {
 

@@ -167,6 +167,14 @@ signorini_add_bad_deck_test(exodus_missing_side_set ${decks}/exodus-missing-side
   "Mesh/Boundary Segments/contact: side set 'east' does not exist in .*unit-square-4x4[.]exo"
   "its side sets: bottom, left, right, top")
 
+# Two side sets in one segment: the second is named as such, not as a condition without x or y.
+signorini_add_driver_test(two_side_sets_in_one_segment EXIT 1
+  ARGS --check --output-dir {OUT} --set "Mesh/Boundary Segments/contact=right, top" ${decks}/good.xml
+  REGEX "Mesh/Boundary Segments/contact: 'top' is a second side set; a segment is one side set followed by conditions on x or y")
+signorini_add_driver_test(segment_condition_without_coordinate EXIT 1
+  ARGS --check --output-dir {OUT} --set "Mesh/Boundary Segments/contact=right, z > 0" ${decks}/good.xml
+  REGEX "Mesh/Boundary Segments/contact: condition 'z > 0' must start with x or y [(]a segment is \"<side set>")
+
 signorini_add_bad_deck_test(exodus_missing_file ${decks}/exodus-missing-file.xml
   "Mesh/File: Exodus II mesh file '[^']*no-such-mesh[.]exo' does not exist")
 

@@ -9,8 +9,8 @@
 
 #include <Tpetra_Core.hpp>
 
-#include "CsvWriter.hpp"
-#include "Simulation.hpp"
+#include "signorini/io/CsvWriter.hpp"
+#include "signorini/dynamics/Simulation.hpp"
 
 using namespace signorini;
 

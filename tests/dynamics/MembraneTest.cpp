@@ -13,11 +13,11 @@
 #include <Tpetra_Core.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "CsvWriter.hpp"
-#include "Assembler.hpp"
-#include "ContactCoupling.hpp"
-#include "Q1Mesh.hpp"
-#include "Simulation.hpp"
+#include "signorini/io/CsvWriter.hpp"
+#include "signorini/fem/Assembler.hpp"
+#include "signorini/fem/ContactCoupling.hpp"
+#include "signorini/mesh/Q1Mesh.hpp"
+#include "signorini/dynamics/Simulation.hpp"
 
 using namespace signorini;
 

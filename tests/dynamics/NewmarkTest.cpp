@@ -6,7 +6,7 @@
 #include <Tpetra_Core.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "Newmark.hpp"
+#include "signorini/dynamics/Newmark.hpp"
 
 using namespace signorini;
 

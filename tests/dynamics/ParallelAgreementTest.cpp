@@ -8,9 +8,9 @@
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
-#include "CsvWriter.hpp"
-#include "AdaptiveSimulation.hpp"
-#include "Simulation.hpp"
+#include "signorini/io/CsvWriter.hpp"
+#include "signorini/adapt/AdaptiveSimulation.hpp"
+#include "signorini/dynamics/Simulation.hpp"
 
 using namespace signorini;
 

@@ -25,9 +25,9 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "ContactCoupling.hpp"
-#include "ElasticityEstimator.hpp"
-#include "MpiComm.hpp"
+#include "signorini/fem/ContactCoupling.hpp"
+#include "signorini/estimate/ElasticityEstimator.hpp"
+#include "signorini/core/MpiComm.hpp"
 #include "../QuadMeshes.hpp"
 #include "SameEstimate.hpp"
 #include "SolveCG.hpp"
@@ -110,9 +110,10 @@ struct Case {
       h(2 * i + 1, 0) = fy(X[0], X[1]);
     }
   }
-  estimate::EstimatorResult run(const std::string& scaling = "step") const {
+  estimate::EstimatorResult run(const std::string& scaling = "step", double s1LengthScale = 1.0) const {
     auto params = estimate::ResidualEstimator::getValidParameters();
     params.set("Scaling", scaling);
+    params.set("S1 Length Scale", s1LengthScale);
     estimate::ElasticityEstimator est(params);
     return est.estimate(estimate::ElasticityEstimatorInput{*forest, *mesh, *assembler, *problem, coupling.get(), time, k,
                                                            beta, *u, *pred, lambda, solveCG});
@@ -583,6 +584,20 @@ TEST(ElasticityEstimator, PhysicalScalingDoesNotDependOnTheUnitOfForce) {
   EXPECT_NEAR(physical.etaStar, step.etaStar / stiffness, 1e-12 * physical.etaStar);
   EXPECT_NEAR(physical.s0, step.s0 / std::sqrt(stiffness), 1e-12 * physical.s0);
   EXPECT_NEAR(physical.s1, step.s1, 1e-12 * step.s1);
+}
+
+TEST(ElasticityEstimator, S1LengthScaleWeighsTheL2PartOfItsNorm) {
+  // s1^2 = |d|_1^2 + ||d||_0^2 / l^2 at the minimiser d: a larger l gives a smaller s1, and the
+  // values follow from two of them (the minimiser changes with l, so only bounds hold: with
+  // l = 1/2 the L2 part counts four times, so s1 lies between the l = 1 value and twice it).
+  Case s(2, true);
+  s.finish({{"Contact Segments", "bottom"}, {"Contact Direction", "+y"}, {"Dirichlet Segments", "top"},
+            {"Obstacle", "0.05*sin(pi*x) + 0.01"}});
+  const double one = s.run("step", 1.0).s1, half = s.run("step", 0.5).s1, two = s.run("step", 2.0).s1;
+  ASSERT_GT(two, 0.0);
+  EXPECT_GT(half, one);
+  EXPECT_GT(one, two);
+  EXPECT_LT(half, 2.0 * one);
 }
 
 TEST(ElasticityEstimator, AllRanksAgreeWithOneRank) {

@@ -28,16 +28,16 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "ContactCoupling.hpp"
-#include "Error.hpp"
-#include "ExodusMesh.hpp"
+#include "signorini/fem/ContactCoupling.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/io/ExodusMesh.hpp"
 #include "../QuadMeshes.hpp"
 #include "../TestMesh.hpp"
-#include "EstimatorTools.hpp"
-#include "MpiComm.hpp"
-#include "ProblemData.hpp"
-#include "Q1Assembler.hpp"
-#include "ResidualEstimator.hpp"
+#include "signorini/estimate/EstimatorTools.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/fem/ProblemData.hpp"
+#include "signorini/fem/Q1Assembler.hpp"
+#include "signorini/estimate/ResidualEstimator.hpp"
 #include "SameEstimate.hpp"
 #include "SolveCG.hpp"
 
@@ -599,6 +599,43 @@ TEST(ResidualEstimatorS1, MatchesDiscreteHarmonicContinuation) {
   double s0none = 1;
   EXPECT_EQ(s1For(-1.0, true, &s0none), 0.0);  // no penetration: no positive part
   EXPECT_EQ(s0none, 0.0);
+}
+
+TEST(ResidualEstimatorS1, LengthScaleMakesS1ALengthInAnyUnit) {
+  // One problem in metres and in millimetres (the domain, the obstacle and u_h in a unit 1000 times
+  // smaller, rho and kappa as they are: s1 only sees the geometry and the penetration). With
+  // S1 Length Scale the domain's side in each unit, s1 is one length, its number 1000 times larger
+  // in millimetres, whether its operator is assembled or formed from the step's M and K. The paper's
+  // H^1 norm (l = 1 in both units) is not: its L2 part carries one more power of the length.
+  auto s1In = [](double unit, double lengthScale, bool fromStepMatrices) {
+    EstimatorCase s(mesh::CoarseMesh::rectangle(0, unit, 0, unit, 1, 1), kSides, 2);
+    s.refineWhere([&](double x, double y) { return x > 0.5 * unit && y < 0.5 * unit; });
+    s.finish({{"Dirichlet Segments", "left"},
+              {"Contact Segments", "right"},
+              {"Obstacle", num(unit) + " * (0.1 * sin(3 * y / " + num(unit) + ") + 0.05)"}},
+             2.0, 3.0);
+    s.interpolate([&](double x, double y) { return unit * 0.02 * (x / unit) * (1 + y / unit); }, *s.u);
+    auto params = estimate::ResidualEstimator::getValidParameters();
+    params.set("Scaling", "step");
+    params.set("S1 Length Scale", lengthScale);
+    estimate::EstimatorInput in{*s.forest, *s.mesh, *s.assembler, *s.problem, s.coupling.get(), s.time, s.k, s.beta,
+                                *s.u, *s.pred, s.lambda, solveCG};
+    if (fromStepMatrices) {
+      in.meshId = 1;
+      in.mass = s.assembler->assembleSystem(1.0, 0.0, *s.problem);
+      in.stiffness = s.assembler->assembleSystem(0.0, 1.0, *s.problem);
+    }
+    return estimate::ResidualEstimator(params).estimate(in).s1;
+  };
+  for (const bool fromStepMatrices : {false, true}) {
+    const double metres = s1In(1.0, 1.0, fromStepMatrices);
+    ASSERT_GT(metres, 0.0);
+    EXPECT_NEAR(s1In(1e3, 1e3, fromStepMatrices), 1e3 * metres, 1e-9 * 1e3 * metres);
+    const double paperNormInMillimetres = s1In(1e3, 1.0, fromStepMatrices);
+    EXPECT_GT(std::abs(paperNormInMillimetres - 1e3 * metres), 0.05 * 1e3 * metres);  // control
+    // A larger l weighs the L2 part less: s1 falls towards the gradient part alone.
+    EXPECT_LT(s1In(1.0, 2.0, fromStepMatrices), metres);
+  }
 }
 
 TEST(ResidualEstimatorS1, SeesOnlyThePositivePartOfThePenetration) {

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "EstimatorTools.hpp"
+#include "signorini/estimate/EstimatorTools.hpp"
 
 namespace signorini::test {
 

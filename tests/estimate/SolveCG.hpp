@@ -6,7 +6,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "Types.hpp"
+#include "signorini/core/Types.hpp"
 
 namespace signorini::test {
 

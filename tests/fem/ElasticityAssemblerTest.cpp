@@ -14,8 +14,8 @@
 #include <Tpetra_Vector.hpp>
 
 #include "../TestMesh.hpp"
-#include "ElasticityAssembler.hpp"
-#include "Expression.hpp"
+#include "signorini/fem/ElasticityAssembler.hpp"
+#include "signorini/core/Expression.hpp"
 
 using namespace signorini;
 
@@ -131,6 +131,38 @@ TEST_P(ElasticityAssembly, LinearFieldPassesThePatchTest) {
   // Point values reproduce the field.
   EXPECT_NEAR(asmb.evaluateComponent(uo, 1.3, 0.2, 0), 0.1 + 0.3 * 1.3 - 0.2 * 0.2, 1e-12);
   EXPECT_NEAR(asmb.evaluateComponent(uo, 1.3, 0.2, 1), -0.4 + 0.5 * 1.3 + 0.7 * 0.2, 1e-12);
+}
+
+TEST_P(ElasticityAssembly, CellCentreStressesOfUniformStrains) {
+  // Two uniform strains whose plane strain stresses are known in closed form, on a mesh with
+  // hanging nodes when the parameter says so: uniaxial strain u = (e x, 0) gives sigma_xx =
+  // (lambda + 2 mu) e, sigma_yy = sigma_zz = lambda e, von Mises 2 mu |e|; simple shear
+  // u = (g y, 0) gives sigma_xy = mu g, no normal stress, von Mises sqrt(3) mu |g|.
+  test::TestMesh tm(0.0, 2.0, -1.0, 0.5, 2, 1, 1);
+  if (GetParam()) tm.refineCorner();
+  const auto& m = tm.build();
+  fem::ElasticityAssembler asmb(m, std::vector<char>(2 * m.overlapMap()->getNodeNumElements(), 0), kLambda, kMu);
+  auto stressesOf = [&](double (*ux)(double, double)) {
+    Vector u(asmb.ownedMap()), uo(asmb.overlapMap());
+    interpolate(asmb, ux, [](double, double) { return 0.0; }, u);
+    asmb.toOverlap(u, uo);
+    return asmb.cellCentreStresses(uo);
+  };
+  const double e = -2e-3, g = 3e-3;
+  const auto uniaxial = stressesOf([](double x, double) { return -2e-3 * x; });
+  const auto shear = stressesOf([](double, double y) { return 3e-3 * y; });
+  ASSERT_EQ(uniaxial[0].size(), static_cast<size_t>(m.numLocalCells()));
+  const double tol = 1e-12 * (kLambda + 2 * kMu);
+  for (LO c = 0; c < m.numLocalCells(); ++c) {
+    EXPECT_NEAR(uniaxial[0][c], (kLambda + 2 * kMu) * e, tol);
+    EXPECT_NEAR(uniaxial[1][c], kLambda * e, tol);
+    EXPECT_NEAR(uniaxial[2][c], 0.0, tol);
+    EXPECT_NEAR(uniaxial[3][c], kLambda * e, tol);
+    EXPECT_NEAR(uniaxial[4][c], 2 * kMu * std::abs(e), tol);
+    for (int q : {0, 1, 3}) EXPECT_NEAR(shear[q][c], 0.0, tol);
+    EXPECT_NEAR(shear[2][c], kMu * g, tol);
+    EXPECT_NEAR(shear[4][c], std::sqrt(3.0) * kMu * g, tol);
+  }
 }
 
 TEST_P(ElasticityAssembly, MassHoldsTheMassOncePerComponent) {

@@ -12,9 +12,9 @@
 
 #include "../QuadMeshes.hpp"
 #include "../TestMesh.hpp"
-#include "LinearSolver.hpp"
-#include "MeshTransfer.hpp"
-#include "Q1Assembler.hpp"
+#include "signorini/solvers/LinearSolver.hpp"
+#include "signorini/fem/MeshTransfer.hpp"
+#include "signorini/fem/Q1Assembler.hpp"
 
 using namespace signorini;
 

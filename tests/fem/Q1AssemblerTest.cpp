@@ -12,11 +12,11 @@
 #include <Tpetra_Vector.hpp>
 
 #include "../TestMesh.hpp"
-#include "Expression.hpp"
-#include "ElasticityAssembler.hpp"
-#include "ProblemData.hpp"
-#include "Q1Assembler.hpp"
-#include "Q1Kernels.hpp"
+#include "signorini/core/Expression.hpp"
+#include "signorini/fem/ElasticityAssembler.hpp"
+#include "signorini/fem/ProblemData.hpp"
+#include "signorini/fem/Q1Assembler.hpp"
+#include "signorini/fem/Q1Kernels.hpp"
 
 using namespace signorini;
 

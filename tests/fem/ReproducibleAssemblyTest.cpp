@@ -17,12 +17,12 @@
 #include <Tpetra_Vector.hpp>
 
 #include "../TestMesh.hpp"
-#include "Expression.hpp"
-#include "MeshTransfer.hpp"
-#include "ProblemData.hpp"
-#include "Q1Assembler.hpp"
-#include "ReproducibleLinearAlgebra.hpp"
-#include "ReproducibleSum.hpp"
+#include "signorini/core/Expression.hpp"
+#include "signorini/fem/MeshTransfer.hpp"
+#include "signorini/fem/ProblemData.hpp"
+#include "signorini/fem/Q1Assembler.hpp"
+#include "signorini/core/ReproducibleLinearAlgebra.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 using namespace signorini;
 

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "CsvWriter.hpp"
-#include "Error.hpp"
+#include "signorini/io/CsvWriter.hpp"
+#include "signorini/core/Error.hpp"
 
 using namespace signorini;
 

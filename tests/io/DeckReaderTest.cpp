@@ -10,8 +10,8 @@
 #include <string>
 #include <thread>
 
-#include "DeckReader.hpp"
-#include "Error.hpp"
+#include "signorini/io/DeckReader.hpp"
+#include "signorini/core/Error.hpp"
 
 using namespace signorini;
 

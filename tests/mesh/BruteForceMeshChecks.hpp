@@ -17,7 +17,7 @@
 #include <mpi.h>
 #include <p4est.h>
 
-#include "Forest.hpp"
+#include "signorini/mesh/Forest.hpp"
 
 namespace signorini::test {
 

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "BoundarySegments.hpp"
-#include "CoarseMesh.hpp"
-#include "Error.hpp"
+#include "signorini/mesh/BoundarySegments.hpp"
+#include "signorini/mesh/CoarseMesh.hpp"
+#include "signorini/core/Error.hpp"
 
 using namespace signorini;
 

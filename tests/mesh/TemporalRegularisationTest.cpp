@@ -11,8 +11,8 @@
 
 #include "../TestMesh.hpp"
 #include "BruteForceMeshChecks.hpp"
-#include "ForestOverlap.hpp"
-#include "TemporalRegularisation.hpp"
+#include "signorini/mesh/ForestOverlap.hpp"
+#include "signorini/mesh/TemporalRegularisation.hpp"
 
 using namespace signorini;
 

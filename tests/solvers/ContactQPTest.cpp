@@ -17,15 +17,15 @@
 #include <Tpetra_Vector.hpp>
 
 #include "../TestMesh.hpp"
-#include "CoarseSchurCorrection.hpp"
-#include "ContactCoupling.hpp"
-#include "ContactQP.hpp"
-#include "ElasticityAssembler.hpp"
-#include "Expression.hpp"
-#include "JacobiCG.hpp"
-#include "LinearSolver.hpp"
-#include "StripSchurApproximation.hpp"
-#include "Q1Assembler.hpp"
+#include "signorini/solvers/CoarseSchurCorrection.hpp"
+#include "signorini/fem/ContactCoupling.hpp"
+#include "signorini/solvers/ContactQP.hpp"
+#include "signorini/fem/ElasticityAssembler.hpp"
+#include "signorini/core/Expression.hpp"
+#include "signorini/solvers/JacobiCG.hpp"
+#include "signorini/solvers/LinearSolver.hpp"
+#include "signorini/solvers/StripSchurApproximation.hpp"
+#include "signorini/fem/Q1Assembler.hpp"
 
 using namespace signorini;
 

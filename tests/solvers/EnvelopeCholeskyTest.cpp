@@ -8,8 +8,8 @@
 #include <numeric>
 #include <random>
 
-#include "EnvelopeCholesky.hpp"
-#include "Error.hpp"
+#include "signorini/solvers/EnvelopeCholesky.hpp"
+#include "signorini/core/Error.hpp"
 
 using namespace signorini;
 

@@ -9,10 +9,10 @@
 #include <Tpetra_Vector.hpp>
 
 #include "../TestMesh.hpp"
-#include "Error.hpp"
-#include "JacobiCG.hpp"
-#include "Q1Assembler.hpp"
-#include "ReproducibleLinearAlgebra.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/solvers/JacobiCG.hpp"
+#include "signorini/fem/Q1Assembler.hpp"
+#include "signorini/core/ReproducibleLinearAlgebra.hpp"
 
 using namespace signorini;
 

@@ -8,10 +8,10 @@
 #include <Tpetra_Vector.hpp>
 
 #include "../TestMesh.hpp"
-#include "Error.hpp"
-#include "Expression.hpp"
-#include "LinearSolver.hpp"
-#include "Q1Assembler.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/Expression.hpp"
+#include "signorini/solvers/LinearSolver.hpp"
+#include "signorini/fem/Q1Assembler.hpp"
 
 using namespace signorini;
 
@@ -59,7 +59,7 @@ TEST(LinearSolver, PreconditionersAgreeAndMueLuWinsAtLargeCourantNumber) {
 
 #include <Tpetra_MultiVector.hpp>
 
-#include "ElasticityAssembler.hpp"
+#include "signorini/fem/ElasticityAssembler.hpp"
 
 // Elasticity: MueLu with two equations per node and the rigid body modes as near-nullspace needs a
 // bounded number of CG iterations as the mesh is refined at a fixed time step (the Courant number

@@ -15,11 +15,11 @@
 #include <Tpetra_Vector.hpp>
 
 #include "../TestMesh.hpp"
-#include "JacobiCG.hpp"
-#include "LinearSolver.hpp"
-#include "MpiComm.hpp"
-#include "ReproducibleLinearAlgebra.hpp"
-#include "ReproducibleSum.hpp"
+#include "signorini/solvers/JacobiCG.hpp"
+#include "signorini/solvers/LinearSolver.hpp"
+#include "signorini/core/MpiComm.hpp"
+#include "signorini/core/ReproducibleLinearAlgebra.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 
 using namespace signorini;
 
