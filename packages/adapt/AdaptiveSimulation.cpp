@@ -419,9 +419,23 @@ dynamics::RunSummary AdaptiveSimulation::run() {
           bool finite = std::isfinite(r.eta);
           for (double x : r.cellIndicator) finite = finite && std::isfinite(x);
           std::ostringstream why;
-          if (!finite)
-            why << "the estimator's indicators are not finite numbers: Time Integration/Time Step = " << s.timeStep << " gives beta k^2 = " << s.beta * s.timeStep * s.timeStep
+          // The physical scaling divides by beta k^2 kappa and its square (kappa: the stiffness).
+          const double bk2 = s.beta * s.timeStep * s.timeStep,
+                       kappa = scalar ? s.problem.stiffness : s.problem.lameLambda + 2 * s.problem.lameMu;
+          if (!finite && bk2 * kappa > 1e-100 && bk2 * kappa < 1e100) {  // then the solution itself is out of range
+            double largest = 0;  // this rank's: a reduction here would wait for ranks whose numbers are finite
+            auto uh = s.u.getLocalViewHost(Tpetra::Access::ReadOnly);
+            for (size_t i = 0; i < uh.extent(0); ++i) largest = std::max(largest, std::abs(uh(i, 0)));
+            why << "the estimator's indicators are not finite numbers: the squares of its residuals leave the range "
+                   "of doubles (the solution reaches "
+                << largest
+                << "); are the problem's data, e.g. Problem/Body Force, Neumann Data, Initial Displacement and "
+                   "Initial Velocity, within a sensible range?";
+          } else if (!finite) {
+            why << "the estimator's indicators are not finite numbers: Time Integration/Time Step = " << s.timeStep
+                << " gives beta k^2 = " << bk2 << " and with the stiffness " << kappa << " beta k^2 kappa = " << bk2 * kappa
                 << ", which the estimate (Estimator/Scaling) cannot divide by or square in doubles";
+          }
           core::throwFirstUserError(*sim_->comm(), why.str());
         }
         etaMax = std::max(etaMax, r.eta);

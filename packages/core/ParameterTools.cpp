@@ -65,7 +65,13 @@ std::string describeValidator(const Teuchos::ParameterEntry& e) {
   }
   if (auto d = Teuchos::rcp_dynamic_cast<const Teuchos::EnhancedNumberValidator<double>>(v); !d.is_null()) {
     std::ostringstream os;  // enough digits for bounds such as 0.4999999
-    os << std::setprecision(10) << "in [" << d->getMin() << ", " << d->getMax() << "]";
+    os << std::setprecision(10);
+    // Infinite bounds are no bounds: every value must be finite (validateRecursive refuses inf).
+    const bool lower = std::isfinite(d->getMin()), upper = std::isfinite(d->getMax());
+    if (lower && upper) os << "in [" << d->getMin() << ", " << d->getMax() << "]";
+    else if (lower) os << "finite, >= " << d->getMin();
+    else if (upper) os << "finite, <= " << d->getMax();
+    else os << "finite";
     return os.str();
   }
   if (auto i = Teuchos::rcp_dynamic_cast<const Teuchos::EnhancedNumberValidator<int>>(v); !i.is_null()) {
@@ -126,10 +132,15 @@ void validateRecursive(ParameterList& deck, const ParameterList& valid, const st
         v->validate(deck.getEntry(key), key, path);
       } catch (std::exception&) {
         std::ostringstream value;
-        if (deck.getEntry(key).getAny().type() == typeid(double))
-          value << shortestText(Teuchos::any_cast<double>(deck.getEntry(key).getAny()));
-        else
-          value << deck.getEntry(key).getAny();
+        const auto& any = deck.getEntry(key).getAny();
+        if (any.type() == typeid(double)) {
+          value << shortestText(Teuchos::any_cast<double>(any));
+        } else if (any.type() == typeid(std::string)) {  // quoted, so that blanks show; long ones cut
+          const std::string& text = Teuchos::any_cast<std::string>(any);
+          value << "\"" << (text.size() > 80 ? text.substr(0, 77) + "..." : text) << "\"";
+        } else {
+          value << any;
+        }
         SIGNORINI_USER_ERROR(context << ": '" << full << "' = " << value.str() << " is not allowed; it must be "
                                      << describeValidator(ventry));
       }

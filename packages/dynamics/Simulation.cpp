@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <array>
 #include <chrono>
@@ -107,6 +108,20 @@ std::string directoryOf(const std::string& path) {
   if (path == "/dev/stdin" || isFileDescriptorPath(path)) return ".";
   const auto slash = path.find_last_of('/');
   return slash == std::string::npos ? "." : path.substr(0, slash);
+}
+
+/// An output folder or basename with a control character (a newline splits the "wrote" lines and
+/// every listing of the files), or a folder that begins with a blank (the Exodus library drops the
+/// leading blanks of its path, so its file went to another folder than the CSV tables: "   /membrane.e"
+/// became "/membrane.e"), is a user error naming \p key.
+void refuseUnusablePathText(const std::string& text, const std::string& key, bool folder) {
+  for (const char c : text)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+      SIGNORINI_USER_ERROR(key << ": contains a control character (byte " << int(static_cast<unsigned char>(c))
+                               << "); output names must be printable");
+  if (folder && !text.empty() && text.front() == ' ')
+    SIGNORINI_USER_ERROR(key << " '" << text << "': begins with a blank, which the Exodus library would drop from the "
+                             "path (its file would go to another folder than the tables); remove the leading blanks");
 }
 
 std::string stemOf(const std::string& path) {
@@ -219,8 +234,9 @@ core::ParameterList Simulation::getValidParameters() {
                 "Order every sum so that the results have the same bits on any number of ranks (docs/reproducibility.md; "
                 "scalar problems with the Jacobi preconditioner; the paper deck takes about 1.1 times as long)");
   core::addDouble(parallel, "Memory Per Rank", 0.0,
-                  "Memory each rank may use [GB] for the check that a mesh fits before it is built; 0: the "
-                  "machine's memory divided by the ranks on it (set it where a job gets a share of a node)",
+                  "Memory each rank may use [GB] for the checks that a mesh, and the contact QP's dense arrays on "
+                  "the deck's mesh, fit before they are built; 0: the machine's memory divided by the ranks on it "
+                  "(for the contact QP, all memory of rank 0's machine; set it where a job gets a share of a node)",
                   0.0);
   p.set("Parallel", parallel, "How the work is shared between MPI ranks");
   return p;
@@ -481,6 +497,13 @@ struct Simulation::Impl {
         SIGNORINI_USER_ERROR("Problem/Contact Segments: the named segments contain no boundary edge of the mesh");
       d->qp = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), coarse->diameter());
       std::vector<double> coarseQ;
+      if (step == 0) {  // the deck's mesh, before the coarse correction's m x m product (--check too)
+        const double coarseUnknowns = d->qp->usesCoarseCorrection(d->courant)
+                                          ? static_cast<double>(coarseCorrection().assembler->ownedMap()->getGlobalNumElements())
+                                          : 0.0;
+        d->qp->checkMemory(*d->A, *d->coupling, d->courant, 1e9 * deck.sublist("Parallel").get<double>("Memory Per Rank"),
+                           coarseUnknowns);
+      }
       if (d->qp->usesCoarseCorrection(d->courant)) {
         const auto& c = coarseCorrection();
         coarseQ = c.schur->schur(d->coupling->coarseLoads(*c.assembler), d->coupling->numSegments());
@@ -956,9 +979,12 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   I.initialDiscretisation = std::move(d);
   I.setupSeconds = I.timers.all();  // the deck's mesh, its matrices and solvers: run() reports them
   I.outDir = outputDir.empty() ? out.get<std::string>("Directory") : outputDir;
-  if (I.outDir.empty()) SIGNORINI_USER_ERROR("Output/Directory: empty (\".\" is the working directory)");
+  I.outDirKey = outputDir.empty() ? "Output/Directory" : "--output-dir";
+  if (I.outDir.empty()) SIGNORINI_USER_ERROR(I.outDirKey << ": empty (\".\" is the working directory)");
+  refuseUnusablePathText(I.outDir, I.outDirKey, true);
   while (I.outDir.size() > 1 && I.outDir.back() == '/') I.outDir.pop_back();  // "out/" writes "out/x", not "out//x"
   const std::string& basename = out.get<std::string>("Basename");
+  refuseUnusablePathText(basename, "Output/Basename", false);
   if (basename.find('/') != std::string::npos || basename == "." || basename == ".." ||
       (!basename.empty() && basename.find_first_not_of(" \t") == std::string::npos))
     SIGNORINI_USER_ERROR("Output/Basename '" << basename
@@ -982,7 +1008,6 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
                                                           "its results; choose another basename");
   }
   I.outputBase = I.outDir + "/" + I.basename;
-  I.outDirKey = outputDir.empty() ? "Output/Directory" : "--output-dir";
   ensureWritableDirectory(I.outDir, I.outDirKey, *comm, false);
 }
 
@@ -1205,6 +1230,11 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       for (int c = 0; c < nc; ++c) row.push_back(d->assembler->evaluateComponent(uOverlap, p.second[0], p.second[1], c));
     if (I.problem->exactSolution) {
       const auto [l2, h1] = d->assembler->errorNorms(*u, *I.problem->exactSolution, t);
+      if (!std::isfinite(l2) || !std::isfinite(h1))  // the norms are sums over all ranks: every rank stops
+        SIGNORINI_USER_ERROR("Problem/Exact Solution: the error norms of step " << step << " (t = " << t
+                                                                              << ") are not finite numbers (l2 " << l2
+                                                                              << ", h1 " << h1
+                                                                              << "): is the exact solution within the range of doubles?");
       row.push_back(l2);
       row.push_back(h1);
     }

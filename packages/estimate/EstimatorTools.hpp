@@ -403,7 +403,8 @@ EstimatorResult combineCellTerms(const Volume& volume, const std::vector<double>
 /// divided by beta k^2 is that of
 /// rho u_tt - div(kappa grad u) = f; divided by kappa as well, eta_* estimates the error's gradient
 /// and s0^2 = |<lambda, (g - u_h)_+>| / kappa the product of two displacements: eta_*, s0 and s1 all
-/// come out in units of the displacement, independent of the units of force (DESIGN 1.3-1.4).
+/// come out in units of the displacement, independent of the units of force (DESIGN 1.3-1.4); s1
+/// independent of the unit of length only with Estimator/S1 Length Scale a length of the problem.
 inline void scaleToPhysical(EstimatorResult& res, const std::vector<double>& s0Share, double s) {
   res.etaStar /= s;
   res.s0 /= std::sqrt(s);

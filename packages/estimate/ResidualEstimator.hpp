@@ -40,7 +40,7 @@ struct EstimatorInput {
   const Vector* continuationGuess = nullptr;
   /// \var mass
   /// The step's consistent M_rho and K_kappa on this mesh (optional): s1's H^1 operator is then
-  /// M / rho + K / kappa, formed from their values instead of assembled.
+  /// M / (rho l^2) + K / kappa (l: Estimator/S1 Length Scale), formed from their values instead of assembled.
   /// \var stiffness
   /// K_kappa of the step (optional; see \p mass).
   RCP<const CrsMatrix> mass, stiffness;

@@ -29,6 +29,10 @@ void BoundarySegments::add(const std::string& name, const std::string& spec, con
   if (trim(name).empty())
     SIGNORINI_USER_ERROR("Mesh/Boundary Segments: a segment with an empty name ('" << spec
                                                                                    << "'), which no list can name");
+  // The lists split at commas and drop the blanks around each item: such names could never be named either.
+  if (name.find(',') != std::string::npos || trim(name) != name)
+    SIGNORINI_USER_ERROR(key << ": a segment name with a comma or with blanks at either end, which the Problem "
+                               "lists (comma-separated, blanks dropped) cannot name; rename it");
   if (segments_.size() >= 32) SIGNORINI_USER_ERROR(key << ": at most 32 boundary segments are supported");
   Segment seg;
   seg.name = name;
@@ -50,11 +54,11 @@ void BoundarySegments::add(const std::string& name, const std::string& spec, con
     if (c.empty())
       SIGNORINI_USER_ERROR(key << ": empty condition in '" << spec
                                << "' (a comma at the end, or two commas in a row); expected \"<side set>[, x >= value]...\"");
+    if (coarse.hasSet(c))  // "top, bottom" (or "left, xmax"): a second side set where a condition belongs
+      SIGNORINI_USER_ERROR(key << ": '" << c << "' is a second side set; a segment is one side set followed by "
+                               "conditions on x or y (\"<side set>[, x >= value]...\"): make one segment per side "
+                               "set and name all of them in the Problem list (e.g. \"" << name << "_" << c << "\")");
     if (c[0] != 'x' && c[0] != 'y') {
-      if (coarse.hasSet(c))  // "top, bottom": a second side set where a condition belongs
-        SIGNORINI_USER_ERROR(key << ": '" << c << "' is a second side set; a segment is one side set followed by "
-                                 "conditions on x or y (\"<side set>[, x >= value]...\"): make one segment per side "
-                                 "set and name all of them in the Problem list (e.g. \"" << name << "_" << c << "\")");
       SIGNORINI_USER_ERROR(key << ": condition '" << c << "' must start with x or y (a segment is \"<side set>[, "
                                "x >= value]...\": one side set, then conditions)");
     }

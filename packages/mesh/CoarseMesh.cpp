@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "signorini/core/Error.hpp"
+#include "signorini/core/ParameterTools.hpp"
 #include "signorini/io/ExodusMesh.hpp"
 
 namespace signorini::mesh {
@@ -69,10 +70,17 @@ std::shared_ptr<CoarseMesh> CoarseMesh::create(const core::ParameterList& p) {
   const double levelCells = std::ldexp(1.0, p.get<int>("Refinement Level"));
   const double hx = (x1 - x0) / (p.get<int>("Cells X") * levelCells), hy = (y1 - y0) / (p.get<int>("Cells Y") * levelCells);
   const double scale = std::max({std::abs(x0), std::abs(x1), std::abs(y0), std::abs(y1)});
+  // Shifting helps only a rectangle whose cells are fine against its own size; one whose cells are
+  // below 1e-10 of its longer side (Y1 = 1e-300 with X1 = 1) is degenerate wherever it lies.
+  const bool farFromOrigin = std::min(hx, hy) >= 1e-10 * std::max(x1 - x0, y1 - y0);
   if (!(std::min(hx, hy) >= 1e-10 * scale))
     SIGNORINI_USER_ERROR("Mesh/X0, X1, Y0, Y1, Cells X, Cells Y, Refinement Level: cells of " << std::min(hx, hy)
-                         << " at coordinates of " << scale << " are below 1e-10 of them (doubles resolve 1e-16; shift "
-                         "the rectangle toward the origin)");
+                         << " at coordinates of " << scale << " are below 1e-10 of them (doubles resolve 1e-16; "
+                         << (farFromOrigin ? "shift the rectangle toward the origin)"
+                                           : "the rectangle's sides, " + core::shortestText(x1 - x0) + " and " +
+                                                 core::shortestText(y1 - y0) +
+                                                 ", or its cells along them differ too much: fewer cells or a "
+                                                 "less slender rectangle)"));
   return rectangle(x0, x1, y0, y1, p.get<int>("Cells X"), p.get<int>("Cells Y"));
 }
 

@@ -3,12 +3,17 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <limits>
 #include <sstream>
+
+#include <mpi.h>
+#include <unistd.h>
 
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
 
 namespace signorini::solvers {
 namespace {
@@ -119,9 +124,68 @@ namespace {
 constexpr int kMaxStripLayers = 40;
 int stripLayers(const core::ParameterList& p, double courant) {
   // The tolerance keeps an integral width from gaining a layer through rounding of courant.
-  return static_cast<int>(std::ceil(p.get<double>("Strip Width") * courant - 1e-9));
+  // Capped before the conversion: a Courant number of 1e9 overflowed int (and dropped the coarse correction).
+  return static_cast<int>(std::ceil(std::min(p.get<double>("Strip Width") * courant, 1e6) - 1e-9));
 }
+
 }  // namespace
+
+std::vector<int> ContactQP::segmentLayers(const fem::ContactCoupling& coupling, double courant) const {
+  // The finest segments get the layers of the mesh's Courant number, a segment of h_j (its edge
+  // length) the same physical width: courant * hFinest / h_j.
+  const int m = coupling.numSegments();
+  std::vector<double> h(static_cast<size_t>(m));
+  for (int j = 0; j < m; ++j) h[j] = coupling.segmentLength()[j] / coupling.segmentEdges()[j];
+  const double hFinest = m > 0 ? *std::min_element(h.begin(), h.end()) : 1.0;
+  std::vector<int> layers(static_cast<size_t>(m));
+  for (int j = 0; j < m; ++j) layers[j] = std::clamp(stripLayers(params_, courant * (hFinest / h[j])), 2, kMaxStripLayers);
+  return layers;
+}
+
+void ContactQP::checkMemory(const CrsMatrix& A, const fem::ContactCoupling& coupling, double courant,
+                            double bytesPerRank, double coarseUnknowns) const {
+  const double m = coupling.numSegments();
+  double strip = 0;  // node layers times the edges of each segment: at least the strip's nodes
+  if (preconditioner_ == "strip" || preconditioner_ == "strip + coarse" || preconditioner_ == "auto") {
+    const std::vector<int> layers = segmentLayers(coupling, courant);
+    for (size_t j = 0; j < layers.size(); ++j) strip += static_cast<double>(layers[j]) * coupling.segmentEdges()[j];
+    strip = std::min(strip, static_cast<double>(A.getGlobalNumRows()));  // a narrow mesh
+  }
+  if (!usesCoarseCorrection(courant)) coarseUnknowns = 0;
+  // 32-bit counts: the m x m arrays and the strip's block are sized and sent with int counts.
+  if (m * m > std::numeric_limits<int>::max() || strip * m > std::numeric_limits<int>::max())
+    SIGNORINI_USER_ERROR("Problem/Contact Segments: " << m << " contact multiplier segments"
+                         << (strip > 0 ? " and a Schur strip of at least " + std::to_string(std::lround(strip)) + " nodes"
+                                       : std::string())
+                         << " give the contact QP dense arrays of more entries than 32-bit counts hold; choose a mesh "
+                            "with fewer edges along the contact boundary");
+  // At least two m x m arrays on every rank (the Schur approximation and its factor) and the coarse
+  // correction's loads and solutions (n_c x m each), and on rank 0 the strip's B_s and W (strip x m).
+  const double everyRank = 8.0 * m * (2.0 * m + 2.0 * coarseUnknowns), rankZero = everyRank + 8.0 * m * 2.0 * strip;
+  if (bytesPerRank <= 0 && rankZero < 2.5e8) return;  // no collective for the small QPs
+  const MPI_Comm comm = core::rawMpiComm(*A.getComm());
+  double have = bytesPerRank, need = rankZero;  // the deck's budget per rank, or rank 0's node in full
+  if (bytesPerRank <= 0) {
+    MPI_Comm node;
+    MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+    int ranksOnNode = 1;
+    MPI_Comm_size(node, &ranksOnNode);
+    MPI_Comm_free(&node);
+    double nodeOfRankZero[2] = {static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE)),
+                                static_cast<double>(ranksOnNode)};
+    MPI_Bcast(nodeOfRankZero, 2, MPI_DOUBLE, 0, comm);
+    have = nodeOfRankZero[0];
+    need = rankZero + (nodeOfRankZero[1] - 1) * everyRank;
+  }
+  if (need <= have) return;
+  SIGNORINI_USER_ERROR("Problem/Contact Segments: " << m << " contact multiplier segments"
+                       << (strip > 0 ? " and a Schur strip of at least " + std::to_string(std::lround(strip)) + " nodes"
+                                     : std::string())
+                       << " need at least " << std::setprecision(3) << need / 1e9
+                       << " GB for the contact QP's dense matrices, more than the " << have / 1e9 << " GB "
+                       << (bytesPerRank > 0 ? "per rank of Parallel/Memory Per Rank" : "of the machine of rank 0")
+                       << "; choose a mesh with fewer edges along the contact boundary");
+}
 
 bool ContactQP::usesCoarseCorrection(double courant) const {
   return preconditioner_ == "strip + coarse" ||
@@ -139,14 +203,7 @@ void ContactQP::setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupli
   const std::string method = params_.get<std::string>("Newton Step Solver");
   cachedColumns_ = method == "cached columns" || (method == "auto" && usesCoarseCorrection(courant));
   if (preconditioner_ == "strip" || preconditioner_ == "strip + coarse" || preconditioner_ == "auto") {
-    // The finest segments get the layers of the mesh's Courant number, a segment of h_j (its edge
-    // length) the same physical width: courant * hFinest / h_j.
-    std::vector<double> h(static_cast<size_t>(m));
-    for (int j = 0; j < m; ++j) h[j] = segLen_[j] / coupling.segmentEdges()[j];
-    const double hFinest = m > 0 ? *std::min_element(h.begin(), h.end()) : 1.0;
-    std::vector<int> layers(static_cast<size_t>(m));
-    for (int j = 0; j < m; ++j)
-      layers[j] = std::clamp(stripLayers(params_, courant * (hFinest / h[j])), 2, kMaxStripLayers);
+    const std::vector<int> layers = segmentLayers(coupling, courant);
     strip_ = std::make_unique<StripSchurApproximation>(A, coupling, layers);
     segmentStripLayers_ = layers;
     approxQ_ = strip_->matrix();
@@ -160,11 +217,20 @@ void ContactQP::setSystem(const CrsMatrix& A, const fem::ContactCoupling& coupli
     A.getLocalDiagCopy(d);
     approxQ_ = coupling.lumpedSchurComplement(d);
   }
-  for (int j = 0; j < m; ++j)
-    if (!(approxQ_[static_cast<size_t>(j) * m + j] > 0))
+  for (int j = 0; j < m; ++j) {
+    const double q = approxQ_[static_cast<size_t>(j) * m + j];
+    if (q == 0.0)
       SIGNORINI_USER_ERROR("Problem/Contact Segments: the contact segment around ("
                            << coupling.segmentMidpoint()[j][0] << ", " << coupling.segmentMidpoint()[j][1]
                            << ") has no free unknown (every node under it is a Dirichlet node)");
+    if (!(q > 0))  // B^T A^{-1} B is positive for an SPD A: the approximation of a (nearly) singular A is not
+      throw core::SolverError("the contact Schur preconditioner (Contact/Schur Preconditioner) has the diagonal entry " +
+                              core::shortestText(q) + " at the segment around (" +
+                              core::shortestText(coupling.segmentMidpoint()[j][0]) + ", " +
+                              core::shortestText(coupling.segmentMidpoint()[j][1]) +
+                              "), not a positive number: the step matrix is singular or nearly so (a body without "
+                              "Dirichlet conditions at a time step this large?); lower Time Integration/Time Step");
+  }
 }
 
 double ContactQP::lambdaTolerance(int j) const {

@@ -61,6 +61,16 @@ class ContactQP {
                  const std::vector<double>& coarseQ = {});
   /// Whether setSystem() at this Courant number needs the coarse correction.
   bool usesCoarseCorrection(double courant) const;
+  /// A user error naming Problem/Contact Segments when the contact QP's dense arrays for the
+  /// segments of \p coupling on the step matrix \p A certainly cannot fit: at least two m x m arrays
+  /// on every rank (8 bytes per entry) and the coarse correction's two of \p coarseUnknowns x m
+  /// (when it is used), and on rank 0 two of the strip's nodes x m; against all memory of rank 0's
+  /// node (its other ranks need the every-rank part), or \p bytesPerRank > 0 per rank (Parallel/Memory
+  /// Per Rank). Also when they exceed 32-bit counts. A lower bound: the arrays really allocated are
+  /// larger (copies, elasticity's two unknowns per node); a contact boundary of 50,000 segments asked
+  /// for 80 GB. Collective (m and the strip are the same on every rank).
+  void checkMemory(const CrsMatrix& A, const fem::ContactCoupling& coupling, double courant,
+                   double bytesPerRank = 0, double coarseUnknowns = 0) const;
   /// Solves the QP for load F (owned) and weighted obstacle gbar. \p lambda is the warm start
   /// on entry and the multiplier on exit; \p u is the initial guess of the first A-solve on entry
   /// and the displacement on exit; \p G returns the weighted gap.
@@ -76,6 +86,8 @@ class ContactQP {
   double lambdaTolerance(int j) const;
 
  private:
+  /// The strip's node layers under each segment (setSystem()).
+  std::vector<int> segmentLayers(const fem::ContactCoupling& coupling, double courant) const;
   core::ParameterList params_;
   double gapTol_;
   std::string preconditioner_;

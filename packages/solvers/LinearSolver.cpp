@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <limits>
 #include <map>
 
 #include <BelosLinearProblem.hpp>
@@ -40,6 +42,35 @@ std::string firstLines(const std::string& message) {
   }
   while (!what.empty() && std::isspace(static_cast<unsigned char>(what.back()))) what.pop_back();
   return what;
+}
+
+/// The user's MueLu entries with the types of MueLu's master list: a deck or --set writes "0" for a
+/// double, "1e3" for an int or "yes" for a bool, which MueLu's validation refuses ("the correct type
+/// is double"). Integers become doubles, integral doubles integers, and 0/1 and the bool words bools;
+/// anything else is left for MueLu to judge.
+Teuchos::ParameterList typedLikeMueLu(const Teuchos::ParameterList& user) {
+  Teuchos::ParameterList typed(user);
+  const auto master = MueLu::MasterList::List();
+  for (auto it = user.begin(); it != user.end(); ++it) {
+    const std::string& key = user.name(it);
+    const auto& e = user.entry(it);
+    if (e.isList() || !master->isParameter(key)) continue;
+    const auto& want = master->getEntry(key).getAny().type();
+    if (want == typeid(double) && e.isType<int>()) {
+      typed.set(key, static_cast<double>(e.getValue<int>(nullptr)));
+    } else if (want == typeid(int) && e.isType<double>()) {
+      const double x = e.getValue<double>(nullptr);
+      if (std::isfinite(x) && x == std::floor(x) && std::abs(x) <= std::numeric_limits<int>::max())
+        typed.set(key, static_cast<int>(x));
+    } else if (want == typeid(bool) && (e.isType<int>() || e.isType<std::string>())) {
+      bool b;
+      if (e.isType<int>() && (e.getValue<int>(nullptr) == 0 || e.getValue<int>(nullptr) == 1))
+        typed.set(key, e.getValue<int>(nullptr) == 1);
+      else if (e.isType<std::string>() && core::readBool(e.getValue<std::string>(nullptr), b))
+        typed.set(key, b);
+    }
+  }
+  return typed;
 }
 
 /// Y = D^{-1} X with D the diagonal of A (one Jacobi sweep from zero, as Ifpack2's RELAXATION
@@ -174,6 +205,17 @@ std::string LinearSolver::checkParameters(const core::ParameterList& params, boo
     if (!muelu.entry(it).isList() && !valid->isParameter(muelu.name(it)))
       SIGNORINI_USER_ERROR("Linear Solver/MueLu: '" << muelu.name(it) << "' is not a MueLu parameter "
                            "(MueLu's masterList.xml lists them)");
+  // Values MueLu takes without a word and then fails on: a level count below 1 (a crash in its
+  // set-up) and numbers that are not finite.
+  for (const auto* list : {&belos, &muelu})
+    for (auto it = list->begin(); it != list->end(); ++it)
+      if (list->entry(it).isType<double>() && !std::isfinite(list->entry(it).getValue<double>(nullptr)))
+        SIGNORINI_USER_ERROR("Linear Solver/" << (list == &belos ? "Belos/" : "MueLu/") << list->name(it) << ": "
+                                              << list->entry(it).getValue<double>(nullptr) << " is not a finite number");
+  const auto typedMueLu = typedLikeMueLu(muelu);
+  if (typedMueLu.isType<int>("max levels") && typedMueLu.get<int>("max levels") < 1)
+    SIGNORINI_USER_ERROR("Linear Solver/MueLu/max levels: " << typedMueLu.get<int>("max levels")
+                         << " is below 1 (1: the coarse level alone)");
   // The Courant number that "auto" compares is set to no effect by any other choice (and by
   // reproducible arithmetic, which always solves with Jacobi).
   const std::string courant = core::keysSetOtherThanDefaults(params, getValidParameters(), "Linear Solver",
@@ -243,7 +285,7 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
     mueluParams.sublist("coarse: params").set("relaxation: sweeps", 4);
     if (I.equationsPerNode > 1) mueluParams.set("number of equations", I.equationsPerNode);
     if (!I.nullspace.is_null()) mueluParams.sublist("user data").set("Nullspace", I.nullspace);
-    mueluParams.setParameters(I.params.sublist("MueLu"));
+    mueluParams.setParameters(typedLikeMueLu(I.params.sublist("MueLu")));
     // MueLu gets its own copy of A (the assemblers' matrices view arrays their pattern shares).
     RCP<Operator> op = Teuchos::rcp(new CrsMatrix(*A, Teuchos::Copy));
     std::string failure;

@@ -588,7 +588,7 @@ TEST(PrintParameters, PrintsEveryEntryWithTypeDefaultAndDoc) {
   EXPECT_CONTAINS(text, "\nMesh/File : string = \"\"");
   EXPECT_CONTAINS(text, "\nMesh/Verbose : bool = ");
   // Doc strings on their own indented line after the entry.
-  EXPECT_CONTAINS(text, "\nTime Integration/Time Step : double = 0.0025  (in [1e-300, inf])\n    k [time], constant\n");
+  EXPECT_CONTAINS(text, "\nTime Integration/Time Step : double = 0.0025  (finite, >= 1e-300)\n    k [time], constant\n");
   EXPECT_CONTAINS(text, "Passed unchanged to Belos");
   EXPECT_CONTAINS(text, "Named boundary segments");
 }
