@@ -12,20 +12,30 @@
 
 namespace signorini::dynamics {
 
+/// The Exodus output of one pass: rank 0 owns the file series, the other ranks send it their parts.
+/// Collective over the communicator it keeps.
 class ResultWriter {
  public:
-  /// \p description: title, info records and global variable names of every file (rank 0's counts).
+  /// \p basePath: output folder and basename ("out/membrane"); the field names of the nodal, cell and
+  /// contact side-set variables; \p description: title, info records and global variable names of
+  /// every file (rank 0's counts).
   ResultWriter(const std::string& basePath, std::vector<std::string> nodalNames, std::vector<std::string> cellNames,
                std::vector<std::string> contactNames, io::ExodusDescription description, RCP<const Comm> comm);
-  /// \param nodal overlap-map vectors; \p cell one value per local cell per field;
-  /// \p contactEdges local boundary-edge indices on Gamma_C with \p contact values per field;
-  /// \p globals one value per global variable (rank 0's are written).
+  /// Appends output time \p time [time] on \p mesh; a new \p meshId starts a new file of the series.
+  /// \param meshId       differs between any two meshes of the run
+  /// \param mesh         the step's Q1 numbering
+  /// \param time         t_n
+  /// \param nodal        overlap-map vectors, one per nodal field
+  /// \param cell         one value per local cell per field
+  /// \param contactEdges local boundary-edge indices on Gamma_C
+  /// \param contact      one value per entry of \p contactEdges per field
+  /// \param globals      one value per global variable (rank 0's are written)
   void write(long meshId, const mesh::Q1Mesh& mesh, double time, const std::vector<const Vector*>& nodal,
              const std::vector<std::vector<double>>& cell, const std::vector<int>& contactEdges,
              const std::vector<std::vector<double>>& contact, const std::vector<double>& globals);
   /// Final file names (rank 0), after finalising.
   std::vector<std::string> close();
-  void abandon();
+  void abandon();  ///< a failed run: removes the series' files (io::ExodusSeriesWriter::abandon)
 
  private:
   RCP<const Comm> comm_;

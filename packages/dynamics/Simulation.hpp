@@ -22,7 +22,7 @@ namespace signorini::dynamics {
 
 /// What a finished run (or pass over [0, T]) reports back (rank 0 has the file names).
 struct RunSummary {
-  int steps = 0;
+  int steps = 0;               ///< time steps N of the run (of one pass)
   long long dofsPerStep = 0;   ///< unknowns of the last step
   long long totalDofs = 0;     ///< sum over the steps n = 1..N of the unknowns of T^n
   long meshChanges = 0;        ///< steps whose mesh differed from the previous step's
@@ -36,13 +36,19 @@ struct RunSummary {
 
 /// What a per-step hook sees right after step n was solved (references valid during the call).
 struct StepView {
-  int step;
+  int step;                              ///< n (1..N)
+  /// \var time
+  /// t_n = n k [time].
+  /// \var timeStep
+  /// k [time].
+  /// \var beta
+  /// Newmark's beta.
   double time, timeStep, beta;
-  const mesh::Forest& forest;
-  const mesh::Q1Mesh& mesh;
+  const mesh::Forest& forest;            ///< T^n
+  const mesh::Q1Mesh& mesh;              ///< T^n's Q1 numbering
   const fem::Assembler& assembler;       ///< fem::Q1Assembler (scalar wave) or fem::ElasticityAssembler
   const fem::ContactCoupling* coupling;  ///< null without obstacle
-  const fem::ProblemData& problem;
+  const fem::ProblemData& problem;       ///< the deck's data (segments, material, obstacle g)
   const Vector& u;                       ///< u_h^n
   const Vector& predictor;               ///< I_h u^{n-1} + k I_h v^{n-1} + (1/2 - beta) k^2 I_h a^{n-1}
   const std::vector<double>& lambda;     ///< scaled QP multipliers
@@ -50,23 +56,31 @@ struct StepView {
   /// StepExtras::carry of the previous step, on this step's mesh (nodal interpolation when the mesh
   /// changed); empty in the first step.
   const std::vector<RCP<Vector>>& carried;
-  /// The step's consistent mass matrix M_rho (also where the scheme lumps it) and K_kappa.
+  /// \var consistentMass
+  /// The step's consistent mass matrix M_rho (also where the scheme lumps it).
+  /// \var stiffness
+  /// The step's stiffness matrix K_kappa.
   RCP<const CrsMatrix> consistentMass, stiffness;
 };
 /// Extra per-step results from a hook: CSV columns (in the order of PassOptions::extraColumns)
 /// and one cell field for Exodus.
 struct StepExtras {
-  std::vector<double> columns;
-  std::vector<double> cellField;
+  std::vector<double> columns;    ///< the values of PassOptions::extraColumns for this step
+  std::vector<double> cellField;  ///< one value per local cell (PassOptions::cellFieldName), or empty
   /// Scalar fields on this step's mesh (owned node map) handed to the next step's hook
   /// (StepView::carried), e.g. a warm start.
   std::vector<RCP<Vector>> carry;
 };
+/// Runs after each step of a pass (Simulation::runPass): the adaptive driver's estimator.
 using StepHook = std::function<StepExtras(const StepView&)>;
 
 /// How a pass writes its outputs.
 struct PassOptions {
   std::string basename;                   ///< empty: the deck's basename
+  /// \var writeCsv
+  /// Write the step table.
+  /// \var writeExodus
+  /// Write the Exodus series (when Output/Write Exodus is true as well).
   bool writeCsv = true, writeExodus = true;
   std::vector<std::string> extraColumns;  ///< names of StepExtras::columns
   std::string cellFieldName;              ///< name of StepExtras::cellField in Exodus (empty: none)
@@ -80,6 +94,10 @@ struct PassOptions {
   bool compactMeshes = false;
 };
 
+/// One deck's dynamic Signorini problem (Newmark (3.1)-(3.2) with the contact QP (3.7)-(3.8) per
+/// step) on the deck's mesh (run()) or on a mesh per step (runPass(), for the adaptive driver).
+/// Owns the deck's copy, the mesh hierarchy and every per-mesh discretisation; collective over
+/// \p comm, which it keeps.
 class Simulation {
  public:
   /// The deck sublists Problem, Mesh, Time Integration, Contact, Linear Solver, Output.
@@ -88,6 +106,7 @@ class Simulation {
   /// \param deck      validated deck (core::validateDeck with getValidParameters()).
   /// \param deckPath  the deck's file (for messages, relative mesh files and the default basename).
   /// \param outputDir overrides Output/Directory when not empty.
+  /// \param comm      the ranks that share the run (kept).
   /// Builds the mesh and checks the problem set-up (segments, initial state against the obstacle)
   /// without writing anything; throws core::UserError on bad input.
   Simulation(const core::ParameterList& deck, const std::string& deckPath, const std::string& outputDir,
@@ -105,7 +124,7 @@ class Simulation {
                      const PassOptions& options);
   /// The deck's initial (uniform) mesh.
   std::shared_ptr<mesh::Forest> initialForest() const;
-  int numSteps() const;
+  int numSteps() const;  ///< N = Final Time / Time Step
   /// The step the current or last runPass() was computing (0: the initial state), for messages.
   int currentStep() const;
   double timeStep() const;  ///< k
@@ -117,7 +136,7 @@ class Simulation {
   /// "CG + Jacobi" and, for Preconditioner = auto, the Courant numbers c k / h_min that choose it:
   /// on the initial mesh and on a mesh refined \p finerLevels more levels (--check's plan).
   std::string linearSolverPlan(int finerLevels) const;
-  RCP<const Comm> comm() const;
+  RCP<const Comm> comm() const;  ///< the constructor's communicator
   const std::string& outputBase() const;  ///< output folder + "/" + basename
   /// The deck as the run uses it and its output files record it: validated, defaults filled in,
   /// a relative Mesh/File made absolute (--print-parameters DECK prints it).

@@ -18,10 +18,14 @@ namespace signorini::estimate {
 /// of the run shares): the H^1 operator, its form with the prescribed rows, and the last
 /// continuation, which starts the next solve (the data change little from step to step).
 struct ContinuationCache {
-  long meshId = -1;
+  long meshId = -1;                       ///< the mesh the rest belongs to (-1: none yet)
   std::vector<char> prescribed;           ///< overlap flags: contact or fixed nodes
+  /// \var full
+  /// The H^1 operator K + m M on every node.
+  /// \var constrained
+  /// The same with the prescribed rows and columns made identity (the solve's matrix).
   RCP<const CrsMatrix> full, constrained;
-  RCP<Vector> last;
+  RCP<Vector> last;                       ///< the last continuation (owned nodes): the next solve's start
 
   /// The last continuation if it lives on mesh \p id (else null).
   RCP<Vector> lastOn(long id) const { return id >= 0 && meshId == id ? last : Teuchos::null; }

@@ -20,10 +20,14 @@ namespace signorini::fem {
 
 class Q1Pattern;
 
+/// Plane strain elasticity's operators, loads and point values on one Q1Mesh (two interleaved
+/// unknowns per node). Keeps a reference to the mesh, which must outlive it.
 class ElasticityAssembler : public Assembler {
  public:
+  /// \param mesh       the Q1 numbering (kept by reference)
   /// \param dirichlet  flags on the overlap unknowns (2 per overlap node), e.g. from dirichletUnknowns().
-  /// \param lambda, mu Lame parameters [force / area].
+  /// \param lambda     first Lame parameter [force / area]
+  /// \param mu         shear modulus, the second Lame parameter [force / area]
   ElasticityAssembler(const mesh::Q1Mesh& mesh, std::vector<char> dirichlet, double lambda, double mu);
   ~ElasticityAssembler() override;
 

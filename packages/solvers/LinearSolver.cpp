@@ -342,12 +342,15 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
     try {
       its = solveReproducibleJacobiCG(*I.A, *I.diagonal, b, x, I.params.get<double>("Relative Tolerance"),
                                       I.params.get<int>("Maximum Iterations"));
-    } catch (const core::SolverError&) {
+    } catch (const core::SolverError&) {  // thrown on every rank alike: the norms below are collective
       std::ostringstream os;
-      os << "linear solver CG + Jacobi (reproducible)" << (I.systemName.empty() ? "" : " for " + I.systemName)
-         << " did not reach the relative tolerance "
-         << I.params.get<double>("Relative Tolerance") << " in " << I.params.get<int>("Maximum Iterations")
-         << " iterations (Linear Solver/Maximum Iterations)";
+      os << "linear solver CG + Jacobi (reproducible)" << (I.systemName.empty() ? "" : " for " + I.systemName);
+      if (!std::isfinite(b.norm2()) || !std::isfinite(x.norm2()))  // squares beyond doubles: no residual converges
+        os << " stopped: the squares of the right-hand side or of the iterate leave the range of doubles, so no "
+              "residual can be measured (are the problem's data within the range of doubles?)";
+      else
+        os << " did not reach the relative tolerance " << I.params.get<double>("Relative Tolerance") << " in "
+           << I.params.get<int>("Maximum Iterations") << " iterations (Linear Solver/Maximum Iterations)";
       throw core::SolverError(os.str());
     }
     I.iterations += its;

@@ -789,6 +789,14 @@ signorini_add_driver_test(contact_qp_memory EXIT 1
 signorini_add_driver_test(contact_qp_memory_control EXIT 0
   ARGS --check --output-dir {OUT} --set "Mesh/Cells Y=2000" --set "Parallel/Memory Per Rank=4" ${decks}/good.xml
   REGEX "good[.]xml is valid")
+# Under reproducible arithmetic a body force whose squares overflow made the Jacobi CG run out of
+# iterations, and the message blamed Linear Solver/Maximum Iterations.
+signorini_add_driver_test(reproducible_solve_with_data_beyond_doubles EXIT 1
+  ARGS --output-dir {OUT} --set "Problem/Body Force=1e160" --set "Parallel/Reproducible Arithmetic=true" ${decks}/good.xml
+  REGEX "linear solver CG [+] Jacobi [(]reproducible[)] for the step matrix .* stopped: the squares of the right-hand side or of the iterate leave the range of doubles")
+signorini_add_driver_test(reproducible_solve_out_of_iterations EXIT 1  # the control: finite data
+  ARGS --output-dir {OUT} --set "Parallel/Reproducible Arithmetic=true" ${decks}/solver-failure.xml
+  REGEX "linear solver CG [+] Jacobi [(]reproducible[)] for the step matrix .* did not reach the relative tolerance 1e-10 in 3 iterations [(]Linear Solver/Maximum Iterations[)]")
 # Segment names the Problem lists cannot name (they split at commas and drop blanks).
 signorini_add_driver_test(segment_name_with_a_comma EXIT 1
   ARGS --check --output-dir {OUT} "--set=Mesh/Boundary Segments/a,b=top" ${decks}/good.xml
