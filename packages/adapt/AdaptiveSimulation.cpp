@@ -420,8 +420,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
           for (double x : r.cellIndicator) finite = finite && std::isfinite(x);
           std::ostringstream why;
           // The physical scaling divides by beta k^2 kappa and its square (kappa: the stiffness).
-          const double bk2 = s.beta * s.timeStep * s.timeStep,
-                       kappa = scalar ? s.problem.stiffness : s.problem.lameLambda + 2 * s.problem.lameMu;
+          const double bk2 = s.beta * s.timeStep * s.timeStep, kappa = s.problem.waveModulus();
           if (!finite && bk2 * kappa > 1e-100 && bk2 * kappa < 1e100) {  // then the solution itself is out of range
             double largest = 0;  // this rank's: a reduction here would wait for ranks whose numbers are finite
             auto uh = s.u.getLocalViewHost(Tpetra::Access::ReadOnly);

@@ -19,14 +19,18 @@ MPI_Comm rawMpiComm(const Comm& comm) {
   return *mpi->getRawMpiComm();
 }
 
-double memoryPerRank(const Comm& comm) {
+NodeMemory nodeMemory(const Comm& comm) {
   MPI_Comm node;
   MPI_Comm_split_type(rawMpiComm(comm), MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
   int ranksOnNode = 1;
   MPI_Comm_size(node, &ranksOnNode);
   MPI_Comm_free(&node);
-  const double bytes = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
-  return bytes / ranksOnNode;
+  return {static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE)), ranksOnNode};
+}
+
+double memoryPerRank(const Comm& comm) {
+  const NodeMemory node = nodeMemory(comm);
+  return node.bytes / node.ranksOnNode;
 }
 
 namespace {

@@ -33,6 +33,13 @@ void throwFirstSolverError(const Comm& comm, const std::string& localMessage);
 /// run's .part files stay behind, and the next run in the folder removes them). Collective.
 void throwFirstUserErrorOrAbort(const Comm& comm, const std::string& localMessage, double seconds = 20.0);
 
+/// This node's physical memory and the ranks of a communicator on it (MPI_COMM_TYPE_SHARED).
+struct NodeMemory {
+  double bytes;     ///< physical memory of the node [bytes]
+  int ranksOnNode;  ///< ranks of the communicator on the node
+};
+/// This rank's node: its memory and the ranks of \p comm on it. Collective.
+NodeMemory nodeMemory(const Comm& comm);
 /// The physical memory of this node [bytes] divided by the ranks of \p comm on it
 /// (MPI_COMM_TYPE_SHARED): what one rank can use. Collective.
 double memoryPerRank(const Comm& comm);

@@ -496,18 +496,16 @@ struct Simulation::Impl {
       if (d->coupling->numSegments() == 0)
         SIGNORINI_USER_ERROR("Problem/Contact Segments: the named segments contain no boundary edge of the mesh");
       d->qp = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), coarse->diameter());
-      std::vector<double> coarseQ;
+      const CoarseProblem* correction = d->qp->usesCoarseCorrection(d->courant) ? &coarseCorrection() : nullptr;
       if (step == 0) {  // the deck's mesh, before the coarse correction's m x m product (--check too)
-        const double coarseUnknowns = d->qp->usesCoarseCorrection(d->courant)
-                                          ? static_cast<double>(coarseCorrection().assembler->ownedMap()->getGlobalNumElements())
-                                          : 0.0;
-        d->qp->checkMemory(*d->A, *d->coupling, d->courant, 1e9 * deck.sublist("Parallel").get<double>("Memory Per Rank"),
-                           coarseUnknowns);
+        const double coarseUnknowns =
+            correction ? static_cast<double>(correction->assembler->ownedMap()->getGlobalNumElements()) : 0.0;
+        d->qp->checkMemory(*d->A, *d->coupling, d->courant,
+                           1e9 * deck.sublist("Parallel").get<double>("Memory Per Rank"), coarseUnknowns);
       }
-      if (d->qp->usesCoarseCorrection(d->courant)) {
-        const auto& c = coarseCorrection();
-        coarseQ = c.schur->schur(d->coupling->coarseLoads(*c.assembler), d->coupling->numSegments());
-      }
+      std::vector<double> coarseQ;
+      if (correction)
+        coarseQ = correction->schur->schur(d->coupling->coarseLoads(*correction->assembler), d->coupling->numSegments());
       d->qp->setSystem(*d->A, *d->coupling, d->courant, coarseQ);
       if (newmark->stabilised) {
         d->projection = std::make_unique<solvers::ContactQP>(deck.sublist("Contact"), coarse->diameter());

@@ -251,7 +251,7 @@ EstimatorResult ElasticityEstimator::estimate(const ElasticityEstimatorInput& in
                                   [&](LO i) { return sign * uo(2 * i + comp, 0); }, fixedNodes, nullptr, in.solveSPD,
                                   &continuation_, in.meshId, in.continuationGuess, {}, 1.0 / (l * l));
   }
-  if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2 * (lambda + 2 * mu));
+  if (params_.get<std::string>("Scaling") == "physical") scaleToPhysical(res, s0Share, bk2 * problem.waveModulus());
   res.eta = res.etaStar + res.s0 + res.s1;
   return res;
 }

@@ -170,8 +170,7 @@ std::string ProblemData::checkParameters(const core::ParameterList& p) {
 }
 
 double ProblemData::waveSpeed() const {
-  return model == Model::ScalarWave ? std::sqrt(stiffness / density)
-                                    : std::sqrt((lameLambda + 2 * lameMu) / density);
+  return std::sqrt(waveModulus() / density);
 }
 
 void ProblemData::checkFiniteOverTime(const mesh::Q1Mesh& mesh, double timeStep, int steps) const {

@@ -60,7 +60,10 @@ struct ProblemData {
   double contactSign = 1.0;    ///< +1: u_c >= g, -1: -u_c >= g
   /// Unknowns per node: 1 (scalar wave) or 2 (elasticity).
   int components() const { return model == Model::ScalarWave ? 1 : 2; }
-  /// Fastest wave speed: sqrt(kappa / rho), or the P-wave speed sqrt((lambda + 2 mu) / rho).
+  /// The stiffness of the fastest wave: kappa [force / length], or the P-wave modulus lambda + 2 mu
+  /// [force / area]; the estimator's physical scaling divides by it.
+  double waveModulus() const { return model == Model::ScalarWave ? stiffness : lameLambda + 2 * lameMu; }
+  /// Fastest wave speed: sqrt(waveModulus() / rho).
   double waveSpeed() const;
   /// Samples the data that depend on t at the times n k, n = 1..\p steps (\p timeStep k), at the
   /// points where a step on \p mesh samples them (body force at the cells' 2x2 Gauss points, the

@@ -7,7 +7,6 @@
 #include <sstream>
 
 #include <mpi.h>
-#include <unistd.h>
 
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
@@ -151,37 +150,27 @@ void ContactQP::checkMemory(const CrsMatrix& A, const fem::ContactCoupling& coup
     for (size_t j = 0; j < layers.size(); ++j) strip += static_cast<double>(layers[j]) * coupling.segmentEdges()[j];
     strip = std::min(strip, static_cast<double>(A.getGlobalNumRows()));  // a narrow mesh
   }
-  if (!usesCoarseCorrection(courant)) coarseUnknowns = 0;
+  std::ostringstream what;  // both messages' subject
+  what << "Problem/Contact Segments: " << m << " contact multiplier segments";
+  if (strip > 0) what << " and a Schur strip of at least " << std::lround(strip) << " nodes";
   // 32-bit counts: the m x m arrays and the strip's block are sized and sent with int counts.
   if (m * m > std::numeric_limits<int>::max() || strip * m > std::numeric_limits<int>::max())
-    SIGNORINI_USER_ERROR("Problem/Contact Segments: " << m << " contact multiplier segments"
-                         << (strip > 0 ? " and a Schur strip of at least " + std::to_string(std::lround(strip)) + " nodes"
-                                       : std::string())
-                         << " give the contact QP dense arrays of more entries than 32-bit counts hold; choose a mesh "
-                            "with fewer edges along the contact boundary");
+    SIGNORINI_USER_ERROR(what.str() << " give the contact QP dense arrays of more entries than 32-bit counts hold; "
+                                       "choose a mesh with fewer edges along the contact boundary");
   // At least two m x m arrays on every rank (the Schur approximation and its factor) and the coarse
   // correction's loads and solutions (n_c x m each), and on rank 0 the strip's B_s and W (strip x m).
   const double everyRank = 8.0 * m * (2.0 * m + 2.0 * coarseUnknowns), rankZero = everyRank + 8.0 * m * 2.0 * strip;
   if (bytesPerRank <= 0 && rankZero < 2.5e8) return;  // no collective for the small QPs
-  const MPI_Comm comm = core::rawMpiComm(*A.getComm());
   double have = bytesPerRank, need = rankZero;  // the deck's budget per rank, or rank 0's node in full
   if (bytesPerRank <= 0) {
-    MPI_Comm node;
-    MPI_Comm_split_type(comm, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
-    int ranksOnNode = 1;
-    MPI_Comm_size(node, &ranksOnNode);
-    MPI_Comm_free(&node);
-    double nodeOfRankZero[2] = {static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE)),
-                                static_cast<double>(ranksOnNode)};
-    MPI_Bcast(nodeOfRankZero, 2, MPI_DOUBLE, 0, comm);
+    const core::NodeMemory node = core::nodeMemory(*A.getComm());
+    double nodeOfRankZero[2] = {node.bytes, static_cast<double>(node.ranksOnNode)};
+    MPI_Bcast(nodeOfRankZero, 2, MPI_DOUBLE, 0, core::rawMpiComm(*A.getComm()));
     have = nodeOfRankZero[0];
     need = rankZero + (nodeOfRankZero[1] - 1) * everyRank;
   }
   if (need <= have) return;
-  SIGNORINI_USER_ERROR("Problem/Contact Segments: " << m << " contact multiplier segments"
-                       << (strip > 0 ? " and a Schur strip of at least " + std::to_string(std::lround(strip)) + " nodes"
-                                     : std::string())
-                       << " need at least " << std::setprecision(3) << need / 1e9
+  SIGNORINI_USER_ERROR(what.str() << " need at least " << std::setprecision(3) << need / 1e9
                        << " GB for the contact QP's dense matrices, more than the " << have / 1e9 << " GB "
                        << (bytesPerRank > 0 ? "per rank of Parallel/Memory Per Rank" : "of the machine of rank 0")
                        << "; choose a mesh with fewer edges along the contact boundary");

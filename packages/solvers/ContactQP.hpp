@@ -64,7 +64,7 @@ class ContactQP {
   /// A user error naming Problem/Contact Segments when the contact QP's dense arrays for the
   /// segments of \p coupling on the step matrix \p A certainly cannot fit: at least two m x m arrays
   /// on every rank (8 bytes per entry) and the coarse correction's two of \p coarseUnknowns x m
-  /// (when it is used), and on rank 0 two of the strip's nodes x m; against all memory of rank 0's
+  /// (its unknowns; 0 when usesCoarseCorrection() is false), and on rank 0 two of the strip's nodes x m; against all memory of rank 0's
   /// node (its other ranks need the every-rank part), or \p bytesPerRank > 0 per rank (Parallel/Memory
   /// Per Rank). Also when they exceed 32-bit counts. A lower bound: the arrays really allocated are
   /// larger (copies, elasticity's two unknowns per node); a contact boundary of 50,000 segments asked

@@ -729,19 +729,21 @@ signorini_add_driver_test(estimate_not_finite EXIT 1
   ARGS --output-dir {OUT} --set "Time Integration/Time Step=1e-100" --set "Time Integration/Final Time=1e-100"
        --set "Adaptivity/Strategy=fixed fraction" --set "Adaptivity/Cycles=2" ${decks}/good.xml
   REGEX "the estimator's indicators are not finite numbers: Time Integration/Time Step = 1e-100 gives beta k.2 = ")
+# Checks of the MueLu sublist on a mesh where the deck sets MueLu up.
+set(muelu_check --check --output-dir {OUT} --set "Mesh/Refinement Level=4" --set "Linear Solver/Preconditioner=MueLu")
 # MueLu keys that signorini sets itself: on 2 ranks "number of equations = 3" failed MueLu's set-up
 # on one rank only and left the other waiting inside MueLu (a hang); refused before the run.
 signorini_add_driver_test(muelu_key_set_by_signorini EXIT 1
-  ARGS --check --output-dir {OUT} --set "Mesh/Refinement Level=4" --set "Linear Solver/Preconditioner=MueLu"
+  ARGS ${muelu_check}
        --set "Linear Solver/MueLu/number of equations=3" ${decks}/good.xml
   REGEX "Linear Solver/MueLu/number of equations: set by signorini from the unknowns per node of Problem/Type")
 # MueLu takes a level count below 1 and then crashed in its set-up (a segmentation fault): refused.
 signorini_add_driver_test(muelu_max_levels_below_one EXIT 1
-  ARGS --check --output-dir {OUT} --set "Mesh/Refinement Level=4" --set "Linear Solver/Preconditioner=MueLu"
+  ARGS ${muelu_check}
        --set "Linear Solver/MueLu/max levels=0" ${decks}/good.xml
   REGEX "Linear Solver/MueLu/max levels: 0 is below 1")
 signorini_add_driver_test(muelu_value_not_finite EXIT 1
-  ARGS --check --output-dir {OUT} --set "Mesh/Refinement Level=4" --set "Linear Solver/Preconditioner=MueLu"
+  ARGS ${muelu_check}
        --set "Linear Solver/MueLu/aggregation: drop tol=nan" ${decks}/good.xml
   REGEX "Linear Solver/MueLu/aggregation: drop tol: nan is not a finite number")
 # --set cannot know a MueLu key's type: "0" for a double, "1e3" for an int and "yes" for a bool take
