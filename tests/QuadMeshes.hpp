@@ -15,7 +15,7 @@
 #include <Tpetra_Core.hpp>
 
 #include "signorini/mesh/CoarseMesh.hpp"
-#include "signorini/io/ExodusMesh.hpp"
+#include "signorini/io/ExodusSeriesWriter.hpp"
 #include "signorini/core/Types.hpp"
 
 namespace signorini::test {

@@ -25,7 +25,7 @@
 #include "signorini/adapt/Marking.hpp"
 #include "signorini/core/PhaseTimers.hpp"
 #include "signorini/estimate/ElasticityEstimator.hpp"
-#include "signorini/io/ExodusMesh.hpp"
+#include "signorini/io/ExodusSeriesWriter.hpp"
 #include "signorini/estimate/ResidualEstimator.hpp"
 #include "signorini/mesh/TemporalRegularisation.hpp"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "signorini/io/ExodusMesh.hpp"
+#include "signorini/io/ExodusSeriesWriter.hpp"
 #include "signorini/mesh/Q1Mesh.hpp"
 
 namespace signorini::dynamics {

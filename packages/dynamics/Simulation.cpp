@@ -94,11 +94,25 @@ core::ParameterList outputParameters() {
                 "time as time_unconstrained: the contact solve costs time_contact / time_unconstrained of it");
   core::addNamedStrings(p, "Probes", "Named points \"x, y\": u interpolated there becomes the CSV column probe:<name> (elasticity: "
                           "probe:<name>:x and probe:<name>:y); a name holds no comma, quote or line break");
+  core::addChoice(p, "Probe Fields", "u",
+                  "The fields interpolated at each probe: u (displacement) gives probe:<name>, v (velocity) "
+                  "probe:<name>:v, a (acceleration) probe:<name>:a (elasticity: each with :x and :y appended)",
+                  {"u", "u, v", "u, v, a"});
   return p;
 }
 
-/// The longest probe name: "probe:<name>:x" must fit the 256 bytes of a netCDF name.
-constexpr size_t kMaxProbeNameLength = 248;
+/// The suffix of a probe's column for field \p field (0 u, 1 v, 2 a) and component \p c of \p nc.
+std::string probeSuffix(int field, int c, int nc) {
+  static const char* const fieldSuffix[] = {"", ":v", ":a"};
+  return std::string(fieldSuffix[field]) + (nc == 1 ? "" : c == 0 ? ":x" : ":y");
+}
+
+/// The longest probe name: "probe:<name>" and its longest suffix (":v:x") must fit the 256 bytes
+/// of a netCDF name. At least two bytes are kept for the suffix, so that the names of a deck's
+/// probes of u fit both a scalar problem and elasticity.
+size_t maxProbeNameLength(int fields, int nc) {
+  return 256 - 6 - std::max<size_t>(2, probeSuffix(fields - 1, nc - 1, nc).size());
+}
 
 bool isFileDescriptorPath(const std::string& path);
 
@@ -283,6 +297,7 @@ struct Simulation::Impl {
   std::shared_ptr<mesh::Forest> initialForest;
   std::unique_ptr<Discretisation> initialDiscretisation;  ///< built for the set-up checks; used by the first pass
   std::vector<std::pair<std::string, std::array<double, 2>>> probes;
+  int probeFields = 1;  ///< u; u and v; or u, v and a at each probe (Output/Probe Fields)
   core::PhaseTimers timers;
   std::map<std::string, double> setupSeconds;  // the phases of the constructor's set-up
   std::unique_ptr<CoarseProblem> coarseProblem;
@@ -416,7 +431,7 @@ struct Simulation::Impl {
     }
     d->courant = problem->waveSpeed() * newmark->timeStep / d->mesh->hMin();
     auto scope = timers.scope("preconditioner");
-    d->solver = std::make_unique<solvers::LinearSolver>(deck.sublist("Linear Solver"), comm);
+    d->solver = std::make_unique<solvers::LinearSolver>(deck.sublist("Linear Solver"));
     d->solver->setSystemName("the step matrix A = M + beta k^2 K");
     if (auto* elasticity = dynamic_cast<const fem::ElasticityAssembler*>(d->assembler.get()))
       d->solver->setNearNullspace(elasticity->rigidBodyModes(), 2);
@@ -520,7 +535,7 @@ struct Simulation::Impl {
     auto scope = timers.scope("preconditioner");
     auto massParams = deck.sublist("Linear Solver");
     massParams.set("Preconditioner", "Jacobi");
-    auto solver = std::make_unique<solvers::LinearSolver>(massParams, comm);
+    auto solver = std::make_unique<solvers::LinearSolver>(massParams);
     solver->setSystemName("the mass matrix M (initial data, contact stabilisation; always with Jacobi)");
     solver->setOperator(M, 0.0);
     return solver;
@@ -870,6 +885,9 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   I.newmark = std::make_unique<Newmark>(deck.sublist("Time Integration"));
 
   const auto& out = deck.sublist("Output");
+  I.probeFields = 1 + static_cast<int>(std::count(out.get<std::string>("Probe Fields").begin(),
+                                                  out.get<std::string>("Probe Fields").end(), ','));
+  const size_t maxNameLength = maxProbeNameLength(I.probeFields, I.problem->components());
   for (auto it = out.sublist("Probes").begin(); it != out.sublist("Probes").end(); ++it) {
     const std::string name = out.sublist("Probes").name(it);
     const std::string spec = Teuchos::any_cast<std::string>(out.sublist("Probes").entry(it).getAny());
@@ -878,9 +896,9 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     if (name.find_first_of(",\"\n\r") != std::string::npos || name.find_first_not_of(" \t") == std::string::npos)
       SIGNORINI_USER_ERROR("Output/Probes/" << name << ": a probe's name is a CSV column header; it must not be "
                                                "blank or hold a comma, a quote or a line break");
-    if (name.size() > kMaxProbeNameLength)
+    if (name.size() > maxNameLength)
       SIGNORINI_USER_ERROR("Output/Probes/" << name.substr(0, 40) << "...: a probe's name has at most "
-                                            << kMaxProbeNameLength << " bytes (it has " << name.size()
+                                            << maxNameLength << " bytes (it has " << name.size()
                                             << "; the Exodus files name a variable after it)");
     double x, y;
     char extra;
@@ -1137,7 +1155,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   const size_t timeOutputColumn = std::find(columns.begin(), columns.end(), "time_output") - columns.begin();
   const int nc = I.problem->components();
   for (const auto& p : I.probes)
-    for (int c = 0; c < nc; ++c) columns.push_back("probe:" + p.first + (nc == 1 ? "" : c == 0 ? ":x" : ":y"));
+    for (int field = 0; field < I.probeFields; ++field)
+      for (int c = 0; c < nc; ++c) columns.push_back("probe:" + p.first + probeSuffix(field, c, nc));
   if (I.problem->exactSolution) {
     columns.push_back("error_l2");
     columns.push_back("error_h1");
@@ -1213,6 +1232,14 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       for (int j = 0; j < d->coupling->numSegments(); ++j) force -= toPhysical * lambda[j] * d->coupling->segmentLength()[j];
     Vector uOverlap(d->assembler->overlapMap());
     d->assembler->toOverlap(*u, uOverlap);
+    const bool writeExodus = exodus && (step % exodusInterval == 0 || step == nSteps);
+    std::unique_ptr<Vector> vOverlap, aOverlap;  // for the Exodus file and the probes of v and a
+    if (writeExodus || (I.probeFields > 1 && !I.probes.empty())) {
+      vOverlap = std::make_unique<Vector>(d->assembler->overlapMap());
+      aOverlap = std::make_unique<Vector>(d->assembler->overlapMap());
+      d->assembler->toOverlap(*v, *vOverlap);
+      d->assembler->toOverlap(*a, *aOverlap);
+    }
     written = I.energies(*d, *u, *v);
     if (step == 0) transferred = written;  // the initial state: nothing moved
     const auto [kinetic, strain] = written;
@@ -1224,8 +1251,11 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                toPhysical * qr.maxComplementarity, tAssembly,
                                tContact, 0.0, tFree, tRemesh, tEstimate, double(d->forest->numGlobalCells())};
     if (measureOverhead) row.push_back(freeIterations);
+    const Vector* const fields[] = {&uOverlap, vOverlap.get(), aOverlap.get()};  // u, v, a (v, a may be null)
     for (const auto& p : I.probes)
-      for (int c = 0; c < nc; ++c) row.push_back(d->assembler->evaluateComponent(uOverlap, p.second[0], p.second[1], c));
+      for (int field = 0; field < I.probeFields; ++field)
+        for (int c = 0; c < nc; ++c)
+          row.push_back(d->assembler->evaluateComponent(*fields[field], p.second[0], p.second[1], c));
     if (I.problem->exactSolution) {
       const auto [l2, h1] = d->assembler->errorNorms(*u, *I.problem->exactSolution, t);
       if (!std::isfinite(l2) || !std::isfinite(h1))  // the norms are sums over all ranks: every rank stops
@@ -1243,10 +1273,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     }
     for (size_t c = 0; c < options.extraColumns.size(); ++c)
       row.push_back(c < extras.columns.size() ? extras.columns[c] : 0.0);
-    if (exodus && (step % exodusInterval == 0 || step == nSteps)) {
-      Vector vOverlap(d->assembler->overlapMap()), aOverlap(d->assembler->overlapMap());
-      d->assembler->toOverlap(*v, vOverlap);
-      d->assembler->toOverlap(*a, aOverlap);
+    if (writeExodus) {
       std::vector<std::vector<double>> cell = {std::vector<double>(d->mesh->cellLevel().begin(), d->mesh->cellLevel().end())};
       if (!options.cellFieldName.empty())
         cell.push_back(extras.cellField.empty() ? std::vector<double>(d->mesh->numLocalCells(), 0.0) : extras.cellField);
@@ -1265,7 +1292,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
           contact[1].push_back(gap[j] / d->coupling->segmentLength()[j]);
         }
       std::vector<RCP<Vector>> parts;
-      for (const Vector* f : {&uOverlap, &vOverlap, &aOverlap})
+      for (const Vector* f : fields)
         for (int c = 0; c < nc; ++c)
           parts.push_back(nc == 1 ? Teuchos::rcpFromRef(const_cast<Vector&>(*f)) : component(*f, c, nc, d->mesh->overlapMap()));
       std::vector<const Vector*> nodal;

@@ -8,7 +8,7 @@
 
 #include "signorini/core/Error.hpp"
 #include "signorini/core/ParameterTools.hpp"
-#include "signorini/io/ExodusMesh.hpp"
+#include "signorini/io/QuadMesh.hpp"
 
 namespace signorini::mesh {
 

@@ -106,7 +106,6 @@ class JacobiPreconditioner : public Operator {
 
 struct LinearSolver::Impl {
   core::ParameterList params;
-  RCP<const Comm> comm;
   RCP<const CrsMatrix> A;
   RCP<Operator> prec;
   RCP<BelosSolver> solver;
@@ -241,9 +240,8 @@ std::string LinearSolver::checkParameters(const core::ParameterList& params, boo
   return ignored.empty() ? "" : "reproducible arithmetic solves with its own Jacobi CG; without effect: " + ignored;
 }
 
-LinearSolver::LinearSolver(const core::ParameterList& params, RCP<const Comm> comm) : impl_(std::make_unique<Impl>()) {
+LinearSolver::LinearSolver(const core::ParameterList& params) : impl_(std::make_unique<Impl>()) {
   impl_->params = params;
-  impl_->comm = comm;
 }
 
 LinearSolver::~LinearSolver() = default;

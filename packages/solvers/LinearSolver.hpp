@@ -17,7 +17,8 @@ inline constexpr const char* kNotPositiveDefiniteHint =
 
 /// A^{-1} for the step matrix A = M + beta k^2 K: a Belos Krylov solver (CG by default) with a MueLu (smoothed
 /// aggregation) or Jacobi (diagonal) preconditioner, configured from the deck's "Linear Solver" sublist; "Belos" and
-/// "MueLu" sublists are passed through unchanged. Keeps the RCPs it is given (comm, A, near-nullspace modes).
+/// "MueLu" sublists are passed through unchanged. Keeps the RCPs it is given (A, near-nullspace modes); the
+/// communicator is A's.
 class LinearSolver {
  public:
   /// The valid "Linear Solver" sublist (Method, Preconditioner, Auto MueLu Courant Number, Relative Tolerance,
@@ -35,8 +36,7 @@ class LinearSolver {
   /// effect under reproducible arithmetic.
   static std::string checkParameters(const core::ParameterList& params, bool reproducible);
   /// \param params a validated "Linear Solver" sublist; copied.
-  /// \param comm   the communicator of the systems; kept.
-  LinearSolver(const core::ParameterList& params, RCP<const Comm> comm);
+  explicit LinearSolver(const core::ParameterList& params);
   ~LinearSolver();
 
   /// For systems with several unknowns per node (numbered node-major, as fem::Assembler does):

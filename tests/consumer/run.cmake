@@ -12,7 +12,7 @@ foreach(header core/Types.hpp dynamics/Simulation.hpp adapt/AdaptiveSimulation.h
     message(FATAL_ERROR "include/signorini/${header} was not installed")
   endif()
 endforeach()
-foreach(header fem/AssemblyTools.hpp fem/Q1Pattern.hpp estimate/EstimatorTools.hpp)
+foreach(header fem/AssemblyTools.hpp fem/Q1Pattern.hpp estimate/EstimatorTools.hpp io/ExodusCalls.hpp)
   if(EXISTS ${WORK}/prefix/include/signorini/${header})
     message(FATAL_ERROR "the internal header include/signorini/${header} was installed")
   endif()

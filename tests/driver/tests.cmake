@@ -465,6 +465,12 @@ string(REPEAT "p" 249 long_probe_name)
 signorini_add_driver_test(bad_probe_name_too_long EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/${long_probe_name}=0.5, 0.5" ${decks}/good.xml
   REGEX "Output/Probes/p+[.][.][.]: a probe's name has at most 248 bytes [(]it has 249")
+# With v probed, elasticity's longest column is "probe:<name>:v:x": two bytes fewer for the name.
+string(REPEAT "p" 247 long_probe_name)
+signorini_add_driver_test(bad_probe_name_too_long_for_velocity EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probes/${long_probe_name}=0.05, 0.01" --set "Output/Probe Fields=u, v"
+       ${decks}/block-into-wall.xml
+  REGEX "Output/Probes/p+[.][.][.]: a probe's name has at most 246 bytes [(]it has 247")
 signorini_add_driver_test(bad_probe_point EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/centre=0.5 0.5" ${decks}/good.xml
   REGEX "Output/Probes/centre: expected \"x, y\", got \"0[.]5 0[.]5\"")

@@ -30,7 +30,6 @@
 
 #include "signorini/fem/ContactCoupling.hpp"
 #include "signorini/core/Error.hpp"
-#include "signorini/io/ExodusMesh.hpp"
 #include "../QuadMeshes.hpp"
 #include "../TestMesh.hpp"
 #include "signorini/estimate/EstimatorTools.hpp"

@@ -32,7 +32,7 @@ RCP<Vector> project(const fem::Q1Assembler& asmb, const Vector& b) {
   p.set("Relative Tolerance", 1e-13);
   p.set("Preconditioner", "Jacobi");
   core::validateDeck(p, solvers::LinearSolver::getValidParameters(), "test");
-  solvers::LinearSolver solver(p, asmb.mesh().comm());
+  solvers::LinearSolver solver(p);
   solver.setOperator(M, 0.0);
   auto x = Teuchos::rcp(new Vector(b.getMap()));
   solver.solve(b, *x);

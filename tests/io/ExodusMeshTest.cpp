@@ -1,7 +1,7 @@
 /// \file ExodusMeshTest.cpp
 /// Tests of the Exodus II mesh reader and result-series writer.
 #include "signorini/core/Error.hpp"
-#include "signorini/io/ExodusMesh.hpp"
+#include "signorini/io/ExodusSeriesWriter.hpp"
 
 #include <exodusII.h>
 #include <gtest/gtest.h>

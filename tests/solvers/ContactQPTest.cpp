@@ -390,7 +390,7 @@ TEST(StripSchurApproximation, IsExactWhenTheStripCoversTheDomain) {
   const int ns = B.numSegments();
   solvers::StripSchurApproximation strip(*A, B, 10);
   EXPECT_EQ(strip.stripSize(), static_cast<long long>(m.numGlobalNodes()));
-  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()), m.comm());
+  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()));
   solver.setOperator(A, 1.0);
   const auto Q = denseSchurComplement(solver, B, *m.ownedMap());
   Vector w(m.ownedMap()), Be(m.ownedMap()), ws(m.ownedMap());
@@ -462,7 +462,7 @@ TEST(StripSchurApproximation, WidthFollowsEachSegment) {
   EXPECT_EQ(perSegment.stripSize(), uniform.stripSize());
   EXPECT_EQ(perSegment.matrix(), uniform.matrix());
   // A wider strip along one segment brings its Schur block closer to the exact one.
-  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()), m.comm());
+  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()));
   solver.setOperator(A, 1.0);
   const auto Q = denseSchurComplement(solver, B, *m.ownedMap());
   solvers::StripSchurApproximation wideFirst(*A, B, std::vector<int>{6, 1, 1, 1}), narrow(*A, B, 1);
@@ -492,7 +492,7 @@ TEST(StripSchurApproximation, OrdersAGradedStripAlongTheContactBoundary) {
     EXPECT_EQ(strip.ordersAlongContact(), graded) << (graded ? "graded" : "uniform") << " strip of "
                                                   << strip.stripSize() << " nodes";
     ASSERT_EQ(strip.stripSize(), static_cast<long long>(m.numGlobalNodes()));
-    solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()), m.comm());
+    solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()));
     solver.setOperator(A, 1.0);
     const auto Q = denseSchurComplement(solver, B, *m.ownedMap());
     const int ns = B.numSegments();
@@ -622,7 +622,7 @@ TEST_P(ContactQPTest, MatchesEnumeratedSolutionAndSatisfiesKKT) {
   const double k = square.k;
   const int ns = square.ns;
   ASSERT_EQ(ns, 4);
-  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()), m.comm());
+  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters()));
   solver.setOperator(A, 1.0);
   // The obstacle is tilted, so some segments touch.
   const auto gbar = B.weightedObstacle(core::Expression(std::to_string(obstacleHeight) + " + 0.3*y", "test"), 0.0);
@@ -698,7 +698,7 @@ TEST(ContactQP, ReturnsOnlyResultsWithinItsTolerance) {
   const int ns = square.ns;
   core::ParameterList linear;
   linear.set("Relative Tolerance", 1e-15);
-  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters(), linear), m.comm());
+  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters(), linear));
   solver.setOperator(square.A, 1.0);
   const auto gbar = B.weightedObstacle(core::Expression("-1.6 + 0.3*y", "test"), 0.0);
   // (KKT Tolerance, length scale): the gap tolerance is their product. The last asks for 1e-17 of
@@ -744,7 +744,7 @@ TEST(ContactQP, ActiveGapsMeetATenthOfTheTolerance) {
   const int ns = square.ns;
   core::ParameterList linear;
   linear.set("Relative Tolerance", 1e-15);
-  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters(), linear), square.m.comm());
+  solvers::LinearSolver solver(validated(solvers::LinearSolver::getValidParameters(), linear));
   solver.setOperator(square.A, 1.0);
   for (const char* obstacle : {"-1.6 + 0.3*y", "-1.3 + 0.3*y", "-0.5 + 0.3*y"}) {
     const auto gbar = B.weightedObstacle(core::Expression(obstacle, "test"), 0.0);

@@ -30,7 +30,7 @@ TEST(LinearSolver, PreconditionersAgreeAndMueLuWinsAtLargeCourantNumber) {
     core::ParameterList p;
     p.set("Preconditioner", prec);
     core::validateDeck(p, solvers::LinearSolver::getValidParameters(), "test");
-    solvers::LinearSolver solver(p, m.comm());
+    solvers::LinearSolver solver(p);
     solver.setOperator(A, 20.0);
     EXPECT_EQ(solver.preconditioner(), prec);
     auto x = Teuchos::rcp(new Vector(m.ownedMap()));
@@ -50,7 +50,7 @@ TEST(LinearSolver, PreconditionersAgreeAndMueLuWinsAtLargeCourantNumber) {
   // "auto" picks Jacobi below the threshold Courant number and MueLu above it.
   core::ParameterList p;
   core::validateDeck(p, solvers::LinearSolver::getValidParameters(), "test");
-  solvers::LinearSolver autoSolver(p, m.comm());
+  solvers::LinearSolver autoSolver(p);
   autoSolver.setOperator(A, 1.0);
   EXPECT_EQ(autoSolver.preconditioner(), "Jacobi");
   autoSolver.setOperator(A, 20.0);
@@ -83,7 +83,7 @@ TEST(LinearSolver, ElasticityMueLuIterationsStayBoundedUnderRefinement) {
       core::ParameterList p;
       p.set("Preconditioner", "MueLu");
       core::validateDeck(p, solvers::LinearSolver::getValidParameters(), "test");
-      solvers::LinearSolver solver(p, m.comm());
+      solvers::LinearSolver solver(p);
       if (modes) solver.setNearNullspace(asmb.rigidBodyModes(), 2);
       solver.setOperator(A, c * k / m.hMin());
       Vector x(asmb.ownedMap());
@@ -114,7 +114,7 @@ TEST(LinearSolver, EverySupportedMethodSolvesTheStepSystemAndOthersAreRefused) {
     p.set("Preconditioner", "Jacobi");
     core::validateDeck(p, solvers::LinearSolver::getValidParameters(), "test");
     EXPECT_EQ(solvers::LinearSolver::checkParameters(p, false), "") << spelling;
-    solvers::LinearSolver solver(p, m.comm());
+    solvers::LinearSolver solver(p);
     solver.setOperator(A, 1.0);
     Vector x(m.ownedMap());
     solver.solve(b, x);

@@ -113,7 +113,7 @@ Solved solve(int how, bool reproducible, bool throughLinearSolver = false) {
     params.set("Preconditioner", "auto");  // Jacobi under reproducible arithmetic
     params.set("Relative Tolerance", 1e-12);
     params.set("Maximum Iterations", 5000);
-    solvers::LinearSolver solver(params, comm);
+    solvers::LinearSolver solver(params);
     solver.setOperator(A, 0.0);
     s.iterations = solver.solve(b, x);
   } else {

@@ -1,37 +1,15 @@
 #pragma once
-/// \file ExodusMesh.hpp
-/// Exodus II input (coarse QUAD4 meshes with named side sets) and output (result time series
-/// on meshes that may change from one output step to the next). Serial: the caller gathers
-/// the data on one rank and calls these functions there.
-#include <array>
-#include <map>
+/// \file ExodusSeriesWriter.hpp
+/// Exodus II output: result time series on meshes that may change from one output step to the
+/// next. Serial: the caller gathers the data on one rank and writes there.
+#include "signorini/io/QuadMesh.hpp"
+
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace signorini::io {
 
-/// A 2D quadrilateral mesh as read from or written to Exodus II.
-struct QuadMesh {
-  /// \var x
-  /// vertex x coordinates (length units of the deck)
-  std::vector<double> x, y;                ///< vertex coordinates (length units of the deck)
-  std::vector<std::array<int, 4>> quads;   ///< 0-based vertex ids, counter-clockwise (Exodus QUAD4 order)
-  /// Named side sets: name -> list of (quad index, local side s), side s joins vertices s and (s+1)%4
-  /// (Exodus side numbering minus one).
-  std::map<std::string, std::vector<std::array<int, 2>>> sideSets;
-};
-
-/// Reads the coarse mesh of an Exodus II file: all element blocks must be QUAD4 (or QUAD),
-/// side sets keep their names (unnamed ones become "sideset_<id>").
-/// Clockwise quads are reversed to counter-clockwise order (their sides renumbered to match).
-/// Throws core::UserError naming the file for a missing/unreadable file, a non-quad block,
-/// a 3D mesh (three coordinates are taken when z is one value: a plane z = const), a mesh without
-/// elements, a zero-area quad or an invalid side-set entry.
-QuadMesh readExodusQuadMesh(const std::string& path);
-
-/// Removes the files "<basePath>.e-s.<digits>" (the tail of a series written earlier with this
-/// base) that the run does not write again, so that ParaView does not group them with a new
 /// series: at once, or when the run's io::OutputStaging commits (io::retireOnCommit); missing
 /// files are no error.
 void removeExodusSeriesTail(const std::string& basePath);

@@ -1,0 +1,37 @@
+#pragma once
+/// \file ExodusCalls.hpp
+/// The Exodus II library's error handling as the io package uses it (internal: shared by the
+/// mesh reader and the series writer, not installed).
+#include "signorini/core/Error.hpp"
+
+#include <exodusII.h>
+
+#include <string>
+
+namespace signorini::io::detail {
+
+/// Silences the Exodus library: no messages on stderr, no abort(); errors reach us as return
+/// codes and become exceptions.
+inline void silenceExodus() { ex_opts(0); }
+
+/// The last message the Exodus library recorded, for error reports.
+inline std::string lastExodusMessage() {
+  const char* message = nullptr;
+  const char* function = nullptr;
+  int code = 0;
+  ex_get_err(&message, &function, &code);
+  std::string text;
+  if (function && *function) text += std::string(function) + ": ";
+  if (message && *message) text += message;
+  return text;
+}
+
+/// Throws a UserError naming the file when an Exodus call failed (negative status).
+inline void checkExodus(int status, const char* call, const std::string& path) {
+  if (status < 0) {
+    SIGNORINI_USER_ERROR("Exodus II file '" << path << "': " << call << " failed ("
+                                            << lastExodusMessage() << ")");
+  }
+}
+
+}  // namespace signorini::io::detail

@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# Output/Probe Fields: the probes of v and a are the run's velocity and acceleration at the probe.
+#  - Newmark's relations (3.1)-(3.2) hold at every probe in every step (check_probe_rates.py), with
+#    Alpha = 0.6, Beta = 0.4 so that each term counts, through contact, for the membrane (1 rank) and
+#    for an elastic block on 2 ranks;
+#  - the block flies freely at 5 m/s until its first contact: v = (5, 0) and a = 0 at both probes;
+#  - the other columns (time_* aside) are bit for bit those of a run with the default "u";
+#  - the Exodus files carry the new columns as global variables;
+#  - controls: the checker fails on a table whose v is one step late, and on a table without v.
+# Usage: probe_fields.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
+# MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (cmake/SignoriniTesting.cmake).
+set -uo pipefail
+signorini=$1 src=$3 work=$4
+IFS='|' read -r -a launcher <<< "$2"
+py=/usr/bin/python3
+check="$py $src/tests/dynamics/check_probe_rates.py"
+decks=$src/tests/driver/decks
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+run() {  # run NAME NP ARGS...: the run's folder is $work/NAME
+  local name=$1 np=$2; shift 2
+  "${launcher[0]}" "${launcher[1]:--n}" "$np" "${launcher[@]:2}" "$signorini" --output-dir "$work/$name" "$@" > "$work/$name.log" 2>&1 ||
+    { cat "$work/$name.log"; fail "run $name"; }
+}
+newmark=(--set "Time Integration/Alpha=0.6" --set "Time Integration/Beta=0.4")
+membrane=(--set "Time Integration/Final Time=1.2" --set "Output/Probes/middle=0.5, 0.5"
+          --set "Output/Probes/edge=1, 0.25" "${newmark[@]}")
+run membrane 1 "${membrane[@]}" --set "Output/Probe Fields=u, v, a" "$decks/good.xml"
+run membrane_u 1 "${membrane[@]}" "$decks/good.xml"
+block=(--set "Adaptivity/Strategy=none" --set "Output/Probes/face=0.1, 0.025" --set "Output/Probes/inside=0.03, 0.01"
+       --set "Output/Probe Fields=u, v, a" "${newmark[@]}")
+run block 2 "${block[@]}" "$decks/block-into-wall.xml"
+
+$check "$work/membrane/good.steps.csv" 0.6 0.4 0.0025 || fail "membrane: Newmark relations at the probes"
+$check "$work/block/block-into-wall.steps.csv" 0.6 0.4 2e-6 || fail "block: Newmark relations at the probes"
+
+$py - "$work" <<'PY' || exit 1
+import csv, glob, sys
+import netCDF4
+work = sys.argv[1]
+def table(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+def fail(message):
+    print("FAIL:", message)
+    sys.exit(1)
+full, plain = table(f"{work}/membrane/good.steps.csv"), table(f"{work}/membrane_u/good.steps.csv")
+if not any(int(r["active"]) > 0 for r in full):
+    fail("the membrane run has no contact: the relations were not checked through contact")
+columns = [c for c in plain[0] if not c.startswith("time_")]
+extra = [c for c in full[0] if c not in plain[0]]
+if extra != ["probe:middle:v", "probe:middle:a", "probe:edge:v", "probe:edge:a"]:
+    fail(f"the columns Probe Fields adds: {extra}")
+for a, b in zip(full, plain):
+    for c in columns:
+        if a[c] != b[c]:
+            fail(f"step {a['step']}: {c} is {a[c]} with v and a probed, {b[c]} without")
+block = table(f"{work}/block/block-into-wall.steps.csv")
+first = next(n for n, r in enumerate(block) if int(r["active"]) > 0)
+if first < 10:
+    fail(f"the block touches the wall in step {first}: too early for the free-flight check")
+for r in block[:first]:
+    for p in ("face", "inside"):
+        values = [float(r[f"probe:{p}:{s}"]) for s in ("v:x", "v:y", "a:x", "a:y")]
+        if abs(values[0] - 5) > 1e-12 or max(abs(x) for x in values[1:]) > 1e-6:
+            fail(f"block step {r['step']}: probe {p} (v, a) = {values} in free flight at (5, 0) m/s")
+names = set()
+for f in glob.glob(f"{work}/block/block-into-wall.e*"):
+    with netCDF4.Dataset(f) as d:
+        names |= {bytes(row).rstrip(b"\0").decode() for row in d.variables["name_glo_var"][:].data}
+wanted = {f"probe:{p}:{s}" for p in ("face", "inside") for s in ("x", "y", "v:x", "v:y", "a:x", "a:y")}
+if not wanted <= names:
+    fail(f"Exodus global variables lack {sorted(wanted - names)}")
+print(f"membrane: contact in {sum(int(r['active']) > 0 for r in full)} steps, other columns bit for bit; "
+      f"block: free flight to step {first}, Exodus globals present")
+PY
+
+# Controls: v one step late, and a table without v, fail the checker.
+$py - "$work" <<'PY'
+import csv, sys
+work = sys.argv[1]
+with open(f"{work}/membrane/good.steps.csv", newline="") as f:
+    rows = list(csv.DictReader(f))
+late = [dict(r) for r in rows]
+for n in range(len(rows) - 1, 0, -1):
+    late[n]["probe:middle:v"] = rows[n - 1]["probe:middle:v"]
+with open(f"{work}/late.csv", "w", newline="") as f:
+    w = csv.DictWriter(f, fieldnames=list(rows[0]))
+    w.writeheader()
+    w.writerows(late)
+PY
+$check "$work/late.csv" 0.6 0.4 0.0025 > "$work/late.log" && fail "control: the checker passed v one step late"
+grep -q "probe:middle:v step 1: the Newmark relation" "$work/late.log" || { cat "$work/late.log"; fail "control: late v"; }
+$check "$work/membrane_u/good.steps.csv" 0.6 0.4 0.0025 > "$work/plain.log" && fail "control: the checker passed a table without v"
+echo "PASS"
