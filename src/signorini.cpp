@@ -43,7 +43,8 @@ const char* kUsage =
     "  --output-dir DIR          write all output to DIR (overrides Output/Directory; also --output-dir=DIR)\n"
     "  --set 'Sublist/key=value' override a deck entry (repeatable, validated like the deck; also --set=...)\n"
     "  --version                 the versions of signorini and of the libraries it was built with\n"
-    "  --help                    this text\n"
+    "  --help, -h                this text\n"
+    "  --kokkos-help             Kokkos' own options (for a threaded build --kokkos-threads=N), passed to Kokkos\n"
     "  --                        the arguments after it are decks\n";
 
 /// "signorini 0.1.0" and the libraries this executable was built with (--version).

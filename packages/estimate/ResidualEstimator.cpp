@@ -153,8 +153,8 @@ core::ParameterList ResidualEstimator::getValidParameters() {
                 "positive part (one extra linear solve in steps where it is non-zero); false sets s1 = 0");
   core::addChoice(p, "Scaling", "physical",
                   "\"step\": eta_* and s0 exactly as written for the step equation c(u, phi) + <lambda_H, phi> = "
-                  "(F_h, phi), whose residuals carry the factor beta k^2 (so eta_* and s0 are 1e-6 and s1 dominates "
-                  "eta); \"physical\": the same terms divided by beta k^2 kappa (eta_*) and sqrt(beta k^2 kappa) (s0), "
+                  "(F_h, phi), whose residuals carry the factor beta k^2 (on the membrane eta_* is about 1e-6, s0 1e-4 and s1 1e-2: s1 "
+                  "dominates eta); \"physical\": the same terms divided by beta k^2 kappa (eta_*) and sqrt(beta k^2 kappa) (s0), "
                   "kappa the stiffness (Problem/Stiffness; elasticity: lambda + 2 mu), i.e. for the equation divided "
                   "by beta k^2 kappa with the physical multiplier: eta_* and s0 in units of the displacement, "
                   "whatever the units of force and length (s1 too, with S1 Length Scale a length of the problem), "
