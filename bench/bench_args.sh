@@ -1,17 +1,15 @@
-# Shared by the bench scripts (sourced): the rank count and the build, with a record of what ran.
+# Shared by the bench scripts (sourced): the rank count and the build, with a record of what ran;
+# -h/--help and SIGNORINI_NO_BUILD as in tools/ (tools/script_args.sh: help_only, build_first, mpi_launcher).
+source "$(dirname "${BASH_SOURCE[0]}")/../tools/script_args.sh"
 
-# Builds build/src/signorini (unless SIGNORINI_NO_BUILD=1), sets mpirun (the launcher the build's
+# Builds build/src/signorini (unless SIGNORINI_NO_BUILD=1; 0 or unset: build), sets mpirun (the launcher the build's
 # tests use: CMake's MPIEXEC_* cache entries, e.g. Open MPI's mpiexec -n N --oversubscribe
 # --allow-run-as-root) and says which code and how many ranks.
 build_and_describe() {
-  [ -n "${SIGNORINI_NO_BUILD:-}" ] || bash tools/build.sh > /dev/null
+  build_first
   [ -x build/src/signorini ] || { echo "no build/src/signorini: build first (bash tools/build.sh)" >&2; exit 2; }
-  cached() { sed -n "s/^$1:[A-Z]*=//p" build/CMakeCache.txt; }
-  local exe flag
-  exe=$(cached MPIEXEC_EXECUTABLE)
-  flag=$(cached MPIEXEC_NUMPROC_FLAG)
-  IFS=';' read -r -a preflags <<< "$(cached MPIEXEC_PREFLAGS)"
-  mpirun=("${exe:-mpiexec}" "${flag:--n}" "$np" "${preflags[@]}")
+  [ -f build/CMakeCache.txt ] || echo "note: no build/CMakeCache.txt: the launcher is mpiexec -n $np --oversubscribe --allow-run-as-root"
+  mpi_launcher "$np"
   echo "benchmark in the working tree of $(git describe --always --dirty 2>/dev/null || echo 'an unknown commit')," \
     "build/src/signorini of $(date -r build/src/signorini '+%Y-%m-%d %H:%M'), $np rank(s), on $(nproc) core(s)," \
     "$(date '+%Y-%m-%d %H:%M')"

@@ -11,23 +11,30 @@ import time
 
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tools"))
+from tool_errors import InputError, fail, read_table  # noqa: E402
+
+if len(sys.argv) >= 2 and sys.argv[1] in ("-h", "--help"):
+    print(__doc__)
+    sys.exit(0)
 if len(sys.argv) < 2 or (sys.argv[1] != "--ratios" and len(sys.argv) != 2) or sys.argv[1:] == ["--ratios"]:
     sys.exit(__doc__)
 base = sys.argv[1]
 
 
 def table(name):
+    """The CSV table name; one line (tool_errors.fail) if it is missing, empty or cut short."""
     try:
-        return np.atleast_1d(np.genfromtxt(name, delimiter=",", names=True))
-    except OSError as e:
-        sys.exit(f"{name}: {e.strerror or e}")
+        return np.atleast_1d(read_table(name))
+    except InputError as e:
+        fail(e)
 
 
 def steps_and_units(name):
     """The step table's rows after step 0, each step's cost and its unconstrained solve [s]."""
     s = table(name)[1:]
     if "time_unconstrained" not in (s.dtype.names or ()) or not (s["time_unconstrained"] > 0).all():
-        sys.exit(f"{name}: no unconstrained solve timed in every step: run with Output/Measure Contact Overhead = true")
+        fail(f"{name}: no unconstrained solve timed in every step: run with Output/Measure Contact Overhead = true")
     step = s["time_remesh"] + s["time_assembly"] + s["time_contact"] + s["time_estimate"] + s["time_output"]
     return s, step, s["time_unconstrained"]
 
@@ -46,15 +53,18 @@ if sys.argv[1] == "--ratios":
     sys.exit(0)
 
 c = table(base + ".cycles.csv")
-steps_and_units(base + ".steps.csv")  # refuses a run without the measurement before anything is printed
-print(f"{base}.cycles.csv, written {time.strftime('%Y-%m-%d %H:%M', time.localtime(os.path.getmtime(base + '.cycles.csv')))}")
+# Every input before anything is printed: refuses a run without the measurement or a table missing.
+steps_and_units(base + ".steps.csv")
+if len(c) > 1:
+    steps_and_units(f"{base}.cycle{len(c) - 2}.steps.csv")
 # The phases are exclusive; "other" is what none covers (predictors, the Newmark update, the
 # transfer energies, a later cycle's initial state). "unconstrained" is the measurement itself.
 phases = ["time_remesh_transfer", "time_assembly", "time_preconditioner", "time_contact", "time_estimate_mark",
           "time_output", "time_regularise", "time_unconstrained", "time_other"]
 missing = [p for p in phases if p not in (c.dtype.names or ())]
 if missing:
-    sys.exit(f"{base}.cycles.csv: no column {', '.join(missing)} (written by an older signorini?)")
+    fail(f"{base}.cycles.csv: no column {', '.join(missing)} (written by an older signorini?)")
+print(f"{base}.cycles.csv, written {time.strftime('%Y-%m-%d %H:%M', time.localtime(os.path.getmtime(base + '.cycles.csv')))}")
 print(f"total wall time over {len(c)} cycles: {c['wall_seconds'].sum():.1f} s "
       "(phases: remesh_transfer = the Q1 numbering and the transfer; assembly = matrices, loads, B; preconditioner ="
       " the solver and contact Schur preconditioner set-up; estimate_mark = estimator, marking, refinement)")

@@ -54,7 +54,7 @@ if args.every < 1:
 
 
 def series(base):
-    files = sorted(glob.glob(base + ".e") + glob.glob(base + ".e-s.*"),
+    files = sorted(glob.glob(glob.escape(base) + ".e") + glob.glob(glob.escape(base) + ".e-s.*"),
                    key=lambda f: int(f.rsplit(".", 1)[1]) if ".e-s." in f else 0)
     if not files:
         fail(f"{base}.e: no such file (no Exodus files {base}.e*)")
@@ -95,15 +95,16 @@ hx = min((m["x"].max(1) - m["x"].min(1)).min() for m in meshes + others)
 hy = min((m["y"].max(1) - m["y"].min(1)).min() for m in meshes + others)
 
 
-def on_lattice(v, origin, h):
+def on_lattice(v, origin, h, name):
     i = np.rint((v - origin) / h).astype(np.int64)
     if np.abs(origin + i * h - v).max() > 1e-6 * h:
-        sys.exit("corners off the lattice of the finest cell: not a dyadic refinement of a uniform grid")
+        fail(f"{name}: cell corners off the lattice of the series' finest cell: not a dyadic refinement of a "
+             "uniform grid")
     return i
 
 
 for m in meshes + others:
-    i, j = on_lattice(m["x"], x0, hx), on_lattice(m["y"], y0, hy)
+    i, j = on_lattice(m["x"], x0, hx, m["file"]), on_lattice(m["y"], y0, hy, m["file"])
     m["i0"], m["j0"] = i.min(1), j.min(1)
     wx, wy = i.max(1) - m["i0"], j.max(1) - m["j0"]
     # Axis-parallel rectangles: the corners are (i0 or i0 + wx, j0 or j0 + wy), all four of them.
@@ -111,12 +112,12 @@ for m in meshes + others:
     at_side = ((di == 0) | (di == wx[:, None])) & ((dj == 0) | (dj == wy[:, None]))
     which = np.sort((di == wx[:, None]) * 1 + (dj == wy[:, None]) * 2, axis=1)
     if not at_side.all() or np.any(which != [0, 1, 2, 3]):
-        sys.exit(f"{m['file']}: a cell that is not an axis-parallel rectangle")
+        fail(f"{m['file']}: a cell that is not an axis-parallel rectangle")
     if np.any(wx != wy):
-        sys.exit(f"{m['file']}: cells refined differently in x and y")
+        fail(f"{m['file']}: cells refined differently in x and y")
     m["w"] = wx
     if np.any(m["w"] & (m["w"] - 1)):
-        sys.exit(f"{m['file']}: a cell whose size is not a power of two of the finest")
+        fail(f"{m['file']}: a cell whose size is not a power of two of the finest")
 nx = max((m["i0"] + m["w"]).max() for m in meshes + others)
 ny = max((m["j0"] + m["w"]).max() for m in meshes + others)
 largest = int(np.log2(max(m["w"].max() for m in meshes + others)))
@@ -130,7 +131,10 @@ if len(offsets) > 1:
 
 
 def pixel_levels(m):
-    """Per lattice square: the level of the cell covering it; every square covered exactly once."""
+    """Per lattice square: the level of the cell covering it; every square covered exactly once
+    (computed once per mesh)."""
+    if "pixels" in m:
+        return m["pixels"]
     levels = np.full((nx, ny), -1, dtype=np.int64)
     covered = np.zeros((nx, ny), dtype=np.int64)
     for i, j, w, lev in zip(m["i0"], m["j0"], m["w"], m["geometric_level"]):
@@ -138,6 +142,7 @@ def pixel_levels(m):
         covered[i:i + w, j:j + w] += 1
     if np.any(covered != 1):
         violations.append(f"{m['file']}: the cells do not tile the domain")
+    m["pixels"] = levels
     return levels
 
 
@@ -267,20 +272,22 @@ if args.max_level is not None:
     if top > args.max_level:
         violations.append(f"a cell of level {top} above the maximum level {args.max_level}")
 if others:
+    # Per written time of BASE: its mesh against BASE2's mesh at that time (either may hold several
+    # times in one file, and BASE2's mesh may change within the times of one file of BASE).
     at = {round(float(t), 9): o for o in others for t in o["times"]}
     compared = coarser_steps = coarser_cells = 0
     for m in meshes:
-        o = at.get(round(float(m["times"][0]), 9))
-        if o is None:
-            continue
-        here, there = pixel_levels(m), pixel_levels(o)
-        compared += len(m["times"])
-        coarser = here < there  # pixels where this mesh's cell is coarser than the other's
-        if coarser.any():
-            coarser_steps += len(m["times"])
-            coarser_cells += sum(1 for i, j, w in zip(m["i0"], m["j0"], m["w"]) if coarser[i:i + w, j:j + w].any())
+        for t in m["times"]:
+            o = at.get(round(float(t), 9))
+            if o is None:
+                continue
+            compared += 1
+            coarser = pixel_levels(m) < pixel_levels(o)  # pixels where this mesh's cell is coarser than the other's
+            if coarser.any():
+                coarser_steps += 1
+                coarser_cells += sum(1 for i, j, w in zip(m["i0"], m["j0"], m["w"]) if coarser[i:i + w, j:j + w].any())
     print(f"{coarser_steps} of {compared} steps have cells coarser than in {os.path.basename(args.coarser_than)} "
-          f"({coarser_cells} cells)")
+          f"at the same time ({coarser_cells} cells, summed over these steps)")
     if coarser_steps == 0:
         violations.append(f"no cell is coarser than in {os.path.basename(args.coarser_than)} at the same time")
     elif args.in_every_step and coarser_steps < compared:

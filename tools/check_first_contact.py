@@ -30,7 +30,7 @@ import numpy as np
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from exodus_text import names as exodus_names  # noqa: E402
-from tool_errors import (ArgumentParser, InputError, exodus, read_table, reporting,  # noqa: E402
+from tool_errors import (ArgumentParser, InputError, exodus, fail, read_table, reporting,  # noqa: E402
                          require_unit_square)
 
 ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -56,7 +56,7 @@ def first_contact_step(table):
 
 def written_steps():
     """(time, file, index in the file) of every written step of the last cycle's series."""
-    files = sorted(glob.glob(base + ".e") + glob.glob(base + ".e-s.*"),
+    files = sorted(glob.glob(glob.escape(base) + ".e") + glob.glob(glob.escape(base) + ".e-s.*"),
                    key=lambda f: int(f.rsplit(".", 1)[1]) if ".e-s." in f else 0)
     if not files:
         raise InputError(f"{base}.e: no such file (no Exodus files {base}.e*; run with Output/Exodus Interval = 1)")
@@ -77,11 +77,15 @@ k = float(last["t"][1] - last["t"][0])
 t_star = 2 / math.pi * math.asin(0.05 * math.pi / 2)
 expected = math.ceil(t_star / k - 1e-9)
 found = first_contact_step(last)
+t_of = {round(t / k): (f, i) for t, f, i in times}
+if found is not None and (found not in t_of or found - 1 not in t_of):  # an input problem, not a failed check
+    fail(f"{base}: steps {found - 1} and {found} (the first contact) are not both in the Exodus series: run "
+         "with Output/Exodus Interval = 1")
 print(f"{base}: exact first contact t* = {t_star:.6f}, step {expected} (k = {k}); last cycle: step {found}")
 if found != expected:
     failures.append(f"the last cycle finds the first contact in step {found}, not {expected}")
 
-cycle0 = glob.glob(base + ".cycle0.steps.csv")
+cycle0 = glob.glob(glob.escape(base) + ".cycle0.steps.csv")
 if not cycle0:
     failures.append(f"no {base}.cycle0.steps.csv (the control needs the initial cycle's table)")
 else:
@@ -106,9 +110,8 @@ def gamma_c_cells(f, i):
     return level, lo[order], hi[order], level[cells][order], lam[order]
 
 
-t_of = {round(t / k): (f, i) for t, f, i in times}
-if found is None or found not in t_of or found - 1 not in t_of:
-    failures.append("the steps around the first contact are not in the Exodus series (write every step)")
+if found is None:
+    failures.append("the last cycle has no step with contact")
 else:
     level, lo, hi, cell_level, lam = gamma_c_cells(*t_of[found])
     active = lam < 0

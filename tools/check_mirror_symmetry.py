@@ -25,7 +25,7 @@ args = parser.parse_args()
 base, axis = args.base, args.axis
 if not (math.isfinite(axis) and 0 < axis < 1):
     parser.error(f"argument axis: {axis:g}: not a line x2 = c inside the membrane's domain (0 < c < 1)")
-files = sorted(glob.glob(base + ".e") + glob.glob(base + ".e-s.*"),
+files = sorted(glob.glob(glob.escape(base) + ".e") + glob.glob(glob.escape(base) + ".e-s.*"),
                key=lambda f: int(f.rsplit(".", 1)[1]) if ".e-s." in f else 0)
 if not files:
     fail(f"{base}.e: no such file (no Exodus files {base}.e*)")

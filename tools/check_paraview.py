@@ -109,8 +109,17 @@ class FileStep:
 def read_series(first):
     steps = []
     info = None
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    from tool_errors import classic_netcdf_size  # the size a netCDF classic file's header declares
+
     for path in series_files(first):
-        ds = netCDF4.Dataset(path)
+        needed = classic_netcdf_size(path)
+        if needed is not None and os.path.getsize(path) < needed:  # netCDF would read zeros for the rest
+            fail("%s: cut short: %d bytes, its header needs %d" % (path, os.path.getsize(path), needed))
+        try:
+            ds = netCDF4.Dataset(path)
+        except OSError as e:
+            fail("%s: not readable as an Exodus file: %s" % (path, e.strerror or e))
         ds.set_auto_mask(False)
         if info is None:
             info = nc_names(ds, "info_records")

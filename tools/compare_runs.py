@@ -8,7 +8,9 @@ then both runs cycle by cycle: with no coarsening the adaptive cycle c refines n
 so its meshes lie inside the uniform cycle c's; while its estimate stays above that cycle's, the
 factor against uniform cycle c cannot exceed the ratio of the two cycles' unknowns.
 The runs must be comparable: their step tables (<base>.steps.csv, the last cycle's) end at the same
-step and time; otherwise, or for a missing or cut-short table, one line and exit status 1.
+step and time, and not be given the other way round (an adaptive run whose last cycle has the same
+unknowns in every step against a uniform run whose does not); otherwise, or for a missing or
+cut-short table, one line and exit status 1.
 Usage: tools/compare_runs.py ADAPTIVE_BASE UNIFORM_BASE [--require-factor F]
 With --require-factor the exit status is 1 unless the interpolated factor is at least F."""
 import argparse
@@ -25,17 +27,24 @@ ap.add_argument("adaptive", help="output base of the adaptive run (folder/basena
 ap.add_argument("uniform", help="output base of the uniform run")
 ap.add_argument("--require-factor", type=float, default=0.0, help="fail unless the factor in unknowns reaches this")
 a = ap.parse_args()
+if not (np.isfinite(a.require_factor) and a.require_factor >= 0):
+    ap.error(f"argument --require-factor: {a.require_factor:g}: not a factor (a number, 0 or more)")
 
 
 def read_runs():
     """Both runs' cycle tables; InputError if one is missing or cut short, or if the runs are not
-    comparable: their (last cycles') step tables must end at the same step and time."""
+    comparable: their (last cycles') step tables must end at the same step and time; or if the
+    arguments are swapped (the adaptive run's last cycle keeps one mesh, the uniform run's does not)."""
     cycles = [np.atleast_1d(read_table(base + ".cycles.csv", ["total_dofs", "eta", "wall_seconds"]))
               for base in (a.adaptive, a.uniform)]
-    ends = []
+    ends, fixed = [], []
     for base in (a.adaptive, a.uniform):
-        steps = read_table(base + ".steps.csv", ["step", "t"])
-        ends.append((int(np.atleast_1d(steps["step"])[-1]), float(np.atleast_1d(steps["t"])[-1])))
+        steps = np.atleast_1d(read_table(base + ".steps.csv", ["step", "t", "dofs"]))
+        ends.append((int(steps["step"][-1]), float(steps["t"][-1])))
+        fixed.append(bool((steps["dofs"] == steps["dofs"][0]).all()))  # one mesh in every step: uniform
+    if fixed[0] and not fixed[1]:
+        raise InputError(f"{a.adaptive}.steps.csv has the same unknowns in every step and {a.uniform}.steps.csv "
+                         "does not: the arguments swapped? (ADAPTIVE_BASE first, then UNIFORM_BASE)")
     (n_a, t_a), (n_u, t_u) = ends
     if n_a != n_u or abs(t_a - t_u) > 1e-9 * max(abs(t_a), abs(t_u)):
         raise InputError(f"the runs are not comparable: {a.adaptive}.steps.csv ends at step {n_a}, t = {t_a:.6g}, "

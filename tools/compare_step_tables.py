@@ -25,20 +25,32 @@ a, b, common = args.base_a, args.base_b, args.common_columns
 
 def suffixes(base):
     """The step tables' suffixes of a run: '.cycle<l>.steps.csv' in cycle order, then '.steps.csv'."""
-    cycles = glob.glob(base + ".cycle*.steps.csv")
+    cycles = glob.glob(glob.escape(base) + ".cycle*.steps.csv")
     return sorted((f[len(base):] for f in cycles), key=lambda s: int(s.split(".")[1][5:])) + [".steps.csv"]
 
 
 def read(path):
+    """The table at path: its header and its rows as floats; one line (fail) for a table that is
+    missing, cut short, has rows of another length than the header or a cell that is not a number."""
     try:
         require_file(path)
         require_complete(path)  # also: empty
         with open(path, newline="") as f:
-            return list(csv.reader(f))
+            table = list(csv.reader(f))
     except OSError as e:
         fail(f"{path}: {e.strerror}")
     except InputError as e:
         fail(e)
+    header, rows = table[0], table[1:]
+    for r, row in enumerate(rows, start=1):
+        if len(row) != len(header):
+            fail(f"{path}: row {r} has {len(row)} values, the header {len(header)} columns")
+        for name, value in zip(header, row):
+            try:
+                float(value)
+            except ValueError:
+                fail(f"{path}: row {r}, column {name}: '{value}' is not a number")
+    return table
 
 
 for base in (a, b):
@@ -49,13 +61,20 @@ if names != suffixes(b):
     fail(f"the runs have different step tables: {a}: {', '.join(names)}; {b}: {', '.join(suffixes(b))}")
 differs = False
 compared = 0
+tables = {suffix: (read(a + suffix), read(b + suffix)) for suffix in names}  # every table checked before output
 for suffix in names:
-    ta = read(a + suffix)
-    tb = read(b + suffix)
-    if any(len(row) != len(ta[0]) for row in ta) or any(len(row) != len(tb[0]) for row in tb):
-        fail(f"{a + suffix} or {b + suffix}: a row of another length than the header")
-    if (ta[0] != tb[0] and not common) or len(ta) != len(tb):
-        print(f"{suffix}: the tables differ in shape ({len(ta)} and {len(tb)} rows)")
+    ta, tb = tables[suffix]
+    if ta[0] != tb[0] and not common:
+        only_a = [n for n in ta[0] if n not in tb[0]]
+        only_b = [n for n in tb[0] if n not in ta[0]]
+        what = (f"columns only in {a + suffix}: {', '.join(only_a) or 'none'}; only in {b + suffix}: "
+                f"{', '.join(only_b) or 'none'} (--common-columns leaves them out)") if only_a or only_b else \
+            "the same columns in another order"
+        print(f"{suffix}: the headers differ: {what}")
+        differs = True
+        continue
+    if len(ta) != len(tb):
+        print(f"{suffix}: the tables differ in length ({len(ta) - 1} and {len(tb) - 1} rows)")
         differs = True
         continue
     only = [n for n in ta[0] if n not in tb[0]] + [n for n in tb[0] if n not in ta[0]]

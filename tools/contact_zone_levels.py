@@ -24,7 +24,7 @@ def main():
     if not np.any(steps['active']>0):
         raise InputError(f'{base}.steps.csv: no step with active > 0 (no contact in the run)')
     first=steps['t'][np.argmax(steps['active']>0)]
-    files=sorted(glob.glob(base+'.e*'), key=lambda f: (len(f), f))
+    files=sorted(glob.glob(glob.escape(base)+'.e*'), key=lambda f: (len(f), f))
     if not files:
         raise InputError(f'{base}.e: no such file (the run wrote no Exodus output? Output/Write Exodus)')
     with exodus(files[0]) as d:  # a run of another kind refused before any output

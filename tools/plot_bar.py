@@ -5,7 +5,8 @@
                     [--steps auto | 16,20,38,...] --out out/plots-bar
 
 Writes (PNG): bar_eta_vs_unknowns.png (paper Fig. 6.5), bar_meshes.png (Fig. 6.4: meshes of the final
-adaptive cycle at nine steps, displacement scaled by 5, the foundation y = -0.005 drawn; --steps auto
+adaptive cycle at nine steps, displacement scaled by 5, the foundation drawn: the deck's Problem/Obstacle
+below Gamma_C; --steps auto
 chooses them from the run's contact intervals as in the paper: (a)-(c) before, during and after the
 first contact, (d)-(f) the same for another contact, (g)-(i) three steps inside one contact, growing,
 largest and shrinking), bar_contact_zone.png (the length of the active contact zone against the
@@ -26,11 +27,10 @@ from matplotlib.collections import LineCollection  # noqa: E402
 import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from plot_results import (PAPER_LABEL, adaptive_setting, deck_file, exodus_frames, names, nearest_frame,  # noqa: E402
-                          parse_steps, plot_eta, read_csv, require_exodus, time_step)
+from plot_results import (adaptive_setting, deck_file, deck_parameter, exodus_frames, multiplier_frame,  # noqa: E402
+                          names, nearest_frame, output_folder, parse_steps, plot_eta, read_csv, require_exodus,
+                          run_deck, time_step)
 from tool_errors import ArgumentParser, InputError, exodus, fail  # noqa: E402
-
-FOUNDATION_X, FOUNDATION_Y = 0.15, -0.005
 
 
 def contact_intervals(steps_csv):
@@ -134,9 +134,30 @@ def frame_data(f, i):
     return x, y, conn, ux, uy, level
 
 
+def foundation(base, f):
+    """(x0, x1, y, g) of the foundation drawn under the bar: Gamma_C (the side set of the Exodus file
+    f, a horizontal edge y from x0 to x1) and the deck's constant Problem/Obstacle g (u_y >= g, Contact
+    Direction +y); None, said so, if the deck gives another obstacle (a function of x, another direction)."""
+    deck = run_deck(base)
+    obstacle = deck_parameter(deck, "Problem/Obstacle")
+    direction = (deck_parameter(deck, "Problem/Contact Direction") or "").strip()
+    try:
+        g = float(obstacle)
+    except (TypeError, ValueError):
+        g = None
+    a, b, _, axis, position = multiplier_frame(f, 0)
+    if g is None or direction != "+y" or axis != 0:
+        print(f"note: {base}: the foundation is not drawn (Problem/Obstacle '{obstacle}', Contact Direction "
+              f"'{direction}': only a constant obstacle under a horizontal Gamma_C, direction +y, is drawn)",
+              file=sys.stderr)
+        return None
+    return float(a.min()), float(b.max()), position, g
+
+
 def plot_meshes(base, panels, k, out, scale=5.0):
     """panels: [(step, caption)]."""
     frames = list(exodus_frames(base))
+    ground = foundation(base, frames[0][1])
     s = read_csv(base + ".steps.csv")
     active = dict(zip(np.rint(s["t"] / k).astype(int), s["active"]))
     rows = (len(panels) + 2) // 3
@@ -151,7 +172,9 @@ def plot_meshes(base, panels, k, out, scale=5.0):
         ax.add_collection(LineCollection(np.stack([np.c_[X[edges[:, 0]], Y[edges[:, 0]]],
                                                    np.c_[X[edges[:, 1]], Y[edges[:, 1]]]], axis=1),
                                          colors="k", linewidths=0.15, antialiased=False))
-        ax.plot([FOUNDATION_X, 0.2], [scale * FOUNDATION_Y] * 2, "r-", lw=1.5)  # the gap scales with u
+        if ground:
+            x0, x1, y0, g = ground
+            ax.plot([x0, x1], [y0 + scale * g] * 2, "r-", lw=1.5)  # the gap scales with u
         ax.set_aspect("equal")
         ax.set_title(f"({chr(ord('a') + j)}) n = {step}, t = {time * 1e3:.2f} ms{': ' + caption if caption else ''}\n"
                      f"{int(active.get(step, 0))} active segments, {len(conn)} cells", fontsize=8)
@@ -159,8 +182,9 @@ def plot_meshes(base, panels, k, out, scale=5.0):
         ax.set_yticks([])
     for ax in list(axes.flat)[len(panels):]:
         ax.axis("off")
+    drawn = f"; red: the foundation u_y = {ground[3]:g} m (scaled too)" if ground else ""
     fig.suptitle(f"paper Fig. 6.4: meshes of the final adaptive cycle{adaptive_setting(base)} of {deck_file(base)}, "
-                 f"displacement scaled by {scale:g}; red: the foundation u_y = -0.005 m (scaled too)", fontsize=10)
+                 f"displacement scaled by {scale:g}{drawn}", fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "bar_meshes.png"), dpi=150)
     plt.close(fig)
@@ -254,6 +278,8 @@ def main():
     ap.add_argument("--steps", default="auto",
                     help="steps for the mesh pictures, or auto: nine steps chosen from the contact intervals")
     ap.add_argument("--time-step", type=float, help="the run's time step (default: from its step table)")
+    ap.add_argument("--adaptive-label", help="legend of --adaptive (default: from the run's deck, e.g. 'adaptive, "
+                    "fixed fraction 50%%')")
     ap.add_argument("--out", default="out/plots-bar", help="folder for the plots (created; default %(default)s)")
     a = ap.parse_args()
     try:  # every input first: a missing file or column stops before any plot is written
@@ -267,8 +293,8 @@ def main():
         mesh_steps = None if a.steps == "auto" else parse_steps(a.steps)
     except InputError as e:
         fail(e)
-    os.makedirs(a.out, exist_ok=True)
-    plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out, PAPER_LABEL, eta_unit="m", h_unit="m",
+    output_folder(a.out)
+    plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out, a.adaptive_label, eta_unit="m", h_unit="m",
              title="paper Example 6.2 (bar), cf. Fig. 6.5")
     os.replace(os.path.join(a.out, "eta_vs_unknowns.png"), os.path.join(a.out, "bar_eta_vs_unknowns.png"))
     intervals = contact_intervals(a.adaptive + ".steps.csv")

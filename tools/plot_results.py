@@ -35,7 +35,6 @@ from tool_errors import ArgumentParser, InputError, exodus, fail, read_table, re
 
 
 read_csv = read_table  # the name plot_bar.py imports
-PAPER_LABEL = "adaptive, fixed fraction 50% (paper)"  # what inputs/membrane.xml and inputs/bar.xml run
 
 
 def require_exodus(base):
@@ -75,7 +74,7 @@ def cycle_number(path):
 
 
 def exodus_files(base):
-    files = [base + ".e"] + sorted(glob.glob(base + ".e-s.*"), key=lambda f: int(re.findall(r"(\d+)$", f)[0]))
+    files = [base + ".e"] + sorted(glob.glob(glob.escape(base) + ".e-s.*"), key=lambda f: int(re.findall(r"(\d+)$", f)[0]))
     return [f for f in files if os.path.exists(f)]
 
 
@@ -132,10 +131,29 @@ def adaptive_setting(base):
     return f" ({strategy})" if strategy else ""
 
 
+def adaptive_label(base):
+    """The legend of an adaptive run from its deck: 'adaptive, fixed fraction 50%' (the paper's
+    setting, inputs/membrane.xml and inputs/bar.xml), 'adaptive, <strategy>'; 'adaptive' without a
+    recorded deck (no Exodus output: give --adaptive-label)."""
+    setting = adaptive_setting(base)
+    return "adaptive" + (", " + setting[2:-1] if setting else "")
+
+
+def output_folder(path):
+    """Creates the folder --out (and its parents); one line (fail) if it cannot be one."""
+    if os.path.exists(path) and not os.path.isdir(path):
+        fail(f"--out {path}: not a folder (a file of that name exists)")
+    try:
+        os.makedirs(path, exist_ok=True)
+    except OSError as e:
+        fail(f"--out {path}: cannot create the folder: {e.strerror or e}")
+
+
 def estimator_scaling(base):
-    """(scaling, kappa) of a run: Estimator/Scaling and the stiffness symbol the physical scaling
-    divides by ("" for the scalar wave with Stiffness 1, "kappa" otherwise), from the run's deck;
-    without Exodus output the default (physical), said so."""
+    """(scaling, kappa) of a run: Estimator/Scaling and what the physical scaling's kappa is ("" for
+    the scalar wave with Stiffness 1; for elasticity lambda_L + 2 mu, for the scalar wave its
+    Problem/Stiffness, as matplotlib TeX), from the run's deck; without Exodus output the default
+    (physical), said so."""
     deck = run_deck(base)
     if deck is None:
         print(f"note: {base}.e: no deck recorded (no Exodus output?): "
@@ -145,7 +163,12 @@ def estimator_scaling(base):
     scaling = deck_parameter(deck, "Estimator/Scaling") or "physical"
     elasticity = "elasticity" in (deck_parameter(deck, "Problem/Type") or "")
     stiffness = deck_parameter(deck, "Problem/Stiffness")
-    kappa = "" if not elasticity and (stiffness is None or float(stiffness) == 1.0) else "kappa"
+    if elasticity:
+        kappa = r"\lambda_L + 2\mu"
+    elif stiffness is None or float(stiffness) == 1.0:
+        kappa = ""
+    else:
+        kappa = f"{float(stiffness):g}"
     return scaling, kappa
 
 
@@ -162,7 +185,8 @@ def scaling_note(base):
     scaling, kappa = estimator_scaling(base)
     terms = ", ".join(scaled_terms(scaling, kappa))
     if scaling == "physical":
-        where = r" ($\kappa = \lambda_L + 2\mu$)" if kappa else ""
+        where = "" if not kappa else rf" ($\kappa = {kappa}$)" if kappa.startswith("\\") else \
+            rf" ($\kappa$ = Problem/Stiffness = {kappa})"
         return f"Estimator/Scaling = physical (default): {terms}{where}"
     return f"Estimator/Scaling = {scaling}: {terms} as in the paper's Sec. 4"
 
@@ -193,10 +217,9 @@ def uniform_h(base):
     return float(sizes.min()) if np.allclose(sizes, sizes.min(), rtol=1e-9) else None
 
 
-def plot_eta(adaptive, uniform, more, out, adaptive_label=None, eta_unit="", h_unit="", title=""):
-    adaptive_label = adaptive_label or PAPER_LABEL
+def plot_eta(adaptive, uniform, more, out, label=None, eta_unit="", h_unit="", title=""):
     fig = plt.figure(figsize=(6.2, 4.8))
-    runs = [(adaptive, adaptive_label, "o-")]
+    runs = [(adaptive, label or adaptive_label(adaptive), "o-")]
     if uniform:
         c = np.atleast_1d(read_csv(uniform + ".cycles.csv", ["total_dofs", "eta"]))
         h = uniform_h(uniform)
@@ -220,7 +243,7 @@ def plot_eta(adaptive, uniform, more, out, adaptive_label=None, eta_unit="", h_u
     plt.close(fig)
 
 
-def plot_contributions(adaptive, out, adaptive_label=None, unit=""):
+def plot_contributions(adaptive, out, label=None, unit=""):
     s = read_csv(adaptive + ".steps.csv")[1:]
     cycles = np.atleast_1d(read_csv(adaptive + ".cycles.csv", ["cycle"]))
     scaling, kappa = estimator_scaling(adaptive)
@@ -230,7 +253,7 @@ def plot_contributions(adaptive, out, adaptive_label=None, unit=""):
         plt.semilogy(s["t"], np.where(s[col] > 0, s[col], np.nan), ".-", ms=2, lw=1, label=label)
     plt.xlabel("t")
     plt.ylabel("contribution to $\\eta^n$" + (f" [{unit}]" if unit else ""))
-    plt.title(f"{os.path.basename(adaptive)}: {adaptive_label or PAPER_LABEL}, "
+    plt.title(f"{os.path.basename(adaptive)}: {label or adaptive_label(adaptive)}, "
               f"last cycle (cycle {int(cycles['cycle'][-1])})\n{scaling_note(adaptive)}", fontsize=8)
     plt.legend()
     plt.grid(True, which="both", alpha=0.3)
@@ -239,18 +262,18 @@ def plot_contributions(adaptive, out, adaptive_label=None, unit=""):
     plt.close(fig)
 
 
-def plot_energy_and_probe(adaptive, uniform, out, adaptive_label=None):
+def plot_energy_and_probe(adaptive, uniform, out, label=None):
     """Energy per step across mesh changes, and the probe value, adaptive against uniform cycles."""
     fig, axes = plt.subplots(1, 3, figsize=(16, 4.3))
     runs = []
     if uniform:
         h = uniform_h(uniform)
-        cycles = sorted(glob.glob(uniform + ".cycle*.steps.csv"), key=cycle_number)
+        cycles = sorted(glob.glob(glob.escape(uniform) + ".cycle*.steps.csv"), key=cycle_number)
         last = max([cycle_number(f) for f in cycles], default=-1) + 1  # the last cycle has no number
         mesh = (lambda c: f", h = {h_text(h * 2 ** (last - c))}") if h is not None else (lambda c: "")
         runs += [(f, f"uniform cycle {cycle_number(f)}{mesh(cycle_number(f))}", "-") for f in cycles]
         runs.append((uniform + ".steps.csv", f"uniform cycle {last}{mesh(last)} (last cycle)", "-"))
-    runs.append((adaptive + ".steps.csv", f"{adaptive_label or PAPER_LABEL}, last cycle", "k--"))
+    runs.append((adaptive + ".steps.csv", f"{label or adaptive_label(adaptive)}, last cycle", "k--"))
     probe_name = None
     for path, label, style in runs:
         if not os.path.exists(path):
@@ -452,7 +475,7 @@ def plot_multiplier(paper, stabilised, t, window, out):
             ax.set_xlim(max(lo_x - margin, full.min()), min(hi_x + margin, full.max()))
     for ax in axes:
         ax.set_xlabel(f"{name} along $\\Gamma_C$ ({other} = {some['position']:g})")
-        ax.set_ylabel(r"contact multiplier $\lambda_H$")
+        ax.set_ylabel(r"contact multiplier $\lambda_H/(\beta k^2)$ (physical)")
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16))
     decks = sorted({deck_file(b) for b, _ in paper + stabilised})
@@ -482,7 +505,8 @@ def main():
                     help="half width of the time window of the multiplier's mean and range (default 0.05)")
     ap.add_argument("--title", default="paper Example 6.1 (membrane), cf. Fig. 6.3",
                     help="first title line of eta_vs_unknowns.png")
-    ap.add_argument("--adaptive-label", default=PAPER_LABEL, help="legend of --adaptive (default: %(default)s)")
+    ap.add_argument("--adaptive-label", help="legend of --adaptive (default: from the run's deck, e.g. 'adaptive, "
+                    "fixed fraction 50%%'; 'adaptive' for a run without Exodus output)")
     ap.add_argument("--eta-only", action="store_true",
                     help="draw only eta_vs_unknowns.png (runs without Exodus output, e.g. the finer study)")
     ap.add_argument("--out", required=True, help="folder for the plots (created)")
@@ -494,7 +518,7 @@ def main():
         if not a.eta_only:
             steps = read_csv(a.adaptive + ".steps.csv", ["t", "energy", "eta_star", "s0", "s1"])
             if a.uniform:  # every cycle's step table (the energy plot)
-                for f in [a.uniform + ".steps.csv"] + glob.glob(a.uniform + ".cycle*.steps.csv"):
+                for f in [a.uniform + ".steps.csv"] + glob.glob(glob.escape(a.uniform) + ".cycle*.steps.csv"):
                     read_csv(f, ["t", "energy"])
             for base in [a.adaptive, a.two_h, a.h_equals_h, a.two_h_stabilised, a.h_equals_h_stabilised]:
                 if base:
@@ -503,7 +527,7 @@ def main():
             mesh_steps = parse_steps(a.steps)
     except InputError as e:
         fail(e)
-    os.makedirs(a.out, exist_ok=True)
+    output_folder(a.out)
     plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out, a.adaptive_label, title=a.title)
     if a.eta_only:
         print("wrote", os.path.join(a.out, "eta_vs_unknowns.png"))

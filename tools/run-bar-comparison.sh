@@ -10,15 +10,19 @@ set -euo pipefail
 source "$(dirname "$0")/script_args.sh"
 no_arguments "$@"
 cd "$(dirname "$0")/.."
-[ -n "${SIGNORINI_NO_BUILD:-}" ] || bash tools/build.sh > /dev/null
+build_first
 mkdir -p out
 ./build/src/signorini --output-dir out inputs/bar-uniform.xml > out/bar-uniform.log 2>&1 &
 uniform=$!
-./build/src/signorini --output-dir out inputs/bar.xml | grep -E "cycle|done|error"
+# If an adaptive run fails, the script stops: the uniform run is stopped with it, not left running.
+trap '[ -z "$uniform" ] || kill "$uniform" 2> /dev/null || true' EXIT
+progress() { grep -E "^signorini: (cycle|.* done)|error"; }  # the cycles and the summary, not the 'wrote' lines
+./build/src/signorini --output-dir out inputs/bar.xml | progress
 ./build/src/signorini --output-dir out --set 'Output/Basename=bar-fraction20' --set 'Adaptivity/Refinement Fraction=0.2' \
-  --set 'Adaptivity/Cycles=7' --set 'Output/Exodus Interval=250' inputs/bar.xml | grep -E "cycle|done|error"
-wait $uniform || { cat out/bar-uniform.log; exit 1; }
-grep -E "cycle" out/bar-uniform.log
+  --set 'Adaptivity/Cycles=7' --set 'Output/Exodus Interval=250' inputs/bar.xml | progress
+wait $uniform || { uniform=""; cat out/bar-uniform.log; exit 1; }
+uniform=""
+grep -E "^signorini: cycle" out/bar-uniform.log
 /usr/bin/python3 tools/plot_bar.py --adaptive out/bar --uniform out/bar-uniform \
   --more-adaptive "out/bar-fraction20:adaptive, fixed fraction 20%" --steps auto --out out/plots-bar
 /usr/bin/python3 tools/compare_runs.py out/bar out/bar-uniform || true

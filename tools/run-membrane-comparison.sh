@@ -11,7 +11,7 @@ set -euo pipefail
 source "$(dirname "$0")/script_args.sh"
 no_arguments "$@"
 cd "$(dirname "$0")/.."
-[ -n "${SIGNORINI_NO_BUILD:-}" ] || bash tools/build.sh > /dev/null
+build_first
 mkdir -p out
 ./build/src/signorini --output-dir out inputs/membrane.xml inputs/membrane-fraction10.xml inputs/membrane-uniform.xml
 # Fig. 3.1: H = 2h and H = h, every step written (the paper's scheme chatters in time, so the plot

@@ -5,20 +5,22 @@
 # Parallel/Reproducible Arithmetic switched off), and with the deck as it is (2 ranks then give the
 # bits of 1 rank; the perturbation still grows). Prints the difference of the probe u(1, 0.5) and of eta^n over cycle 1 (whose meshes all
 # runs share) and the unknowns of cycle 1. About 2 minutes.
-# Usage: bash tools/run-rank-sensitivity.sh
-# Takes no arguments (-h, --help: this text).
+# Usage: bash tools/run-rank-sensitivity.sh   (SIGNORINI_NO_BUILD=1: use the existing build/src/signorini)
+# Takes no arguments (-h, --help: this text). The MPI launcher is the one of the build's tests (CMake's
+# MPIEXEC_* entries in build/CMakeCache.txt), as in the bench scripts.
 set -euo pipefail
 source "$(dirname "$0")/script_args.sh"
 no_arguments "$@"
 cd "$(dirname "$0")/.."
-bash tools/build.sh > /dev/null
+build_first
 out=out/sensitivity
 mkdir -p "$out"
 arithmetic=false  # Parallel/Reproducible Arithmetic of the runs below
 run() {  # run NP BASENAME [--set ...]
   local np=$1 base=$2
   shift 2
-  mpirun --allow-run-as-root --oversubscribe -np "$np" ./build/src/signorini --output-dir "$out" \
+  mpi_launcher "$np"
+  "${mpirun[@]}" ./build/src/signorini --output-dir "$out" \
     --set "Output/Basename=$base" --set "Output/Write Exodus=false" --set "Adaptivity/Cycles=2" \
     --set "Parallel/Reproducible Arithmetic=$arithmetic" "$@" \
     inputs/membrane.xml > "$out/$base.log"

@@ -117,10 +117,14 @@ def read_table(path, columns=(), min_rows=1):
     InputError if it is missing, cut short, empty, has fewer than min_rows rows or lacks one of
     the columns (names as genfromtxt makes them: 'probe:corner' is 'probecorner')."""
     require_file(path)
+    if os.path.getsize(path) == 0:  # numpy raises IndexError for a file without a single line
+        raise InputError(f"{path}: empty")
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")  # an empty file: reported below
             data = np.genfromtxt(path, delimiter=",", names=True)
+    except IndexError:  # no line with a value (e.g. only line ends)
+        raise InputError(f"{path}: empty") from None
     except ValueError as e:  # rows of different lengths
         raise InputError(f"{path}: not a complete table: {str(e).strip().splitlines()[-1].strip()}") from None
     if data.dtype.names is None or data.size == 0:

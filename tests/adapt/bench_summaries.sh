@@ -55,4 +55,81 @@ for cmd in "summarize_adaptive.py $work/plain" "summarize.py $work/plain.steps.c
   [ "$(printf '%s\n' "$out" | wc -l)" -eq 1 ] && [[ $out == *"Measure Contact Overhead = true"* ]] ||
     fail "$cmd: not one line naming the option: $out"
 done
+# Inputs refused in one line before anything is printed: empty tables; a cycle table missing
+# (summarize_adaptive.py); a driver log that is missing, a folder, or of another run (summarize.py: the
+# adaptive run's log for the uniform run's table).
+: > "$work/empty.steps.csv" && : > "$work/empty.cycles.csv"
+cp "$work/membrane.cycles.csv" "$work/nocycle.cycles.csv" && cp "$work/membrane.steps.csv" "$work/nocycle.steps.csv"
+level2=$work/membrane-level2.steps.csv
+for cmd in "summarize_adaptive.py|$work/empty|$work/empty.cycles.csv: empty" \
+    "summarize.py|$work/empty.steps.csv|$work/empty.steps.csv: empty" \
+    "summarize_adaptive.py|$work/nocycle|$work/nocycle.cycle0.steps.csv: no such file" \
+    "summarize.py|$level2 $work/nothing.log|$work/nothing.log: no such file" \
+    "summarize.py|$level2 $work|$work: a directory, not a file" \
+    "summarize.py|$level2 $work/adaptive.log|$work/adaptive.log: not the log of the run that wrote $level2"; do
+  IFS='|' read -r script arguments message <<< "$cmd"
+  # shellcheck disable=SC2086
+  /usr/bin/python3 "$src/bench/$script" $arguments > "$work/refused.out" 2> "$work/refused.err" && fail "$script $arguments: accepted"
+  [ ! -s "$work/refused.out" ] && [ "$(wc -l < "$work/refused.err")" -eq 1 ] &&
+    grep -qF "$script: error: $message" "$work/refused.err" ||
+    { cat "$work/refused.out" "$work/refused.err"; fail "$script $arguments: not one line '$message' before any output"; }
+done
+/usr/bin/python3 "$src/bench/summarize.py" --help | grep -q "^usage: summarize.py" || fail "summarize.py --help"
+# The bench scripts, copied into a sandbox whose tools/build.sh and launcher (mpiexec: there is no
+# build/CMakeCache.txt) are stubs: -h/--help print the header, each script names itself in its usage;
+# SIGNORINI_NO_BUILD=0 builds; run-contact-bench.sh takes DECK from the caller's folder (a short real
+# run); run-adaptive-bench.sh's arithmetic ratio leaves out the benchmark's own solves (time_unconstrained;
+# its runs stubbed with the tables of the runs above).
+box=$work/sandbox
+mkdir -p "$box/bench" "$box/tools" "$box/build/src" "$box/stubs" "$box/caller"
+cp "$src"/bench/*.sh "$src"/bench/*.py "$box/bench/"
+cp "$src/tools/script_args.sh" "$src/tools/tool_errors.py" "$box/tools/"
+printf '#!/usr/bin/env bash\necho build >> "%s"\n' "$box/build.calls" > "$box/tools/build.sh"
+printf '#!/usr/bin/env bash\nshift 4\nexec "$@"\n' > "$box/stubs/mpiexec"  # -n N --oversubscribe --allow-run-as-root
+cat > "$box/build/src/signorini" <<SH
+#!/usr/bin/env bash
+[ -n "\${CANNED:-}" ] || exec "$signorini" "\$@"
+prev="" out="" name=""
+for a in "\$@"; do
+  case \$prev in --output-dir) out=\$a ;; --set) [[ \$a != Output/Basename=* ]] || name=\${a#Output/Basename=} ;; esac
+  prev=\$a
+done
+from=\$CANNED/membrane
+[[ \$name != adaptive-ordinary* ]] || from=\$CANNED/second
+for f in "\$from".*csv; do cp "\$f" "\$out/\$name\${f#"\$from"}"; done
+echo "signorini: cycle 0: canned"
+echo "signorini: canned done"
+SH
+chmod +x "$box/stubs/mpiexec" "$box/build/src/signorini"
+for s in run-contact-bench run-membrane-bench run-bar-bench run-adaptive-bench; do
+  for h in -h --help; do
+    bash "$box/bench/$s.sh" "$h" > "$work/$s-help.out" 2>&1 && grep -q "^Benchmark (not a test)" "$work/$s-help.out" &&
+      ! grep -q "^#" "$work/$s-help.out" || { cat "$work/$s-help.out"; fail "$s.sh $h"; }
+  done
+done
+for s in run-membrane-bench run-bar-bench; do
+  bash "$box/bench/$s.sh" --bogus > "$work/$s-bad.out" 2>&1
+  [ $? = 2 ] && grep -q "^usage: bash bench/$s.sh \[-np N\] (got: --bogus)" "$work/$s-bad.out" ||
+    { cat "$work/$s-bad.out"; fail "$s.sh --bogus: not its own usage"; }
+done
+sed -e 's/"Refinement Level" type="int" value="[0-9]*"/"Refinement Level" type="int" value="1"/' \
+  -e 's/"Final Time" type="double" value="[0-9.e-]*"/"Final Time" type="double" value="0.075"/' \
+  "$src/bench/membrane-250k.xml" > "$box/caller/small.xml"
+(cd "$box/caller" && PATH="$box/stubs:$PATH" SIGNORINI_NO_BUILD=0 bash "$box/bench/run-contact-bench.sh" small.xml) \
+  > "$work/contact-bench.out" 2>&1 || { cat "$work/contact-bench.out"; fail "run-contact-bench.sh with a deck in the caller's folder"; }
+grep -q "^R = " "$work/contact-bench.out" && grep -q "^whole-run phase totals" "$work/contact-bench.out" &&
+  grep -q "^note: no build/CMakeCache.txt" "$work/contact-bench.out" || { cat "$work/contact-bench.out"; fail "run-contact-bench.sh: summary"; }
+grep -qx build "$box/build.calls" 2> /dev/null || fail "run-contact-bench.sh with SIGNORINI_NO_BUILD=0 did not build"
+(cd "$box/caller" && PATH="$box/stubs:$PATH" SIGNORINI_NO_BUILD=1 CANNED=$work bash "$box/bench/run-adaptive-bench.sh") \
+  > "$work/adaptive-bench.out" 2>&1 || { cat "$work/adaptive-bench.out"; fail "run-adaptive-bench.sh (stubbed runs)"; }
+expected=$(/usr/bin/python3 - "$work" <<'PY'
+import sys
+import numpy as np
+own = [np.atleast_1d(np.genfromtxt(f"{sys.argv[1]}/{b}.cycles.csv", delimiter=",", names=True)) for b in ("membrane", "second")]
+wall = [(c["wall_seconds"] - c["time_unconstrained"]).sum() for c in own]
+print(f"{wall[0]:.1f} s against {wall[1]:.1f} s: {wall[0] / wall[1]:.2f} times the time")
+PY
+)
+grep -qF "reproducible arithmetic: whole run without the benchmark's extra solves $expected" "$work/adaptive-bench.out" ||
+  { cat "$work/adaptive-bench.out"; fail "run-adaptive-bench.sh: the arithmetic ratio is not $expected"; }
 echo "bench summaries: OK"

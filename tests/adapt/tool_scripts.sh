@@ -37,9 +37,10 @@ short=(--output-dir "$work" --set 'Time Integration/Final Time=0.1' --set 'Adapt
   { cat "$work/runs.log"; fail "the runs failed"; }
 "$signorini" "${short[@]}" --set 'Adaptivity/Strategy=none' --set 'Output/Basename=plain' \
   "$src/inputs/membrane.xml" > "$work/plain.log" 2>&1 || { cat "$work/plain.log"; fail "the plain run failed"; }
-# Not comparable with the others: 4 steps to t = 0.01.
+# Not comparable with the others: 4 steps to t = 0.01 (with a 20% fraction and Stiffness 4: the plots' labels
+# come from the run's deck).
 "$signorini" "${short[@]}" --set 'Time Integration/Final Time=0.01' --set 'Output/Basename=short' \
-  "$src/inputs/membrane.xml" > "$work/short.log" 2>&1 || { cat "$work/short.log"; fail "the short run failed"; }
+  --set 'Adaptivity/Refinement Fraction=0.2' --set 'Problem/Stiffness=4' "$src/inputs/membrane.xml" > "$work/short.log" 2>&1 || { cat "$work/short.log"; fail "the short run failed"; }
 plot=(/usr/bin/python3 "$src/tools/plot_results.py")
 
 "${plot[@]}" --adaptive "$work/membrane" --uniform "$work/membrane-uniform" --steps 20,40,60 --out "$work/plots" \
@@ -369,6 +370,163 @@ refuses first_negative_level "check_first_contact.py: error: argument initial_le
   "$py" "$tools/check_first_contact.py" "$work/membrane" -5
 refuses deck_directory "deck_from_exodus.py: error: $work: a directory, not a file" \
   "$py" "$tools/deck_from_exodus.py" "$work"
+# Empty tables (0 bytes: numpy's reader raised IndexError): one line '<table>: empty' in every reader.
+: > "$work/empty.steps.csv" && : > "$work/empty.cycles.csv"
+refuses empty_compare "compare_runs.py: error: $work/empty.cycles.csv: empty" "$py" "$tools/compare_runs.py" "$work/empty" "$work/membrane-uniform"
+refuses empty_first "check_first_contact.py: error: $work/empty.steps.csv: empty" "$py" "$tools/check_first_contact.py" "$work/empty"
+refuses empty_zone "contact_zone_levels.py: error: $work/empty.steps.csv: empty" "$py" "$tools/contact_zone_levels.py" "$work/empty"
+refuses empty_transfer "transfer_vs_coarsening.py: error: $work/empty.steps.csv: empty" "$py" "$tools/transfer_vs_coarsening.py" "$work/empty"
+expect_error empty_plot "plot_results.py: error: $work/empty.cycles.csv: empty" "${plot[@]}" --adaptive "$work/empty"
+expect_error empty_bar "plot_bar.py: error: $work/empty.cycles.csv: empty" "$py" "$tools/plot_bar.py" --adaptive "$work/empty"
+# --out that cannot be a folder: one line naming --out, no traceback.
+: > "$work/afile"
+refuses out_file "plot_results.py: error: --out $work/afile: not a folder" \
+  "${plot[@]}" --adaptive "$work/membrane" --eta-only --out "$work/afile"
+refuses out_under_file "plot_results.py: error: --out $work/afile/x: cannot create the folder" \
+  "${plot[@]}" --adaptive "$work/membrane" --eta-only --out "$work/afile/x"
+refuses bar_out_file "plot_bar.py: error: --out $work/afile: not a folder" \
+  "$py" "$tools/plot_bar.py" --adaptive "$work/bar" --out "$work/afile"
+# Labels from the run's deck: the legend of --adaptive (not the paper's 50% for every run; plot_bar.py
+# takes --adaptive-label too), kappa of a scalar run with Problem/Stiffness 4 (not lambda_L + 2 mu),
+# the foundation of the bar (Problem/Obstacle under Gamma_C).
+"$py" - "$work" "$tools" <<'PY' || fail "labels from the run's deck"
+import sys
+sys.path.insert(0, sys.argv[2])
+import plot_bar, plot_results
+work = sys.argv[1]
+checks = [(plot_results.adaptive_label(f"{work}/membrane"), "adaptive, fixed fraction 50%"),
+          (plot_results.adaptive_label(f"{work}/short"), "adaptive, fixed fraction 20%"),
+          (plot_results.scaling_note(f"{work}/short").endswith("($\\kappa$ = Problem/Stiffness = 4)"), True),
+          ("lambda_L" in plot_results.scaling_note(f"{work}/short"), False),
+          (tuple(round(v, 9) for v in plot_bar.foundation(f"{work}/bar", f"{work}/bar.e")), (0.15, 0.2, 0.0, -0.005))]
+bad = [f"{got!r}, expected {want!r}" for got, want in checks if got != want]
+if bad:
+    sys.exit("; ".join(bad))
+PY
+"$py" "$tools/plot_bar.py" --help | grep -q -- "--adaptive-label" || fail "plot_bar.py has no --adaptive-label"
+# compare_runs.py: a required factor that is not a number, and the runs given the other way round.
+refuses compare_nan "compare_runs.py: error: argument --require-factor: nan: not a factor" \
+  "$py" "$tools/compare_runs.py" "$work/membrane" "$work/membrane-uniform" --require-factor nan
+refuses compare_swapped "compare_runs.py: error: .*the arguments swapped?" \
+  "$py" "$tools/compare_runs.py" "$work/membrane-uniform" "$work/membrane"
+# check_first_contact.py on a run written every 4th step: an input problem (one line), not a failed check.
+refuses first_not_every_step "check_first_contact.py: error: $work/membrane: steps [0-9]* and [0-9]* (the first contact) are not both in the Exodus series" \
+  "$py" "$tools/check_first_contact.py" "$work/membrane"
+# transfer_vs_coarsening.py on a run starting at rest (E(0) = 0, here a copy of the run written every
+# step with energy 0 in step 0): relative to the largest energy, never NaN; --check fails when the
+# steps that only refine change the energy (1e-3 added to energy_transferred wherever the transfer is not exact).
+mkdir -p "$work/rest" "$work/rest-bad"
+for f in "$work"/every.e*; do ln -sf "$f" "$work/rest/${f##*/}"; ln -sf "$f" "$work/rest-bad/${f##*/}"; done
+"$py" - "$work" <<'PY' || fail "the copies at rest"
+import csv, sys
+work = sys.argv[1]
+rows = list(csv.reader(open(f"{work}/every.steps.csv")))
+h = rows[0]
+e, tr = h.index("energy"), h.index("energy_transferred")
+rows[1][e] = "0"
+csv.writer(open(f"{work}/rest/every.steps.csv", "w", newline=""), lineterminator="\n").writerows(rows)
+for k in range(2, len(rows)):
+    if float(rows[k][tr]) != float(rows[k - 1][e]):
+        rows[k][tr] = repr(float(rows[k][tr]) + 1e-3)
+csv.writer(open(f"{work}/rest-bad/every.steps.csv", "w", newline=""), lineterminator="\n").writerows(rows)
+PY
+"$py" "$tools/transfer_vs_coarsening.py" --check "$work/rest/every" > "$work/transfer-rest.log" 2>&1 &&
+  grep -q "largest energy change [0-9.e+-]* max E" "$work/transfer-rest.log" && ! grep -qi "nan\|inf\|Warning" "$work/transfer-rest.log" ||
+  { cat "$work/transfer-rest.log"; fail "transfer_vs_coarsening.py on a run starting at rest"; }
+"$py" "$tools/transfer_vs_coarsening.py" --check "$work/rest-bad/every" > "$work/transfer-rest-bad.log" 2>&1 &&
+  { cat "$work/transfer-rest-bad.log"; fail "transfer_vs_coarsening.py --check passed energy changes of 1e-3 in a run at rest"; }
+grep -q "a step that only refines changes the energy by more than 1e-12 max E" "$work/transfer-rest-bad.log" ||
+  { cat "$work/transfer-rest-bad.log"; fail "transfer_vs_coarsening.py --check at rest: message"; }
+# Bases with glob characters: the files of the run are found (compare_step_tables.py compares the cycle
+# tables, the Exodus readers find the series).
+mkdir -p "$work/glob[1]" "$work/glob[2]"
+for f in "$work"/membrane.*csv; do cp "$f" "$work/glob[1]/${f##*/}"; cp "$f" "$work/glob[2]/${f##*/}"; done
+for f in "$work"/membrane.e*; do ln -sf "$f" "$work/glob[1]/${f##*/}"; done
+sed -i '5s/^\([0-9]*\),\([^,]*\),\([0-9]*\)/\1,\2,99999/' "$work/glob[1]/membrane.cycle0.steps.csv"
+"$py" "$tools/compare_step_tables.py" "$work/glob[1]/membrane" "$work/glob[2]/membrane" > "$work/glob-tables.log" 2>&1 &&
+  fail "compare_step_tables.py: bases with [..]: a changed cycle table not found"
+grep -q "^.cycle0.steps.csv: dofs differs first in row 4: 99999" "$work/glob-tables.log" ||
+  { cat "$work/glob-tables.log"; fail "compare_step_tables.py: bases with [..]: message"; }
+"$py" "$tools/check_mirror_symmetry.py" "$work/glob[1]/membrane" > "$work/glob-mirror.log" 2>&1 &&
+  grep -q "^$(ls "$work"/membrane.e* | wc -l) meshes" "$work/glob-mirror.log" ||
+  { cat "$work/glob-mirror.log"; fail "check_mirror_symmetry.py: a base with [..]"; }
+"$py" "$tools/check_adaptive_meshes.py" "$work/glob[1]/membrane" > "$work/glob-meshes.log" 2>&1 ||
+  { cat "$work/glob-meshes.log"; fail "check_adaptive_meshes.py: a base with [..]"; }
+# compare_step_tables.py: a header that differs is named as such (not 'differ in shape' with equal row
+# counts); a cell that is not a number: one line naming file, row and column.
+mkdir -p "$work/cst"
+for f in "$work"/membrane.*csv; do cp "$f" "$work/cst/a${f#"$work"/membrane}"; cp "$f" "$work/cst/b${f#"$work"/membrane}"; done
+sed -i '1s/,energy,/,energyX,/' "$work/cst/b.steps.csv"
+"$py" "$tools/compare_step_tables.py" "$work/cst/a" "$work/cst/b" > "$work/cst.log" 2>&1 && fail "compare_step_tables.py: other headers passed"
+grep -q "^.steps.csv: the headers differ: columns only in $work/cst/a.steps.csv: energy; only in $work/cst/b.steps.csv: energyX" \
+  "$work/cst.log" || { cat "$work/cst.log"; fail "compare_step_tables.py: other headers: message"; }
+sed -i '1s/,energyX,/,energy,/; 3s/^\([0-9]*\),[^,]*,/\1,abc,/' "$work/cst/b.steps.csv"
+refuses tables_not_number "compare_step_tables.py: error: $work/cst/b.steps.csv: row 2, column t: 'abc' is not a number" \
+  "$py" "$tools/compare_step_tables.py" "$work/cst/a" "$work/cst/b"
+# check_adaptive_meshes.py: --coarser-than compares every written time with BASE2's mesh at that time
+# (A: one file, one mesh at t = 0, 1, 2; B: a finer mesh at t = 0, A's at t = 1, 2: coarser in 1 of 3
+# steps); a mesh off the dyadic lattice: one line naming the file.
+"$py" - "$work" <<'PY' || fail "the synthetic series A, B, odd"
+import sys
+import netCDF4
+import numpy as np
+def write(path, cells, times, scale=8):
+    xy = sorted({(x + dx * w, y + dy * h) for x, y, w, h in cells for dx in (0, 1) for dy in (0, 1)})
+    index = {p: k + 1 for k, p in enumerate(xy)}
+    conn = [[index[(x, y)], index[(x + w, y)], index[(x + w, y + h)], index[(x, y + h)]] for x, y, w, h in cells]
+    xy = np.array(xy, dtype=float) / scale
+    with netCDF4.Dataset(path, "w", format="NETCDF3_64BIT_OFFSET") as d:
+        d.createDimension("num_nodes", len(xy))
+        d.createDimension("num_el_in_blk1", len(conn))
+        d.createDimension("num_nod_per_el1", 4)
+        d.createDimension("time_step", None)
+        d.createVariable("coordx", "f8", ("num_nodes",))[:] = xy[:, 0]
+        d.createVariable("coordy", "f8", ("num_nodes",))[:] = xy[:, 1]
+        d.createVariable("connect1", "i4", ("num_el_in_blk1", "num_nod_per_el1"))[:] = np.array(conn)
+        v = d.createVariable("time_whole", "f8", ("time_step",))
+        for i, t in enumerate(times):
+            v[i] = t
+coarse = [(0, 0, 4, 4), (4, 0, 4, 4), (0, 4, 4, 4), (4, 4, 4, 4)]
+fine = coarse[1:] + [(0, 0, 2, 2), (2, 0, 2, 2), (0, 2, 2, 2), (2, 2, 2, 2)]
+work = sys.argv[1]
+write(f"{work}/A.e", coarse, [0.0, 1.0, 2.0])
+write(f"{work}/B.e", fine, [0.0])
+write(f"{work}/B.e-s.0001", coarse, [1.0, 2.0])
+write(f"{work}/odd.e", [(0, 0, 3, 10), (3, 0, 7, 10)], [0.0], scale=10)  # cells [0,0.3] and [0.3,1] in x
+PY
+"$py" "$tools/check_adaptive_meshes.py" "$work/A" --coarser-than "$work/B" --in-every-step > "$work/coarser.log" 2>&1 &&
+  { cat "$work/coarser.log"; fail "--coarser-than --in-every-step passed with 1 of 3 steps coarser"; }
+grep -q "^1 of 3 steps have cells coarser than in B" "$work/coarser.log" &&
+  grep -q "VIOLATION: only 1 of 3 steps have cells coarser than in B (--in-every-step)" "$work/coarser.log" ||
+  { cat "$work/coarser.log"; fail "--coarser-than: per written time"; }
+refuses meshes_off_lattice "check_adaptive_meshes.py: error: odd.e: cell corners off the lattice" \
+  "$py" "$tools/check_adaptive_meshes.py" "$work/odd"
+# check_paraview.py (pvpython, where installed): a file that is not netCDF and a series cut short named in
+# one line each (not a traceback, not a wrong value).
+if command -v pvpython > /dev/null; then
+  echo hello > "$work/text.e"
+  mkdir -p "$work/cutpv"
+  for f in "$work"/membrane.e*; do cp "$f" "$work/cutpv/${f##*/}"; done
+  cutpv=$(ls "$work"/cutpv/membrane.e-s.* | sort | tail -1)
+  truncate -s -3000 "$cutpv"
+  pvpython - "$tools/check_paraview.py" "$work" > "$work/paraview.log" 2>&1 <<'PY' || { cat "$work/paraview.log"; fail "check_paraview.py on bad files"; }
+import runpy, sys
+script, work = sys.argv[1:]
+for args in ([f"{work}/text.e", f"{work}/membrane.steps.csv"], [f"{work}/cutpv/membrane.e", f"{work}/membrane.steps.csv"]):
+    sys.argv = [script] + args
+    try:
+        runpy.run_path(script, run_name="__main__")
+        sys.exit(f"{args[0]}: accepted")
+    except SystemExit as e:
+        if e.code != 1:
+            raise
+PY
+  grep -q "^check_paraview: FAIL: $work/text.e: not readable as an Exodus file" "$work/paraview.log" &&
+    grep -q "^check_paraview: FAIL: $cutpv: cut short" "$work/paraview.log" && ! grep -q Traceback "$work/paraview.log" ||
+    { cat "$work/paraview.log"; fail "check_paraview.py: messages"; }
+else
+  echo "skipped: check_paraview.py on bad files (no pvpython)"
+fi
 # --help of every Python script: exit status 0, the script's whole docstring (not cut after its first
 # line) and a help text for every argument.
 /usr/bin/python3 - "$tools" <<'PY' || fail "--help of the Python scripts"
@@ -412,7 +570,7 @@ echo "$(basename "$0") $*" >> "$STUB_LOG"
 exit "${STUB_STATUS:-1}"
 SH
 chmod +x "$sandbox/stubs/stub"
-for c in apt-get sudo dpkg-query cmake ctest mpirun make; do ln -s stub "$sandbox/stubs/$c"; done
+for c in apt-get sudo dpkg-query cmake ctest mpirun mpiexec make; do ln -s stub "$sandbox/stubs/$c"; done
 ln -s ../../stubs/stub "$sandbox/build/src/signorini"
 stubbed() {  # log command...: runs command with the stubs first on PATH, the stubs' calls in $sandbox/log.calls
   local log=$1
@@ -454,6 +612,16 @@ STUB_STATUS=0 stubbed sh-run-membrane-pass bash "$sandbox/tools/run-membrane.sh"
   { cat "$work/sh-run-membrane-pass.err"; fail "run-membrane.sh --set ... --check (stubbed)"; }
 grep -qx "signorini --output-dir out inputs/membrane.xml --set Adaptivity/Cycles=1 --check" "$sandbox/log.calls" ||
   { cat "$sandbox/log.calls"; fail "run-membrane.sh did not pass its arguments to signorini"; }
+# SIGNORINI_NO_BUILD: 1 uses the existing build (run-rank-sensitivity.sh too, which launches the ranks as the
+# build's tests do: here mpiexec, without build/CMakeCache.txt), 0 builds, another value is refused.
+SIGNORINI_NO_BUILD=1 STUB_STATUS=0 stubbed sh-ranks-nobuild bash "$sandbox/tools/run-rank-sensitivity.sh"
+! grep -q "^cmake\|^apt-get\|^sudo" "$sandbox/log.calls" && grep -q "^mpiexec -n 2 --oversubscribe --allow-run-as-root ./build/src/signorini" \
+  "$sandbox/log.calls" || { cat "$sandbox/log.calls"; fail "run-rank-sensitivity.sh with SIGNORINI_NO_BUILD=1"; }
+SIGNORINI_NO_BUILD=0 stubbed sh-comparison-build bash "$sandbox/tools/run-membrane-comparison.sh"
+grep -q "^dpkg-query\|^apt-get\|^cmake" "$sandbox/log.calls" || { cat "$work/sh-comparison-build.err"; fail "SIGNORINI_NO_BUILD=0 did not build"; }
+SIGNORINI_NO_BUILD=yes stubbed sh-comparison-yes bash "$sandbox/tools/run-membrane-comparison.sh"
+[ $? = 2 ] && [ ! -e "$sandbox/log.calls" ] && grep -q "error: SIGNORINI_NO_BUILD='yes': 1 .* or 0" "$work/sh-comparison-yes.err" ||
+  { cat "$work/sh-comparison-yes.err"; fail "SIGNORINI_NO_BUILD=yes not refused"; }
 echo "plots drawn; missing arguments, missing, non-adaptive, cut-short and not comparable runs refused in one line," \
   "nothing written; the deck from an Exodus file reruns the run bit for bit; output that cannot be written," \
   "runs of the wrong kind, --help and the shell scripts' arguments handled"
