@@ -3,10 +3,14 @@
 /// Ctrl-C (SIGINT), SIGTERM, SIGHUP and SIGPIPE end a run cleanly: the handler only records the
 /// signal, the time stepper checks at every step (and the runs before their files get their
 /// final names) on all ranks together and throws Interrupted, and the run's output staging
-/// removes its files on the way out (io::OutputStaging). A second SIGINT, SIGTERM or SIGHUP ends the
+/// removes its files on the way out (io::OutputStaging). The paths registered with
+/// RemovedOnSignal (the run's ".part" files, its lock and the folders it made) go at once, in the
+/// handler: mpirun kills its ranks about a second after it passes a Ctrl-C on as SIGTERM, which a
+/// long time step outlasts. A second SIGINT, SIGTERM or SIGHUP ends the
 /// process at once (the default action), except a copy of the first within a second (a signal to
 /// the process and to its group), which counts as one; SIGPIPE never ends it at once.
 #include <stdexcept>
+#include <string>
 
 #include "signorini/core/Types.hpp"
 
@@ -29,5 +33,29 @@ class Interrupted : public std::runtime_error {
 void installInterruptHandlers(bool printNotice);
 /// Throws Interrupted on every rank if any rank of \p comm received a signal. Collective.
 void throwIfInterrupted(const Comm& comm);
+/// Throws Interrupted if this process received SIGINT, SIGTERM or SIGHUP (not collective): for code
+/// about to create a file, which the signal's handler has no longer removed. Rank 0's file writing
+/// runs in core::onRootCollectively, which passes the exception on to every rank.
+void throwIfSignalled();
+
+/// While it lives, \p path (a file, or a directory removed if empty) is removed by the first
+/// SIGINT, SIGTERM or SIGHUP in the signal handler itself (files first, then directories, the
+/// newest first), so that a process killed soon after the signal (mpirun) leaves nothing; the
+/// normal path removes it too. Registration only; the destructor does not remove the path. The
+/// main thread registers; a fixed number of slots (a path without a free slot, or longer than
+/// PATH_MAX, is not registered).
+class RemovedOnSignal {
+ public:
+  RemovedOnSignal() = default;
+  explicit RemovedOnSignal(const std::string& path, bool directory = false);
+  ~RemovedOnSignal();
+  RemovedOnSignal(RemovedOnSignal&& other) noexcept;
+  RemovedOnSignal& operator=(RemovedOnSignal&& other) noexcept;
+  RemovedOnSignal(const RemovedOnSignal&) = delete;
+  RemovedOnSignal& operator=(const RemovedOnSignal&) = delete;
+
+ private:
+  int slot_ = -1;
+};
 
 }  // namespace signorini::core

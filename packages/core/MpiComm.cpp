@@ -10,6 +10,7 @@
 #include <Teuchos_DefaultMpiComm.hpp>
 
 #include "signorini/core/Error.hpp"
+#include "signorini/core/Interrupt.hpp"
 
 namespace signorini::core {
 
@@ -93,11 +94,13 @@ void onRootCollectively(const Comm& comm, const std::function<void()>& action) {
   MPI_Comm c = rawMpiComm(comm);
   int rank = 0;
   MPI_Comm_rank(c, &rank);
-  int kind = 0;  // 0: done, 1: user error, 2: another exception, 3: solver error
+  int kind = 0;  // 0: done, 1: user error, 2: another exception, 3: solver error, 4 + signal: interrupted
   std::string message;
   if (rank == 0) {
     try {
       action();
+    } catch (const Interrupted& e) {
+      kind = 4 + e.signal();
     } catch (const UserError& e) {
       kind = 1, message = e.what();
     } catch (const SolverError& e) {
@@ -108,6 +111,7 @@ void onRootCollectively(const Comm& comm, const std::function<void()>& action) {
   }
   MPI_Bcast(&kind, 1, MPI_INT, 0, c);
   if (kind == 0) return;
+  if (kind >= 4) throw Interrupted(kind - 4);
   int length = static_cast<int>(message.size());
   MPI_Bcast(&length, 1, MPI_INT, 0, c);
   message.resize(static_cast<size_t>(length));

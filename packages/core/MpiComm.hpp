@@ -15,7 +15,7 @@ namespace signorini::core {
 MPI_Comm rawMpiComm(const Comm& comm);
 
 /// Runs \p action on rank 0 only (output files are written there) and makes its failure every
-/// rank's: a core::UserError or core::SolverError thrown by \p action is rethrown as such on every
+/// rank's: a core::UserError, core::SolverError or core::Interrupted thrown by \p action is rethrown as such on every
 /// rank with rank 0's message, any other std::exception as std::runtime_error. Collective: call it on every rank.
 void onRootCollectively(const Comm& comm, const std::function<void()>& action);
 

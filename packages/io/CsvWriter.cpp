@@ -17,6 +17,8 @@ namespace signorini::io {
 
 CsvWriter::CsvWriter(std::string path, std::vector<std::string> columns)
     : path_(std::move(path)), columns_(std::move(columns)) {
+  core::throwIfSignalled();  // a file made after the signal's handler ran would stay
+  partRemovedOnSignal_ = core::RemovedOnSignal(path_ + ".part");
   errno = 0;
   out_.open(path_ + ".part", std::ios::out | std::ios::trunc);
   if (!out_) {  // the reason, e.g. "File name too long" for a long Output/Basename
@@ -57,6 +59,7 @@ void CsvWriter::commit() {
   out_.close();  // a failed write (disk full) leaves the stream failed; the rows were flushed as they came
   if (!out_) SIGNORINI_USER_ERROR("cannot write output file '" << path_ << ".part' (disk full or quota exceeded?)");
   publish(path_ + ".part", path_);
+  partRemovedOnSignal_ = {};  // published: renamed, or staged (the staging removes it on a signal)
   done_ = committed_ = true;
 }
 
@@ -69,6 +72,7 @@ void CsvWriter::abandon() {
   if (done_) return;
   out_.close();
   std::remove((path_ + ".part").c_str());
+  partRemovedOnSignal_ = {};
   done_ = true;
 }
 

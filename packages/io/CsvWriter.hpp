@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "signorini/core/Interrupt.hpp"
+
 namespace signorini::io {
 
 /// A CSV table written under "\<path\>.part" and renamed to `path` by commit(), so an interrupted or failed run never
@@ -13,7 +15,7 @@ namespace signorini::io {
 class CsvWriter {
  public:
   /// Opens "<path>.part" and writes the header. Throws core::UserError naming the path if it
-  /// cannot be created.
+  /// cannot be created, core::Interrupted after a Ctrl-C (core::throwIfSignalled).
   CsvWriter(std::string path, std::vector<std::string> columns);
   ~CsvWriter();  ///< abandons the file unless committed
   CsvWriter(const CsvWriter&) = delete;
@@ -38,6 +40,7 @@ class CsvWriter {
   std::string path_;
   std::vector<std::string> columns_;
   std::ofstream out_;
+  core::RemovedOnSignal partRemovedOnSignal_;  ///< "<path>.part" goes with a Ctrl-C at once
   bool done_ = false;
   bool committed_ = false;
 };

@@ -3,6 +3,7 @@
 #include "signorini/io/ExodusSeriesWriter.hpp"
 
 #include "signorini/core/Error.hpp"
+#include "signorini/core/Interrupt.hpp"
 #include "signorini/io/ExodusCalls.hpp"
 #include "signorini/io/OutputStaging.hpp"
 
@@ -58,6 +59,7 @@ struct ExodusSeriesWriter::Impl {
   int exoid = -1;
   long meshId = 0;
   std::string finalPath, partPath;
+  core::RemovedOnSignal partRemovedOnSignal;  ///< the file being written goes with a Ctrl-C at once
   std::size_t numNodes = 0, numCells = 0, numSides = 0;
   int numSteps = 0;
 
@@ -81,6 +83,8 @@ struct ExodusSeriesWriter::Impl {
     finalPath = seriesFileName(filesStarted);
     partPath = finalPath + ".part";
     ++filesStarted;
+    core::throwIfSignalled();  // a file made after the signal's handler ran would stay
+    partRemovedOnSignal = core::RemovedOnSignal(partPath);
 
     int cpuWordSize = 8, ioWordSize = 8;
     errno = 0;
@@ -227,6 +231,7 @@ struct ExodusSeriesWriter::Impl {
     exoid = -1;
     checkExodus(status, "ex_close", partPath);
     publish(partPath, finalPath);
+    partRemovedOnSignal = {};  // published: renamed, or staged (the staging removes it on a signal)
     writtenFiles.push_back(finalPath);
   }
 
@@ -236,6 +241,7 @@ struct ExodusSeriesWriter::Impl {
     exoid = -1;
     std::error_code ec;
     if (!partPath.empty() && fs::is_regular_file(partPath, ec)) fs::remove(partPath, ec);
+    partRemovedOnSignal = {};
   }
 
   /// Throws std::logic_error unless the data fit \p mesh and the declared variables.

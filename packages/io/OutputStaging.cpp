@@ -34,8 +34,19 @@ struct Retirement {
 struct Staging {
   int depth = 0;
   std::map<std::string, std::string> partOf;  // final path -> staged file
+  std::map<std::string, core::RemovedOnSignal> partRemovedOnSignal;  // final path -> its staged file's registration
   std::vector<Retirement> retired;
   std::vector<std::string> createdDirectories;  // outermost first
+  std::vector<core::RemovedOnSignal> directoriesRemovedOnSignal;
+
+  /// Forgets the run's files and folders (and their registrations for a Ctrl-C).
+  void clear() {
+    partOf.clear();
+    partRemovedOnSignal.clear();
+    retired.clear();
+    createdDirectories.clear();
+    directoriesRemovedOnSignal.clear();
+  }
 };
 
 Staging& staging() {
@@ -147,9 +158,7 @@ OutputStaging::~OutputStaging() {
   for (const auto& [finalPath, part] : s.partOf) fs::remove(part, ec);
   // fs::remove of a directory is rmdir: it stays if something else was put there meanwhile.
   for (auto it = s.createdDirectories.rbegin(); it != s.createdDirectories.rend(); ++it) fs::remove(*it, ec);
-  s.partOf.clear();
-  s.retired.clear();
-  s.createdDirectories.clear();
+  s.clear();
 }
 
 void OutputStaging::commit() {
@@ -158,9 +167,8 @@ void OutputStaging::commit() {
   auto& s = staging();
   auto partOf = std::move(s.partOf);
   auto retired = std::move(s.retired);
-  s.partOf.clear();
-  s.retired.clear();
-  s.createdDirectories.clear();
+  auto removedOnSignal = std::move(s.partRemovedOnSignal);  // until the renames are done
+  s.clear();
   // The staged files first; if one cannot take its name, the run's files all go (those renamed
   // already and the others) and nothing is retired.
   std::vector<std::string> renamed;
@@ -175,6 +183,7 @@ void OutputStaging::commit() {
     std::error_code ignored;
     for (const auto& f : renamed) fs::remove(f, ignored);
     for (const auto& entry : partOf) fs::remove(entry.second, ignored);
+    core::throwIfSignalled();  // the signal's handler removed the staged files
     SIGNORINI_USER_ERROR(error);
   }
   std::set<fs::path> keep;
@@ -185,7 +194,9 @@ void OutputStaging::commit() {
 
 void removeOnFailure(const std::vector<std::string>& createdDirectories) {
   auto& s = staging();
-  if (s.depth > 0) s.createdDirectories.insert(s.createdDirectories.end(), createdDirectories.begin(), createdDirectories.end());
+  if (s.depth == 0) return;
+  s.createdDirectories.insert(s.createdDirectories.end(), createdDirectories.begin(), createdDirectories.end());
+  for (const auto& directory : createdDirectories) s.directoriesRemovedOnSignal.emplace_back(directory, true);
 }
 
 void publish(const std::string& part, const std::string& finalPath) {
@@ -195,11 +206,15 @@ void publish(const std::string& part, const std::string& finalPath) {
     std::error_code ec;
     if (it != s.partOf.end() && it->second != part) fs::remove(it->second, ec);  // written again in this run
     s.partOf[finalPath] = part;
+    s.partRemovedOnSignal[finalPath] = core::RemovedOnSignal(part);
     return;
   }
   std::error_code ec;
   fs::rename(part, finalPath, ec);
-  if (ec) SIGNORINI_USER_ERROR(renameError(part, finalPath, ec));
+  if (ec) {
+    core::throwIfSignalled();  // the signal's handler removed the file
+    SIGNORINI_USER_ERROR(renameError(part, finalPath, ec));
+  }
 }
 
 void unpublish(const std::string& finalPath) {
@@ -210,6 +225,7 @@ void unpublish(const std::string& finalPath) {
     if (it == s.partOf.end()) return;  // an earlier run's file stays until the commit retires it
     fs::remove(it->second, ec);
     s.partOf.erase(it);
+    s.partRemovedOnSignal.erase(finalPath);
     return;
   }
   fs::remove(finalPath, ec);
@@ -222,6 +238,7 @@ void republish(const std::string& from, const std::string& to) {
     SIGNORINI_ASSERT(it != s.partOf.end(), "republish: '" << from << "' was not published in this run");
     std::string part = it->second;
     s.partOf.erase(it);
+    s.partRemovedOnSignal.erase(from);
     publish(part, to);
     return;
   }
@@ -267,8 +284,10 @@ OutputLock::OutputLock(const std::string& base) : path_(base + ".lock") {
     // is on a file without a name, and a third run could lock a new one. Take the named file.
     struct stat held, named;
     if (::fstat(fd_, &held) == 0 && ::stat(path_.c_str(), &named) == 0 && held.st_dev == named.st_dev &&
-        held.st_ino == named.st_ino)
+        held.st_ino == named.st_ino) {
+      removedOnSignal_ = core::RemovedOnSignal(path_);
       return;
+    }
     ::close(fd_);
     fd_ = -1;
   }

@@ -13,6 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "signorini/core/Interrupt.hpp"
+
 namespace signorini::io {
 
 /// A staging scope. Scopes nest: an inner one joins the outer one, and only the outermost commits
@@ -52,6 +54,7 @@ class OutputLock {
  private:
   std::string path_;
   int fd_ = -1;
+  core::RemovedOnSignal removedOnSignal_;  ///< the lock file goes with a Ctrl-C at once
 };
 
 /// Directories the open scope's run created for its output (parents first): a run that fails

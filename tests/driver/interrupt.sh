@@ -2,7 +2,8 @@
 # Ctrl-C ends a run cleanly: SIGINT to the driver (1 rank, also twice at once), SIGHUP, a closed
 # stdout (SIGPIPE) or SIGTERM to mpirun (2 ranks, as mpirun passes Ctrl-C on) in the middle of the
 # adaptive paper deck leaves no file of the run and no '.part' file; on 1 rank the exit status is
-# 128 + the signal. A later successful run
+# 128 + the signal. Killed right after SIGTERM, a run has removed its files in the signal's
+# handler. A later successful run
 # removes the '.part' files that a run killed outright (SIGKILL) left.
 # Usage: interrupt.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
 # MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (FindMPI's MPIEXEC_EXECUTABLE,
@@ -105,9 +106,26 @@ grep -q "batch interrupted: 1 of 2 deck(s) done, 0 failed, 1 stopped or not run"
 [ "$(ls "$work/batch" | tr '\n' ' ')" = "good.e good.steps.csv " ] ||
   fail "batch: expected the first deck's files only, found: $(ls -A "$work/batch")"
 
+# Killed right after the signal, within a step (mpirun kills its ranks about a second after it passes a
+# Ctrl-C on as SIGTERM): the handler itself removes the run's '.part' files, its lock and the folders
+# it made, before it prints its notice. Steps of about half a second (a fine mesh, Exodus output);
+# SIGKILL as soon as the notice is out. (Before, the files stayed until the next step's check.)
+mkdir -p "$work/soon"
+"$signorini" --output-dir "$work/soon/made/deeper" --set 'Mesh/Refinement Level=8' \
+  --set 'Time Integration/Final Time=0.05' --set 'Output/Progress Interval=1' "$deck" > "$work/soon.log" 2>&1 &
+pid=$!
+notice_out() { grep -q 'stopping at the next time step' "$work/soon.log"; }
+signal_when TERM $pid steps_at_least "$work/soon.log" 1 > /dev/null &
+waiter=$!
+for _ in $(seq 6000); do notice_out && break; sleep 0.01; done
+notice_out || { kill -KILL $pid; cat "$work/soon.log"; fail "killed soon after SIGTERM: no notice in 60 s"; }
+kill -KILL $pid
+wait $waiter
+[ -z "$(ls -A "$work/soon")" ] || fail "killed soon after SIGTERM: files left: $(find "$work/soon" | tr '\n' ' ')"
+
 status=$(interrupt killed KILL "$signorini")
 ls "$work/killed" | grep -q '[.]part$' || fail "SIGKILL left no '.part' file (the control)"
 "$signorini" --output-dir "$work/killed" --set 'Adaptivity/Cycles=1' --set 'Time Integration/Final Time=0.01' \
   "$src/inputs/membrane.xml" > "$work/rerun.log" 2>&1 || { cat "$work/rerun.log"; fail "the rerun failed"; }
 ! ls "$work/killed" | grep '[.]part$' || fail "the rerun kept the killed run's '.part' files"
-echo "interrupted runs leave nothing; a rerun removes a killed run's '.part' files"
+echo "interrupted runs leave nothing (also when killed right after the signal); a rerun removes a killed run's '.part' files"
