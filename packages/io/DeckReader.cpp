@@ -95,7 +95,15 @@ std::string readText(const std::string& path) {
   if (::stat(path.c_str(), &info) == 0 && S_ISDIR(info.st_mode))
     SIGNORINI_USER_ERROR(path << ": is a directory, not a deck");
   std::ifstream in(path);
-  if (!in) SIGNORINI_USER_ERROR(path << ": cannot open the deck (missing or unreadable file)");
+  if (!in) {
+    // "<(...)" gives /dev/fd/N, a descriptor of the shell that mpirun does not pass on to its ranks.
+    const bool descriptor = path.rfind("/dev/fd/", 0) == 0 || path.rfind("/proc/self/fd/", 0) == 0;
+    if (descriptor)
+      SIGNORINI_USER_ERROR(path << ": cannot open the deck (a file descriptor that this process does not have: "
+                                   "mpirun does not pass a shell's <(...) on to its ranks; give a file, or the deck "
+                                   "on stdin as /dev/stdin)");
+    SIGNORINI_USER_ERROR(path << ": cannot open the deck (missing or unreadable file)");
+  }
   std::ostringstream text;
   text << in.rdbuf();
   return text.str();

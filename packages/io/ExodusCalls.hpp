@@ -6,6 +6,7 @@
 
 #include <exodusII.h>
 
+#include <cerrno>
 #include <string>
 
 namespace signorini::io::detail {
@@ -26,11 +27,20 @@ inline std::string lastExodusMessage() {
   return text;
 }
 
-/// Throws a UserError naming the file when an Exodus call failed (negative status).
+/// Throws a UserError naming the file when an Exodus call failed (negative status), with the
+/// a hint when the system said the disk, the quota or the file size limit is full (ENOSPC, EDQUOT,
+/// EFBIG).
 inline void checkExodus(int status, const char* call, const std::string& path) {
   if (status < 0) {
-    SIGNORINI_USER_ERROR("Exodus II file '" << path << "': " << call << " failed ("
-                                            << lastExodusMessage() << ")");
+    const int reason = errno;
+    const char* message = nullptr;
+    const char* function = nullptr;
+    int code = 0;
+    ex_get_err(&message, &function, &code);
+    const auto is = [&](int error) { return reason == error || code == error; };
+    const bool full = is(ENOSPC) || is(EDQUOT) || is(EFBIG);
+    SIGNORINI_USER_ERROR("Exodus II file '" << path << "': " << call << " failed (" << lastExodusMessage() << ")"
+                                            << (full ? " (disk full, quota or file size limit exceeded?)" : ""));
   }
 }
 

@@ -2,6 +2,7 @@
 // would accept silently.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -39,6 +40,26 @@ TEST(DeckReader, ReadsADeckFromAPipe) {
   writer.join();
   std::remove(fifo.c_str());
   EXPECT_EQ(deck.sublist("Time Integration").get<double>("Time Step"), 0.0025);
+}
+
+// A shell's <(...) deck under mpirun: the ranks lack the shell's descriptor (/dev/fd/N). The
+// message says why; a missing file keeps its own.
+TEST(DeckReader, ADescriptorThisProcessLacksIsNamedAsSuch) {
+  int unused = 900;
+  while (::fcntl(unused, F_GETFD) != -1) ++unused;
+  try {
+    io::readDeckFile("/dev/fd/" + std::to_string(unused));
+    FAIL() << "a descriptor that is not open was read";
+  } catch (const core::UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("mpirun does not pass a shell's <(...) on to its ranks"), std::string::npos)
+        << e.what();
+  }
+  try {
+    io::readDeckFile(temporaryPath("missing.xml"));
+    FAIL() << "a missing deck was read";
+  } catch (const core::UserError& e) {
+    EXPECT_NE(std::string(e.what()).find("missing or unreadable file"), std::string::npos) << e.what();
+  }
 }
 
 TEST(DeckReader, RefusesAKeyGivenTwiceButNotTheSameNameInTwoLists) {

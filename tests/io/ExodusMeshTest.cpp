@@ -1,5 +1,9 @@
 /// \file ExodusMeshTest.cpp
 /// Tests of the Exodus II mesh reader and result-series writer.
+#include <sys/resource.h>
+
+#include <csignal>
+
 #include "signorini/core/Error.hpp"
 #include "signorini/io/ExodusSeriesWriter.hpp"
 
@@ -220,6 +224,29 @@ TEST_F(ExodusMeshTest, PartFileIsRenamedOnClose) {
   EXPECT_EQ(filesInDir(), std::vector<std::string>{"out.e"});
   EXPECT_EQ(writer.close(), std::vector<std::string>{path("out.e")});  // idempotent
   EXPECT_THROW(writeStep(writer, 1, stripMesh(2), 1.0), std::logic_error);
+}
+
+// A file that cannot grow (as on a full disk): a file size limit of 64 kB fails the file's first
+// write beyond it (EFBIG; here netCDF's fill of the coordinates). The message gives a hint.
+TEST_F(ExodusMeshTest, AFileThatCannotGrowIsNamedAsSuch) {
+  auto writer = makeWriter(path("out"));
+  rlimit saved{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto previousHandler = std::signal(SIGXFSZ, SIG_IGN);  // the write fails instead of the process
+  rlimit small = saved;
+  small.rlim_cur = 64 * 1024;
+  ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string message;
+  try {
+    writeStep(writer, 1, stripMesh(20000), 0.0);  // 40,000 nodes: 320 kB per nodal field
+    writer.close();
+  } catch (const core::UserError& e) {
+    message = e.what();
+  }
+  ::setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, previousHandler);
+  writer.abandon();
+  EXPECT_NE(message.find("(disk full, quota or file size limit exceeded?)"), std::string::npos) << message;
 }
 
 TEST_F(ExodusMeshTest, DestructorFinalisesFile) {
