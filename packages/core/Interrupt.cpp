@@ -1,6 +1,7 @@
 #include "signorini/core/Interrupt.hpp"
 
 #include <limits.h>
+#include <string.h>
 #include <time.h>
 #include <unistd.h>
 
@@ -19,28 +20,41 @@ volatile std::sig_atomic_t received = 0;
 volatile std::sig_atomic_t announce = 0;  ///< this process prints the notice (rank 0)
 timespec firstAt{};
 
-// The paths of RemovedOnSignal: a slot's kind is published after its path is written, so the
-// handler (on any thread) reads only complete paths.
-constexpr int kSlots = 128;
+// The paths of RemovedOnSignal, in chunks of slots that are never freed, as the path copies are
+// not (the handler may read a slot on another thread at any time): a slot's path is published
+// before its kind, and its kind cleared before it is reused.
+constexpr int kChunkSlots = 256;
 enum SlotKind : int { kFree = 0, kFile = 1, kDirectory = 2 };
-char slotPath[kSlots][PATH_MAX];
-std::atomic<int> slotKind[kSlots];
-long slotOrder[kSlots];  // registration order: directories are removed newest first
-long registrations = 0;
-static_assert(std::atomic<int>::is_always_lock_free, "the signal handler reads the slots");
+struct Chunk {
+  RemovedOnSignal::Slot slots[kChunkSlots];
+  std::atomic<Chunk*> next{nullptr};
+};
+Chunk firstChunk;
+long registrations = 0;             // main thread only
+std::atomic<int> removalPaused{0};  // SignalRemovalPause
+std::atomic<int> removalDone{0};    // the first signal's removal ran (two signals at once: one removal)
+static_assert(std::atomic<int>::is_always_lock_free && std::atomic<const char*>::is_always_lock_free &&
+                  std::atomic<Chunk*>::is_always_lock_free,
+              "the signal handler reads the slots");
 
-/// Removes the registered paths (async-signal-safe: unlink and rmdir only).
+/// Removes the registered paths: files first, then directories, the newest first
+/// (async-signal-safe: lock-free atomics, unlink and rmdir only).
 void removeRegisteredPaths() {
-  bool removed[kSlots] = {};
-  for (int i = 0; i < kSlots; ++i)
-    if (slotKind[i].load() == kFile) ::unlink(slotPath[i]);
-  for (;;) {
-    int newest = -1;
-    for (int i = 0; i < kSlots; ++i)
-      if (!removed[i] && slotKind[i].load() == kDirectory && (newest < 0 || slotOrder[i] > slotOrder[newest])) newest = i;
-    if (newest < 0) return;
-    removed[newest] = true;
-    ::rmdir(slotPath[newest]);
+  if (removalPaused.load() || removalDone.exchange(1)) return;
+  for (Chunk* c = &firstChunk; c; c = c->next.load())
+    for (auto& slot : c->slots)
+      if (slot.kind.load() == kFile) ::unlink(slot.path.load());
+  for (long below = LONG_MAX;;) {
+    const char* newest = nullptr;
+    long newestOrder = 0;
+    for (Chunk* c = &firstChunk; c; c = c->next.load())
+      for (auto& slot : c->slots) {
+        const long order = slot.order.load();
+        if (slot.kind.load() == kDirectory && order < below && order > newestOrder) newest = slot.path.load(), newestOrder = order;
+      }
+    if (!newest) return;
+    ::rmdir(newest);
+    below = newestOrder;
   }
 }
 
@@ -92,35 +106,47 @@ void throwIfInterrupted(const Comm& comm) {
   if (global) throw Interrupted(global);
 }
 
-void throwIfSignalled() {
+int stopSignal() {
   const int signal = received;
-  if (signal && signal != SIGPIPE) throw Interrupted(signal);
+  return signal == SIGPIPE ? 0 : signal;
+}
+
+void throwIfSignalled() {
+  if (const int signal = stopSignal()) throw Interrupted(signal);
 }
 
 RemovedOnSignal::RemovedOnSignal(const std::string& path, bool directory) {
-  if (path.empty() || path.size() >= PATH_MAX) return;
-  for (int i = 0; i < kSlots; ++i)
-    if (slotKind[i].load() == kFree) {
-      std::memcpy(slotPath[i], path.c_str(), path.size() + 1);
-      slotOrder[i] = ++registrations;
-      slotKind[i].store(directory ? kDirectory : kFile);
-      slot_ = i;
+  if (path.empty()) return;
+  for (Chunk* c = &firstChunk;; c = c->next.load()) {
+    for (auto& slot : c->slots) {
+      if (slot.kind.load() != kFree) continue;
+      const char* previous = slot.path.load();
+      if (!previous || path != previous) slot.path.store(strdup(path.c_str()));  // never freed (see above)
+      slot.order.store(++registrations);
+      slot.kind.store(directory ? kDirectory : kFile);
+      slot_ = &slot;
       return;
     }
+    if (!c->next.load()) c->next.store(new Chunk);  // never freed
+  }
 }
 
 RemovedOnSignal::~RemovedOnSignal() {
-  if (slot_ >= 0) slotKind[slot_].store(kFree);
+  if (slot_) slot_->kind.store(kFree);
 }
 
-RemovedOnSignal::RemovedOnSignal(RemovedOnSignal&& other) noexcept : slot_(std::exchange(other.slot_, -1)) {}
+RemovedOnSignal::RemovedOnSignal(RemovedOnSignal&& other) noexcept : slot_(std::exchange(other.slot_, nullptr)) {}
 
 RemovedOnSignal& RemovedOnSignal::operator=(RemovedOnSignal&& other) noexcept {
   if (this != &other) {
-    if (slot_ >= 0) slotKind[slot_].store(kFree);
-    slot_ = std::exchange(other.slot_, -1);
+    if (slot_) slot_->kind.store(kFree);
+    slot_ = std::exchange(other.slot_, nullptr);
   }
   return *this;
 }
+
+SignalRemovalPause::SignalRemovalPause() { removalPaused.store(1); }
+
+SignalRemovalPause::~SignalRemovalPause() { removalPaused.store(0); }
 
 }  // namespace signorini::core

@@ -9,6 +9,7 @@
 /// long time step outlasts. A second SIGINT, SIGTERM or SIGHUP ends the
 /// process at once (the default action), except a copy of the first within a second (a signal to
 /// the process and to its group), which counts as one; SIGPIPE never ends it at once.
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
@@ -33,19 +34,29 @@ class Interrupted : public std::runtime_error {
 void installInterruptHandlers(bool printNotice);
 /// Throws Interrupted on every rank if any rank of \p comm received a signal. Collective.
 void throwIfInterrupted(const Comm& comm);
-/// Throws Interrupted if this process received SIGINT, SIGTERM or SIGHUP (not collective): for code
-/// about to create a file, which the signal's handler has no longer removed. Rank 0's file writing
-/// runs in core::onRootCollectively, which passes the exception on to every rank.
+/// The SIGINT, SIGTERM or SIGHUP this process received, 0 if none (not collective).
+int stopSignal();
+/// Throws Interrupted if stopSignal() is not 0 (not collective): for code that has just created a
+/// file, which the signal's handler may have run too early to remove (it removes the file, then
+/// calls this). Rank 0's file writing runs in core::onRootCollectively, which passes the exception
+/// on to every rank.
 void throwIfSignalled();
 
 /// While it lives, \p path (a file, or a directory removed if empty) is removed by the first
 /// SIGINT, SIGTERM or SIGHUP in the signal handler itself (files first, then directories, the
 /// newest first), so that a process killed soon after the signal (mpirun) leaves nothing; the
 /// normal path removes it too. Registration only; the destructor does not remove the path. The
-/// main thread registers; a fixed number of slots (a path without a free slot, or longer than
-/// PATH_MAX, is not registered).
+/// main thread registers; any number of paths (their copies stay allocated until the process
+/// ends, a few bytes per file a run writes).
 class RemovedOnSignal {
  public:
+  /// A registration (internal: kind, path and order, read by the signal handler).
+  struct Slot {
+    std::atomic<int> kind{0};
+    std::atomic<const char*> path{nullptr};
+    std::atomic<long> order{0};
+  };
+
   RemovedOnSignal() = default;
   explicit RemovedOnSignal(const std::string& path, bool directory = false);
   ~RemovedOnSignal();
@@ -55,7 +66,18 @@ class RemovedOnSignal {
   RemovedOnSignal& operator=(const RemovedOnSignal&) = delete;
 
  private:
-  int slot_ = -1;
+  Slot* slot_ = nullptr;
+};
+
+/// While it lives, a signal's handler removes nothing: for the commit of a run's files, where
+/// removing the files not renamed yet would make the commit remove the renamed ones too, and with
+/// them the earlier run's results they replaced. (The run then keeps its files and says so.)
+class SignalRemovalPause {
+ public:
+  SignalRemovalPause();
+  ~SignalRemovalPause();
+  SignalRemovalPause(const SignalRemovalPause&) = delete;
+  SignalRemovalPause& operator=(const SignalRemovalPause&) = delete;
 };
 
 }  // namespace signorini::core

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iomanip>
+#include <map>
 #include <limits>
 #include <sstream>
 
@@ -908,6 +909,17 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
       SIGNORINI_USER_ERROR("Output/Probes/" << name << ": \"" << spec << "\" is not a point (a coordinate is not a finite number)");
     I.probes.push_back({name, {x, y}});
   }
+  // Two probes must not name one column (a probe "p" with its velocity and a probe "p:v").
+  std::map<std::string, std::string> probeOfColumn;
+  for (const auto& [name, point] : I.probes)
+    for (int field = 0; field < I.probeFields; ++field)
+      for (int c = 0; c < I.problem->components(); ++c) {
+        const std::string column = "probe:" + name + probeSuffix(field, c, I.problem->components());
+        const auto [it, added] = probeOfColumn.emplace(column, name);
+        if (!added)
+          SIGNORINI_USER_ERROR("Output/Probes/" << name << " and Output/Probes/" << it->second
+                                                << " both give the column '" << column << "'; rename one of them");
+      }
 
   I.initialForest = std::make_shared<mesh::Forest>(I.coarse, core::rawMpiComm(*comm), meshParams.get<int>("Refinement Level"));
   // Set-up checks on the initial mesh, before any output exists.

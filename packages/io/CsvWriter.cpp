@@ -17,7 +17,6 @@ namespace signorini::io {
 
 CsvWriter::CsvWriter(std::string path, std::vector<std::string> columns)
     : path_(std::move(path)), columns_(std::move(columns)) {
-  core::throwIfSignalled();  // a file made after the signal's handler ran would stay
   partRemovedOnSignal_ = core::RemovedOnSignal(path_ + ".part");
   errno = 0;
   out_.open(path_ + ".part", std::ios::out | std::ios::trunc);
@@ -29,6 +28,10 @@ CsvWriter::CsvWriter(std::string path, std::vector<std::string> columns)
   for (size_t i = 0; i < columns_.size(); ++i) out_ << (i ? "," : "") << columns_[i];
   out_ << "\n";
   out_.flush();
+  if (core::stopSignal()) {  // the signal's handler may have run before the file existed
+    abandon();
+    core::throwIfSignalled();
+  }
 }
 
 CsvWriter::~CsvWriter() {

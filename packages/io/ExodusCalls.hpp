@@ -27,18 +27,16 @@ inline std::string lastExodusMessage() {
   return text;
 }
 
-/// Throws a UserError naming the file when an Exodus call failed (negative status), with the
+/// Throws a UserError naming the file when an Exodus call failed (negative status), with
 /// a hint when the system said the disk, the quota or the file size limit is full (ENOSPC, EDQUOT,
 /// EFBIG).
 inline void checkExodus(int status, const char* call, const std::string& path) {
   if (status < 0) {
-    const int reason = errno;
     const char* message = nullptr;
     const char* function = nullptr;
     int code = 0;
     ex_get_err(&message, &function, &code);
-    const auto is = [&](int error) { return reason == error || code == error; };
-    const bool full = is(ENOSPC) || is(EDQUOT) || is(EFBIG);
+    const bool full = code == ENOSPC || code == EDQUOT || code == EFBIG;  // netCDF passes the system's error on
     SIGNORINI_USER_ERROR("Exodus II file '" << path << "': " << call << " failed (" << lastExodusMessage() << ")"
                                             << (full ? " (disk full, quota or file size limit exceeded?)" : ""));
   }

@@ -83,7 +83,6 @@ struct ExodusSeriesWriter::Impl {
     finalPath = seriesFileName(filesStarted);
     partPath = finalPath + ".part";
     ++filesStarted;
-    core::throwIfSignalled();  // a file made after the signal's handler ran would stay
     partRemovedOnSignal = core::RemovedOnSignal(partPath);
 
     int cpuWordSize = 8, ioWordSize = 8;
@@ -95,6 +94,10 @@ struct ExodusSeriesWriter::Impl {
                            << partPath << "' (for '" << finalPath << "'): "
                            << (reason ? std::strerror(reason)
                                       : "check that the output directory exists and is writable"));
+    }
+    if (core::stopSignal()) {  // the signal's handler may have run before the file existed
+      dropFile();
+      core::throwIfSignalled();
     }
     meshId = id;
     numSteps = 0;

@@ -10,6 +10,8 @@
 
 namespace signorini::io {
 
+/// Removes the files "<basePath>.e-s.<digits>" (the tail of a series written earlier with this
+/// base) that the run does not write again, so that ParaView does not group them with a new
 /// series: at once, or when the run's io::OutputStaging commits (io::retireOnCommit); missing
 /// files are no error.
 void removeExodusSeriesTail(const std::string& basePath);

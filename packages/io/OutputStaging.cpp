@@ -167,7 +167,7 @@ void OutputStaging::commit() {
   auto& s = staging();
   auto partOf = std::move(s.partOf);
   auto retired = std::move(s.retired);
-  auto removedOnSignal = std::move(s.partRemovedOnSignal);  // until the renames are done
+  const core::SignalRemovalPause pause;  // the renames run to their end; the run keeps its files
   s.clear();
   // The staged files first; if one cannot take its name, the run's files all go (those renamed
   // already and the others) and nothing is retired.
@@ -183,7 +183,6 @@ void OutputStaging::commit() {
     std::error_code ignored;
     for (const auto& f : renamed) fs::remove(f, ignored);
     for (const auto& entry : partOf) fs::remove(entry.second, ignored);
-    core::throwIfSignalled();  // the signal's handler removed the staged files
     SIGNORINI_USER_ERROR(error);
   }
   std::set<fs::path> keep;
@@ -238,6 +237,7 @@ void republish(const std::string& from, const std::string& to) {
     SIGNORINI_ASSERT(it != s.partOf.end(), "republish: '" << from << "' was not published in this run");
     std::string part = it->second;
     s.partOf.erase(it);
+    const auto registration = std::move(s.partRemovedOnSignal[from]);  // until publish registers it again
     s.partRemovedOnSignal.erase(from);
     publish(part, to);
     return;
@@ -285,7 +285,6 @@ OutputLock::OutputLock(const std::string& base) : path_(base + ".lock") {
     struct stat held, named;
     if (::fstat(fd_, &held) == 0 && ::stat(path_.c_str(), &named) == 0 && held.st_dev == named.st_dev &&
         held.st_ino == named.st_ino) {
-      removedOnSignal_ = core::RemovedOnSignal(path_);
       return;
     }
     ::close(fd_);

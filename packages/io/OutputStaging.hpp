@@ -40,7 +40,8 @@ class OutputStaging {
 /// the same output base, in another process, fails at its start (core::UserError) instead of
 /// retiring the first run's ".part" files while that run is still writing them. The file is
 /// removed when the lock is released; one that a killed run left is taken over (the kernel
-/// released its lock with the process). Where the file system has no locks, or the file cannot
+/// released its lock with the process; the signal handler leaves it, which would let a second run in
+/// while this one still writes). Where the file system has no locks, or the file cannot
 /// be created, the run goes on without the lock, with a warning.
 class OutputLock {
  public:
@@ -54,7 +55,6 @@ class OutputLock {
  private:
   std::string path_;
   int fd_ = -1;
-  core::RemovedOnSignal removedOnSignal_;  ///< the lock file goes with a Ctrl-C at once
 };
 
 /// Directories the open scope's run created for its output (parents first): a run that fails

@@ -26,7 +26,4 @@ struct QuadMesh {
 /// elements, a zero-area quad or an invalid side-set entry.
 QuadMesh readExodusQuadMesh(const std::string& path);
 
-/// Removes the files "<basePath>.e-s.<digits>" (the tail of a series written earlier with this
-/// base) that the run does not write again, so that ParaView does not group them with a new
-
 }  // namespace signorini::io

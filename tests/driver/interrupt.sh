@@ -107,9 +107,11 @@ grep -q "batch interrupted: 1 of 2 deck(s) done, 0 failed, 1 stopped or not run"
   fail "batch: expected the first deck's files only, found: $(ls -A "$work/batch")"
 
 # Killed right after the signal, within a step (mpirun kills its ranks about a second after it passes a
-# Ctrl-C on as SIGTERM): the handler itself removes the run's '.part' files, its lock and the folders
-# it made, before it prints its notice. Steps of about half a second (a fine mesh, Exodus output);
-# SIGKILL as soon as the notice is out. (Before, the files stayed until the next step's check.)
+# Ctrl-C on as SIGTERM): the handler itself removes the run's '.part' files before it prints its
+# notice; only the lock stays (and the folders that hold it: removed, it would let a second run in
+# while this one still writes), and the next run takes it over. Steps of about half a second (a
+# fine mesh, Exodus output); SIGKILL as soon as the notice is out. (Before, the '.part' files
+# stayed until the next step's check.)
 mkdir -p "$work/soon"
 "$signorini" --output-dir "$work/soon/made/deeper" --set 'Mesh/Refinement Level=8' \
   --set 'Time Integration/Final Time=0.05' --set 'Output/Progress Interval=1' "$deck" > "$work/soon.log" 2>&1 &
@@ -121,7 +123,11 @@ for _ in $(seq 6000); do notice_out && break; sleep 0.01; done
 notice_out || { kill -KILL $pid; cat "$work/soon.log"; fail "killed soon after SIGTERM: no notice in 60 s"; }
 kill -KILL $pid
 wait $waiter
-[ -z "$(ls -A "$work/soon")" ] || fail "killed soon after SIGTERM: files left: $(find "$work/soon" | tr '\n' ' ')"
+left=$(cd "$work/soon" && find . -type f | tr '\n' ' ')
+[ "$left" = "./made/deeper/good.lock " ] || fail "killed soon after SIGTERM: files left: $left (only the lock may stay)"
+"$signorini" --output-dir "$work/soon/made/deeper" --set 'Time Integration/Final Time=0.01' "$deck" > "$work/soon-rerun.log" 2>&1 ||
+  { cat "$work/soon-rerun.log"; fail "killed soon after SIGTERM: the next run did not take the lock over"; }
+[ ! -e "$work/soon/made/deeper/good.lock" ] || fail "killed soon after SIGTERM: the next run left the lock"
 
 status=$(interrupt killed KILL "$signorini")
 ls "$work/killed" | grep -q '[.]part$' || fail "SIGKILL left no '.part' file (the control)"

@@ -471,6 +471,11 @@ signorini_add_driver_test(bad_probe_name_too_long_for_velocity EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/${long_probe_name}=0.05, 0.01" --set "Output/Probe Fields=u, v"
        ${decks}/block-into-wall.xml
   REGEX "Output/Probes/p+[.][.][.]: a probe's name has at most 246 bytes [(]it has 247")
+# A probe "p" with its velocity and a probe "p:v" would name one column twice.
+signorini_add_driver_test(bad_probe_names_one_column EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probes/p=0.5, 0.5" --set "Output/Probes/p:v=0.25, 0.5"
+       --set "Output/Probe Fields=u, v" ${decks}/good.xml
+  REGEX "Output/Probes/p:v and Output/Probes/p both give the column 'probe:p:v'; rename one of them")
 signorini_add_driver_test(bad_probe_point EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/centre=0.5 0.5" ${decks}/good.xml
   REGEX "Output/Probes/centre: expected \"x, y\", got \"0[.]5 0[.]5\"")

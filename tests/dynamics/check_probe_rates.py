@@ -17,9 +17,11 @@ with open(path, newline="") as f:
     rows = list(csv.DictReader(f))
 columns = rows[0].keys() if rows else []
 checked, worst = 0, 0.0
-for v_col in [c for c in columns if c.startswith("probe:") and (c.endswith(":v") or ":v:" in c)]:
-    u_col = v_col.replace(":v:", ":") if ":v:" in v_col else v_col[: -len(":v")]
-    a_col = v_col.replace(":v", ":a")
+for v_col in [c for c in columns if c.startswith("probe:") and c.endswith((":v", ":v:x", ":v:y"))]:
+    if v_col.endswith(":v"):
+        u_col, a_col = v_col[: -len(":v")], v_col[: -len(":v")] + ":a"
+    else:  # elasticity: probe:<name>:v:x
+        u_col, a_col = v_col[: -len(":v:x")] + v_col[-2:], v_col[: -len(":v:x")] + ":a" + v_col[-2:]
     if u_col not in columns or a_col not in columns:
         continue
     u = [float(r[u_col]) for r in rows]
