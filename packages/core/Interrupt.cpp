@@ -1,7 +1,6 @@
 #include "signorini/core/Interrupt.hpp"
 
 #include <limits.h>
-#include <string.h>
 #include <time.h>
 #include <unistd.h>
 

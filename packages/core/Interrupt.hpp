@@ -4,8 +4,8 @@
 /// signal, the time stepper checks at every step (and the runs before their files get their
 /// final names) on all ranks together and throws Interrupted, and the run's output staging
 /// removes its files on the way out (io::OutputStaging). The paths registered with
-/// RemovedOnSignal (the run's ".part" files, its lock and the folders it made) go at once, in the
-/// handler: mpirun kills its ranks about a second after it passes a Ctrl-C on as SIGTERM, which a
+/// RemovedOnSignal (the run's ".part" files and the folders it made; not its lock) go at once, in
+/// the handler: mpirun kills its ranks about a second after it passes a Ctrl-C on as SIGTERM, which a
 /// long time step outlasts. A second SIGINT, SIGTERM or SIGHUP ends the
 /// process at once (the default action), except a copy of the first within a second (a signal to
 /// the process and to its group), which counts as one; SIGPIPE never ends it at once.

@@ -15,12 +15,14 @@ namespace signorini::io::detail {
 /// codes and become exceptions.
 inline void silenceExodus() { ex_opts(0); }
 
-/// The last message the Exodus library recorded, for error reports.
-inline std::string lastExodusMessage() {
+/// The last message the Exodus library recorded, for error reports; \p code (if given) receives
+/// its error code (netCDF passes the system's error on).
+inline std::string lastExodusMessage(int* code = nullptr) {
   const char* message = nullptr;
   const char* function = nullptr;
-  int code = 0;
-  ex_get_err(&message, &function, &code);
+  int recorded = 0;
+  ex_get_err(&message, &function, &recorded);
+  if (code) *code = recorded;
   std::string text;
   if (function && *function) text += std::string(function) + ": ";
   if (message && *message) text += message;
@@ -32,12 +34,10 @@ inline std::string lastExodusMessage() {
 /// EFBIG).
 inline void checkExodus(int status, const char* call, const std::string& path) {
   if (status < 0) {
-    const char* message = nullptr;
-    const char* function = nullptr;
     int code = 0;
-    ex_get_err(&message, &function, &code);
-    const bool full = code == ENOSPC || code == EDQUOT || code == EFBIG;  // netCDF passes the system's error on
-    SIGNORINI_USER_ERROR("Exodus II file '" << path << "': " << call << " failed (" << lastExodusMessage() << ")"
+    const std::string message = lastExodusMessage(&code);
+    const bool full = code == ENOSPC || code == EDQUOT || code == EFBIG;
+    SIGNORINI_USER_ERROR("Exodus II file '" << path << "': " << call << " failed (" << message << ")"
                                             << (full ? " (disk full, quota or file size limit exceeded?)" : ""));
   }
 }

@@ -31,21 +31,24 @@ struct Retirement {
   std::function<bool(const std::string&)> matches;
 };
 
+/// A file or folder of the run, which a Ctrl-C removes at once (core::RemovedOnSignal).
+struct RunPath {
+  std::string path;
+  core::RemovedOnSignal removedOnSignal;
+  RunPath(const std::string& p, bool directory = false) : path(p), removedOnSignal(p, directory) {}
+};
+
 struct Staging {
   int depth = 0;
-  std::map<std::string, std::string> partOf;  // final path -> staged file
-  std::map<std::string, core::RemovedOnSignal> partRemovedOnSignal;  // final path -> its staged file's registration
+  std::map<std::string, RunPath> partOf;  // final path -> staged file
   std::vector<Retirement> retired;
-  std::vector<std::string> createdDirectories;  // outermost first
-  std::vector<core::RemovedOnSignal> directoriesRemovedOnSignal;
+  std::vector<RunPath> createdDirectories;  // outermost first
 
-  /// Forgets the run's files and folders (and their registrations for a Ctrl-C).
+  /// Forgets the run's files and folders.
   void clear() {
     partOf.clear();
-    partRemovedOnSignal.clear();
     retired.clear();
     createdDirectories.clear();
-    directoriesRemovedOnSignal.clear();
   }
 };
 
@@ -155,9 +158,9 @@ OutputStaging::~OutputStaging() {
   --s.depth;
   if (!outermost_ || done_) return;
   std::error_code ec;
-  for (const auto& [finalPath, part] : s.partOf) fs::remove(part, ec);
+  for (const auto& [finalPath, part] : s.partOf) fs::remove(part.path, ec);
   // fs::remove of a directory is rmdir: it stays if something else was put there meanwhile.
-  for (auto it = s.createdDirectories.rbegin(); it != s.createdDirectories.rend(); ++it) fs::remove(*it, ec);
+  for (auto it = s.createdDirectories.rbegin(); it != s.createdDirectories.rend(); ++it) fs::remove(it->path, ec);
   s.clear();
 }
 
@@ -174,15 +177,15 @@ void OutputStaging::commit() {
   std::vector<std::string> renamed;
   std::error_code ec;
   for (const auto& [finalPath, part] : partOf) {
-    fs::rename(part, finalPath, ec);
+    fs::rename(part.path, finalPath, ec);
     if (!ec) {
       renamed.push_back(finalPath);
       continue;
     }
-    const std::string error = renameError(part, finalPath, ec);
+    const std::string error = renameError(part.path, finalPath, ec);
     std::error_code ignored;
     for (const auto& f : renamed) fs::remove(f, ignored);
-    for (const auto& entry : partOf) fs::remove(entry.second, ignored);
+    for (const auto& entry : partOf) fs::remove(entry.second.path, ignored);
     SIGNORINI_USER_ERROR(error);
   }
   std::set<fs::path> keep;
@@ -194,8 +197,7 @@ void OutputStaging::commit() {
 void removeOnFailure(const std::vector<std::string>& createdDirectories) {
   auto& s = staging();
   if (s.depth == 0) return;
-  s.createdDirectories.insert(s.createdDirectories.end(), createdDirectories.begin(), createdDirectories.end());
-  for (const auto& directory : createdDirectories) s.directoriesRemovedOnSignal.emplace_back(directory, true);
+  for (const auto& directory : createdDirectories) s.createdDirectories.emplace_back(directory, true);
 }
 
 void publish(const std::string& part, const std::string& finalPath) {
@@ -203,9 +205,12 @@ void publish(const std::string& part, const std::string& finalPath) {
   if (s.depth > 0) {
     auto it = s.partOf.find(finalPath);
     std::error_code ec;
-    if (it != s.partOf.end() && it->second != part) fs::remove(it->second, ec);  // written again in this run
-    s.partOf[finalPath] = part;
-    s.partRemovedOnSignal[finalPath] = core::RemovedOnSignal(part);
+    if (it == s.partOf.end()) {
+      s.partOf.emplace(finalPath, part);
+    } else if (it->second.path != part) {  // written again in this run
+      fs::remove(it->second.path, ec);
+      it->second = RunPath(part);
+    }
     return;
   }
   std::error_code ec;
@@ -222,9 +227,8 @@ void unpublish(const std::string& finalPath) {
   if (s.depth > 0) {
     auto it = s.partOf.find(finalPath);
     if (it == s.partOf.end()) return;  // an earlier run's file stays until the commit retires it
-    fs::remove(it->second, ec);
+    fs::remove(it->second.path, ec);
     s.partOf.erase(it);
-    s.partRemovedOnSignal.erase(finalPath);
     return;
   }
   fs::remove(finalPath, ec);
@@ -235,11 +239,9 @@ void republish(const std::string& from, const std::string& to) {
   if (s.depth > 0) {
     auto it = s.partOf.find(from);
     SIGNORINI_ASSERT(it != s.partOf.end(), "republish: '" << from << "' was not published in this run");
-    std::string part = it->second;
+    const RunPath part = std::move(it->second);  // registered until publish registers it again
     s.partOf.erase(it);
-    const auto registration = std::move(s.partRemovedOnSignal[from]);  // until publish registers it again
-    s.partRemovedOnSignal.erase(from);
-    publish(part, to);
+    publish(part.path, to);
     return;
   }
   publish(from, to);
