@@ -221,7 +221,7 @@ else:
 
 pv_times = [float(t) for t in reader.TimestepValues]
 files = list(dict.fromkeys(s.path for s in file_steps))
-if len(pv_times) != len(out_rows):
+if len(pv_times) != len(out_rows) or len(file_steps) != len(out_rows):
     fail("ParaView shows %d time steps, the steps table has %d output steps (Exodus Interval %d), the %d files %d times"
          % (len(pv_times), len(out_rows), interval, len(files), len(file_steps)))
 for i, (a, b, s) in enumerate(zip(pv_times, out_times, file_steps)):

@@ -3,7 +3,7 @@
 value, bit for bit (the doubles the text reads back to, so tables written with 17 significant
 digits by earlier versions compare with today's shortest text), leaving out the wall-clock
 columns time_*. Prints the first difference of every column that differs; exit status 1 if any
-differs or the tables do not match in shape. With --common-columns, columns that only one of the
+differs, the tables do not match in shape or no value was compared. With --common-columns, columns that only one of the
 runs has (a version that added a column) are named and left out instead.
 Usage: compare_step_tables.py BASE_A BASE_B [--common-columns]"""
 import argparse
@@ -42,6 +42,8 @@ def read(path):
     except InputError as e:
         fail(e)
     header, rows = table[0], table[1:]
+    if not rows:
+        fail(f"{path}: a header and no rows (a run writes at least step 0)")
     for r, row in enumerate(rows, start=1):
         if len(row) != len(header):
             fail(f"{path}: row {r} has {len(row)} values, the header {len(header)} columns")
@@ -62,6 +64,8 @@ if names != suffixes(b):
 differs = False
 compared = 0
 tables = {suffix: (read(a + suffix), read(b + suffix)) for suffix in names}  # every table checked before output
+if not any(n in tb[0] and not n.startswith("time_") for ta, tb in tables.values() for n in ta[0]):
+    fail(f"{a} and {b}: no column to compare (besides time_*): nothing is shown equal")
 for suffix in names:
     ta, tb = tables[suffix]
     if ta[0] != tb[0] and not common:

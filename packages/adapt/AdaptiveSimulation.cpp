@@ -117,7 +117,7 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
   core::addChoice(a, "Transfer", "L2 projection", "I_h between step meshes (paper Sec. 3.2)",
                   {"L2 projection", "interpolation"});
   core::addBool(a, "Report Transfer Energy", true,
-                "Step tables gain kinetic_energy, energy_transferred and kinetic_energy_transferred: the energies of "
+                "Step tables gain energy_transferred and kinetic_energy_transferred: the energies of "
                 "I_h u^{n-1}, I_h v^{n-1} on the mesh of step n (the transfer's effect; costs one more projected "
                 "field, I_h v (I_h a when Alpha >= 1), per mesh change)");
   core::addBool(a, "Compact Meshes", true,

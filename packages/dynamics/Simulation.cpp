@@ -1160,7 +1160,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   I.timers.clear();
 
   std::vector<std::string> columns = {"step", "t", "dofs", "active", "qp_iterations", "cg_iterations",
-                                      "linear_solves", "linear_iterations", "energy", "newmark_energy",
+                                      "linear_solves", "linear_iterations", "energy", "kinetic_energy", "newmark_energy",
                                       "contact_force", "max_lambda", "min_lambda", "min_gap", "max_complementarity",
                                       "time_assembly", "time_contact", "time_output", "time_unconstrained",
                                       "time_remesh", "time_estimate", "cells"};
@@ -1174,7 +1174,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     columns.push_back("error_h1");
   }
   if (options.reportTransferEnergy)
-    for (const char* c : {"kinetic_energy", "energy_transferred", "kinetic_energy_transferred"}) columns.push_back(c);
+    for (const char* c : {"energy_transferred", "kinetic_energy_transferred"}) columns.push_back(c);
   columns.insert(columns.end(), options.extraColumns.begin(), options.extraColumns.end());
   std::unique_ptr<io::CsvWriter> csv;
   if (options.writeCsv)
@@ -1258,7 +1258,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     const double energy = kinetic + strain;
     std::vector<double> row = {double(step), t, dofs, double(qr.active), double(qr.activeSetIterations),
                                double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),
-                               energy, I.newmarkEnergy(*d, energy, *a), force,
+                               energy, kinetic, I.newmarkEnergy(*d, energy, *a), force,
                                toPhysical * qr.maxLambda, toPhysical * qr.minLambda, qr.minGap,
                                toPhysical * qr.maxComplementarity, tAssembly,
                                tContact, 0.0, tFree, tRemesh, tEstimate, double(d->forest->numGlobalCells())};
@@ -1279,7 +1279,6 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       row.push_back(h1);
     }
     if (options.reportTransferEnergy) {
-      row.push_back(kinetic);
       row.push_back(transferred.first + transferred.second);
       row.push_back(transferred.first);
     }

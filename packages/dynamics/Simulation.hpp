@@ -85,7 +85,7 @@ struct PassOptions {
   std::vector<std::string> extraColumns;  ///< names of StepExtras::columns
   std::string cellFieldName;              ///< name of StepExtras::cellField in Exodus (empty: none)
   bool interpolateTransfer = false;       ///< nodal interpolation instead of the L2 projection
-  /// Step-table columns kinetic_energy, energy_transferred, kinetic_energy_transferred: the energies
+  /// Step-table columns energy_transferred, kinetic_energy_transferred: the energies
   /// of (I_h u^{n-1}, I_h v^{n-1}) on the mesh of step n (those of step n-1 when the mesh is kept),
   /// so the transfer's effect on the energy is visible. Costs a third projected field (Newmark::recoveryField).
   bool reportTransferEnergy = false;

@@ -463,6 +463,15 @@ grep -q "^.steps.csv: the headers differ: columns only in $work/cst/a.steps.csv:
 sed -i '1s/,energyX,/,energy,/; 3s/^\([0-9]*\),[^,]*,/\1,abc,/' "$work/cst/b.steps.csv"
 refuses tables_not_number "compare_step_tables.py: error: $work/cst/b.steps.csv: row 2, column t: 'abc' is not a number" \
   "$py" "$tools/compare_step_tables.py" "$work/cst/a" "$work/cst/b"
+# ... and nothing compared is not "all equal": tables with a header only, and --common-columns on
+# tables that share only time_* columns.
+mkdir -p "$work/cst0"
+head -1 "$work/membrane.steps.csv" > "$work/cst0/a.steps.csv" && cp "$work/cst0/a.steps.csv" "$work/cst0/b.steps.csv"
+refuses tables_no_rows "compare_step_tables.py: error: $work/cst0/a.steps.csv: a header and no rows" \
+  "$py" "$tools/compare_step_tables.py" "$work/cst0/a" "$work/cst0/b"
+printf 'x,time_output\n1,2\n' > "$work/cst0/c.steps.csv" && printf 'y,time_output\n1,2\n' > "$work/cst0/d.steps.csv"
+refuses tables_nothing_common "compare_step_tables.py: error: $work/cst0/c and $work/cst0/d: no column to compare" \
+  "$py" "$tools/compare_step_tables.py" "$work/cst0/c" "$work/cst0/d" --common-columns
 # check_adaptive_meshes.py: --coarser-than compares every written time with BASE2's mesh at that time
 # (A: one file, one mesh at t = 0, 1, 2; B: a finer mesh at t = 0, A's at t = 1, 2: coarser in 1 of 3
 # steps); a mesh off the dyadic lattice: one line naming the file.

@@ -54,6 +54,8 @@ mpirun_np 2
 status=$(interrupt two TERM "${mpirun[@]}" "$signorini")
 [ "$status" != 0 ] && [ "$status" != 255 ] || fail "2 ranks: exit status $status after SIGTERM"
 grep -q "interrupted by signal 15" "$work/two.log" || { cat "$work/two.log"; fail "2 ranks: no 'interrupted' message"; }
+! grep -qiE "segmentation|core dumped|aborted|terminate called|exited on signal|noticed that process" "$work/two.log" ||
+  { cat "$work/two.log"; fail "2 ranks: a rank crashed or was killed"; }
 [ -z "$(ls -A "$work/two")" ] || fail "2 ranks: files left: $(ls -A "$work/two")"
 
 # The same signal twice at once (timeout(1) signals the process and its group) is one request.
@@ -72,6 +74,7 @@ grep -q "interrupted by signal 2" "$work/twice.log" || fail "twice: killed at on
 
 status=$(interrupt hangup HUP "$signorini")
 [ "$status" = 129 ] || { cat "$work/hangup.log"; fail "SIGHUP: exit status $status, expected 129"; }
+grep -q "interrupted by signal 1 " "$work/hangup.log" || { cat "$work/hangup.log"; fail "SIGHUP: killed instead of stopping cleanly"; }
 [ -z "$(ls -A "$work/hangup")" ] || fail "SIGHUP: files left: $(ls -A "$work/hangup")"
 
 # stdout closed by the reader (SIGPIPE at the next progress line): the run stops cleanly.

@@ -8,8 +8,9 @@ every probe satisfies, for each step n >= 1,
 to rounding. Usage: check_probe_rates.py STEPS_CSV ALPHA BETA K
 Exit 0 when every probe's columns probe:<name>[...], probe:<name>:v[...], probe:<name>:a[...]
 satisfy both relations to 1e-10 of their terms' size, 1 otherwise (also when there is no such
-probe)."""
+probe, when a column of v lacks its u or a column, and when a probe value is not a finite number)."""
 import csv
+import math
 import sys
 
 path, alpha, beta, k = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4])
@@ -23,10 +24,16 @@ for v_col in [c for c in columns if c.startswith("probe:") and c.endswith((":v",
     else:  # elasticity: probe:<name>:v:x
         u_col, a_col = v_col[: -len(":v:x")] + v_col[-2:], v_col[: -len(":v:x")] + ":a" + v_col[-2:]
     if u_col not in columns or a_col not in columns:
-        continue
+        print(f"FAIL: {path}: {v_col} without {u_col if u_col not in columns else a_col}")
+        sys.exit(1)
     u = [float(r[u_col]) for r in rows]
     v = [float(r[v_col]) for r in rows]
     a = [float(r[a_col]) for r in rows]
+    for name, values in ((u_col, u), (v_col, v), (a_col, a)):
+        bad = next((n for n, x in enumerate(values) if not math.isfinite(x)), None)
+        if bad is not None:
+            print(f"FAIL: {path}: {name} step {rows[bad]['step']} is {values[bad]}, not a finite number")
+            sys.exit(1)
     for n in range(1, len(rows)):
         terms_u = [u[n], u[n - 1], k * v[n - 1], k * k / 2 * (1 - 2 * beta) * a[n - 1], k * k * beta * a[n]]
         res_u = terms_u[0] - sum(terms_u[1:])
@@ -36,7 +43,7 @@ for v_col in [c for c in columns if c.startswith("probe:") and c.endswith((":v",
             size = max(abs(t) for t in terms)
             rel = abs(res) / size if size > 0 else 0.0
             worst = max(worst, rel)
-            if rel > 1e-10:
+            if not rel <= 1e-10:
                 print(f"FAIL: {path}: {v_col} step {rows[n]['step']}: the Newmark relation for {name} is off "
                       f"by {rel:.3g} of its terms' size")
                 sys.exit(1)

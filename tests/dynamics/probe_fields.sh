@@ -3,10 +3,13 @@
 #  - Newmark's relations (3.1)-(3.2) hold at every probe in every step (check_probe_rates.py), with
 #    Alpha = 0.6, Beta = 0.4 so that each term counts, through contact, for the membrane (1 rank) and
 #    for an elastic block on 2 ranks;
-#  - the block flies freely at 5 m/s until its first contact: v = (5, 0) and a = 0 at both probes;
+#  - the block flies freely at 5 m/s until its first contact: v = (5, 0) and a = 0 at both probes, and
+#    the step table's kinetic_energy is m |v|^2 / 2 = 62.5 J/m (0.1 m x 0.05 m at 1000 kg/m^3), all of
+#    the energy (a rigid translation strains nothing);
 #  - the other columns (time_* aside) are bit for bit those of a run with the default "u";
 #  - the Exodus files carry the new columns as global variables;
-#  - controls: the checker fails on a table whose v is one step late, and on a table without v.
+#  - controls: the checker fails on a table whose v is one step late, with a NaN acceleration, with a
+#    velocity column without its acceleration, and on a table without v.
 # Usage: probe_fields.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
 # MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (cmake/SignoriniTesting.cmake).
 set -uo pipefail
@@ -51,6 +54,8 @@ columns = [c for c in plain[0] if not c.startswith("time_")]
 extra = [c for c in full[0] if c not in plain[0]]
 if extra != ["probe:middle:v", "probe:middle:a", "probe:edge:v", "probe:edge:a"]:
     fail(f"the columns Probe Fields adds: {extra}")
+if len(full) != len(plain):
+    fail(f"{len(full)} steps with v and a probed, {len(plain)} without")
 for a, b in zip(full, plain):
     for c in columns:
         if a[c] != b[c]:
@@ -62,8 +67,12 @@ if first < 10:
 for r in block[:first]:
     for p in ("face", "inside"):
         values = [float(r[f"probe:{p}:{s}"]) for s in ("v:x", "v:y", "a:x", "a:y")]
-        if abs(values[0] - 5) > 1e-12 or max(abs(x) for x in values[1:]) > 1e-6:
+        if not (abs(values[0] - 5) <= 1e-12 and max(abs(x) for x in values[1:]) <= 1e-6):
             fail(f"block step {r['step']}: probe {p} (v, a) = {values} in free flight at (5, 0) m/s")
+    kinetic, energy = float(r["kinetic_energy"]), float(r["energy"])
+    if not (abs(kinetic - 62.5) <= 1e-12 * 62.5 and abs(energy - kinetic) <= 1e-9 * kinetic):
+        fail(f"block step {r['step']}: kinetic_energy {kinetic!r}, energy {energy!r} in free flight: "
+             "both should be m |v|^2 / 2 = 62.5")
 names = set()
 for f in glob.glob(f"{work}/block/block-into-wall.e*"):
     with netCDF4.Dataset(f) as d:
@@ -72,24 +81,36 @@ wanted = {f"probe:{p}:{s}" for p in ("face", "inside") for s in ("x", "y", "v:x"
 if not wanted <= names:
     fail(f"Exodus global variables lack {sorted(wanted - names)}")
 print(f"membrane: contact in {sum(int(r['active']) > 0 for r in full)} steps, other columns bit for bit; "
-      f"block: free flight to step {first}, Exodus globals present")
+      f"block: free flight to step {first} (kinetic energy {block[first - 1]['kinetic_energy']}), Exodus globals present")
 PY
 
-# Controls: v one step late, and a table without v, fail the checker.
+# Controls: v one step late, a NaN acceleration, a v without its a, and a table without v fail the checker.
 $py - "$work" <<'PY'
 import csv, sys
 work = sys.argv[1]
 with open(f"{work}/membrane/good.steps.csv", newline="") as f:
     rows = list(csv.DictReader(f))
+def write(name, table, columns):
+    with open(f"{work}/{name}.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=columns, extrasaction="ignore")
+        w.writeheader()
+        w.writerows(table)
 late = [dict(r) for r in rows]
 for n in range(len(rows) - 1, 0, -1):
     late[n]["probe:middle:v"] = rows[n - 1]["probe:middle:v"]
-with open(f"{work}/late.csv", "w", newline="") as f:
-    w = csv.DictWriter(f, fieldnames=list(rows[0]))
-    w.writeheader()
-    w.writerows(late)
+write("late", late, list(rows[0]))
+nan = [dict(r) for r in rows]
+nan[7]["probe:edge:a"] = "nan"
+write("nan", nan, list(rows[0]))
+write("no_a", rows, [c for c in rows[0] if c != "probe:edge:a"])
 PY
-$check "$work/late.csv" 0.6 0.4 0.0025 > "$work/late.log" && fail "control: the checker passed v one step late"
-grep -q "probe:middle:v step 1: the Newmark relation" "$work/late.log" || { cat "$work/late.log"; fail "control: late v"; }
-$check "$work/membrane_u/good.steps.csv" 0.6 0.4 0.0025 > "$work/plain.log" && fail "control: the checker passed a table without v"
+control() {  # control NAME MESSAGE: the checker fails on $work/NAME.csv with MESSAGE
+  $check "$work/$1.csv" 0.6 0.4 0.0025 > "$work/$1.log" && fail "control $1: the checker passed"
+  grep -qF "$2" "$work/$1.log" || { cat "$work/$1.log"; fail "control $1: not '$2'"; }
+}
+control late "probe:middle:v step 1: the Newmark relation"
+control nan "probe:edge:a step 7 is nan"
+control no_a "probe:edge:v without probe:edge:a"
+cp "$work/membrane_u/good.steps.csv" "$work/plain.csv"
+control plain "no probe with the columns of u, v and a"
 echo "PASS"
