@@ -4,11 +4,15 @@ value, bit for bit (the doubles the text reads back to, so tables written with 1
 digits by earlier versions compare with today's shortest text), leaving out the wall-clock
 columns time_*. Prints the first difference of every column that differs; exit status 1 if any
 differs, the tables do not match in shape or no value was compared. With --common-columns, columns that only one of the
-runs has (a version that added a column) are named and left out instead.
-Usage: compare_step_tables.py BASE_A BASE_B [--common-columns]"""
+runs has (a version that added a column) are named and left out instead. With --rtol R, values
+compare equal within R times the largest magnitude of their column in the two tables (runs that
+need not agree bit for bit: ordinary arithmetic on other numbers of ranks, elasticity), and the
+largest difference of every column is printed.
+Usage: compare_step_tables.py BASE_A BASE_B [--common-columns] [--rtol R]"""
 import argparse
 import csv
 import glob
+import math
 import os
 import sys
 
@@ -19,8 +23,12 @@ ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescription
 ap.add_argument("base_a", help="output base of one run (folder/basename)")
 ap.add_argument("base_b", help="output base of the other run")
 ap.add_argument("--common-columns", action="store_true", help="leave out columns that only one run has")
+ap.add_argument("--rtol", type=float, help="compare within this fraction of each column's largest magnitude "
+                "(default: bit for bit)")
 args = ap.parse_args()
-a, b, common = args.base_a, args.base_b, args.common_columns
+a, b, common, rtol = args.base_a, args.base_b, args.common_columns, args.rtol
+if rtol is not None and not rtol >= 0:
+    fail(f"--rtol {rtol}: not a number >= 0")
 
 
 def suffixes(base):
@@ -89,10 +97,27 @@ for suffix in names:
             continue
         cb = tb[0].index(name)
         compared += len(ta) - 1
-        for row in range(1, len(ta)):
-            if float(ta[row][c]).hex() != float(tb[row][cb]).hex():
-                print(f"{suffix}: {name} differs first in row {row}: {ta[row][c]} against {tb[row][cb]}")
-                differs = True
-                break
-print(f"{len(names)} step tables, {compared} values compared: {'differences' if differs else 'all equal'}")
+        if rtol is None:
+            for row in range(1, len(ta)):
+                if float(ta[row][c]).hex() != float(tb[row][cb]).hex():
+                    print(f"{suffix}: {name} differs first in row {row}: {ta[row][c]} against {tb[row][cb]}")
+                    differs = True
+                    break
+            continue
+        xa = [float(ta[row][c]) for row in range(1, len(ta))]
+        xb = [float(tb[row][cb]) for row in range(1, len(tb))]
+        scale = max([abs(x) for x in xa + xb if math.isfinite(x)], default=0.0)
+        same = [x == y or (math.isfinite(x) and math.isfinite(y) and abs(x - y) <= rtol * scale)
+                or (math.isnan(x) and math.isnan(y)) for x, y in zip(xa, xb)]
+        gaps = [abs(x - y) for x, y in zip(xa, xb) if math.isfinite(x) and math.isfinite(y)]
+        largest = max(gaps, default=0.0) / scale if scale > 0 else 0.0
+        if not all(same):
+            row = same.index(False) + 1
+            print(f"{suffix}: {name} differs first in row {row}: {ta[row][c]} against {tb[row][cb]} "
+                  f"(largest difference {largest:.3g} of the column's largest magnitude {scale:.6g})")
+            differs = True
+        elif largest > 0:
+            print(f"{suffix}: {name}: largest difference {largest:.3g} of the column's largest magnitude {scale:.6g}")
+within = "" if rtol is None else f" within {rtol:g} of each column's largest magnitude"
+print(f"{len(names)} step tables, {compared} values compared{within}: {'differences' if differs else 'all equal'}")
 sys.exit(1 if differs else 0)

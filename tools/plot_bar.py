@@ -28,8 +28,8 @@ import numpy as np  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from plot_results import (adaptive_setting, deck_file, deck_parameter, exodus_frames, multiplier_frame,  # noqa: E402
-                          names, nearest_frame, output_folder, parse_steps, plot_eta, read_csv, require_exodus,
-                          run_deck, time_step)
+                          names, nearest_frame, output_folder, parse_steps, plot_eta, read_csv, read_cycles,
+                          require_exodus, run_deck, time_step)
 from tool_errors import ArgumentParser, InputError, exodus, fail  # noqa: E402
 
 
@@ -285,7 +285,7 @@ def main():
     try:  # every input first: a missing file or column stops before any plot is written
         for base in [a.adaptive, a.uniform] + [spec.split(":", 1)[0] for spec in a.more_adaptive]:
             if base:
-                read_csv(base + ".cycles.csv", ["total_dofs", "eta"])
+                read_cycles(base)
         steps = read_csv(a.adaptive + ".steps.csv", ["t", "active"])
         require_exodus(a.adaptive)
         require_bar_variables(a.adaptive)

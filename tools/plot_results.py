@@ -37,6 +37,14 @@ from tool_errors import ArgumentParser, InputError, exodus, fail, read_table, re
 read_csv = read_table  # the name plot_bar.py imports
 
 
+def read_cycles(base):
+    """The cycle table of an adaptive run; InputError naming a run on one mesh as such."""
+    if not os.path.exists(base + ".cycles.csv") and os.path.isfile(base + ".steps.csv"):
+        raise InputError(f"{base}.cycles.csv: no such file: a run on one mesh, not an adaptive run "
+                         "(tools/plot_steps.py draws any run's step-table columns)")
+    return read_csv(base + ".cycles.csv", ["total_dofs", "eta"])
+
+
 def require_exodus(base):
     """InputError unless the run at base wrote Exodus output and no file of its series is cut short."""
     if not os.path.isfile(base + ".e"):
@@ -514,7 +522,7 @@ def main():
     try:  # every input first: a missing file or column stops before any plot is written
         for base in [a.adaptive, a.uniform] + [spec.split(":", 1)[0] for spec in a.more_adaptive]:
             if base:
-                read_csv(base + ".cycles.csv", ["total_dofs", "eta"])
+                read_cycles(base)
         if not a.eta_only:
             steps = read_csv(a.adaptive + ".steps.csv", ["t", "energy", "eta_star", "s0", "s1"])
             if a.uniform:  # every cycle's step table (the energy plot)
@@ -523,6 +531,11 @@ def main():
             for base in [a.adaptive, a.two_h, a.h_equals_h, a.two_h_stabilised, a.h_equals_h_stabilised]:
                 if base:
                     require_exodus(base)
+                    kind = deck_parameter(run_deck(base), "Problem/Type")
+                    if kind not in (None, "scalar wave"):
+                        raise InputError(f"{base}.e: a run of Problem/Type = {kind}: plot_results.py draws the "
+                                         "membrane's figures (paper Example 6.1); tools/plot_bar.py draws an "
+                                         "elasticity run's")
             k = a.time_step or time_step(steps)
             mesh_steps = parse_steps(a.steps)
     except InputError as e:

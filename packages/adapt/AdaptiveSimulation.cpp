@@ -515,6 +515,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       options.cellFieldName = "indicator";
       options.interpolateTransfer = ap.get<std::string>("Transfer") == "interpolation";
       options.reportTransferEnergy = ap.get<bool>("Report Transfer Energy");
+      options.reportWork = false;  // the meshes change between steps
       options.compactMeshes = compactMeshes;
       last = locatingFailures(l, [&] { return sim_->runPass(meshes, hook, options); });
       for (const auto& [phase, seconds] : last.phaseSeconds) phaseSeconds[phase] += seconds;

@@ -931,9 +931,17 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     int found = d->mesh->locate(p[0], p[1], s, r) >= 0 ? 1 : 0;
     int any = 0;
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, found, Teuchos::outArg(any));
-    if (!any)
+    if (!any) {  // name the mesh's extent (its corners' bounding box; an Exodus mesh need not fill it)
+      double x0 = core::kInf, x1 = -core::kInf, y0 = core::kInf, y1 = -core::kInf;
+      for (int t = 0; t < I.coarse->numTrees(); ++t)
+        for (int c = 0; c < 4; ++c) {
+          const auto& x = I.coarse->treeCorner(t, c);
+          x0 = std::min(x0, x[0]), x1 = std::max(x1, x[0]), y0 = std::min(y0, x[1]), y1 = std::max(y1, x[1]);
+        }
       SIGNORINI_USER_ERROR("Output/Probes/" << name << ": point (" << std::setprecision(15) << p[0] << ", " << p[1]
-                                            << ") is outside the mesh");
+                                            << ") is outside the mesh, which lies in [" << x0 << ", " << x1 << "] x ["
+                                            << y0 << ", " << y1 << "] (probes are points of the undeformed body)");
+    }
   }
   {
     Vector u(d->assembler->ownedMap()), v(d->assembler->ownedMap()), a(d->assembler->ownedMap());
@@ -1173,6 +1181,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     columns.push_back("error_l2");
     columns.push_back("error_h1");
   }
+  if (options.reportWork)
+    for (const char* c : {"external_work", "contact_work"}) columns.push_back(c);
   if (options.reportTransferEnergy)
     for (const char* c : {"energy_transferred", "kinetic_energy_transferred"}) columns.push_back(c);
   columns.insert(columns.end(), options.extraColumns.begin(), options.extraColumns.end());
@@ -1228,6 +1238,22 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     for (size_t j = 0; j < gap.size(); ++j) gap[j] -= gbar[j];
   }
 
+  // The work done on the body since t = 0 (PassOptions::reportWork): u^{n-1}, the loads f(t_{n-1}) [force],
+  // B^T u^{n-1} and the QP multiplier of step n-1 (contact force -B lambda / (beta k^2); 0 at t = 0, where
+  // the initial acceleration has no contact force).
+  double workExternal = 0, workContact = 0, largestEnergy = 0, initialEnergy = 0;
+  std::unique_ptr<Vector> uPrevious, loadPrevious;
+  std::vector<double> contactPrevious, lambdaPrevious;
+  if (options.reportWork) {
+    for (const auto& m : meshes)
+      SIGNORINI_ASSERT(m == meshes[0], "PassOptions::reportWork needs one mesh for every step");
+    uPrevious = std::make_unique<Vector>(d->assembler->ownedMap());
+    loadPrevious = std::make_unique<Vector>(d->assembler->ownedMap());
+    d->assembler->assembleLoad(I.problem->bodyForce, 0.0, 1.0, *loadPrevious);
+    d->assembler->addBoundaryLoad(I.problem->neumannData, 0.0, I.problem->neumannMask, 1.0, *loadPrevious);
+    if (d->coupling) contactPrevious = d->coupling->applyTranspose(*u);
+  }
+
   double tRemesh = 0, tEstimate = 0;  // of the current step
   std::pair<double, double> written;      // (kinetic, strain) of the state last written
   std::pair<double, double> transferred;  // (kinetic, strain) of the previous step's state on the current mesh
@@ -1255,10 +1281,10 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     written = I.energies(*d, *u, *v);
     if (step == 0) transferred = written;  // the initial state: nothing moved
     const auto [kinetic, strain] = written;
-    const double energy = kinetic + strain;
+    const double energy = kinetic + strain, newmarkEnergy = I.newmarkEnergy(*d, energy, *a);
     std::vector<double> row = {double(step), t, dofs, double(qr.active), double(qr.activeSetIterations),
                                double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),
-                               energy, kinetic, I.newmarkEnergy(*d, energy, *a), force,
+                               energy, kinetic, newmarkEnergy, force,
                                toPhysical * qr.maxLambda, toPhysical * qr.minLambda, qr.minGap,
                                toPhysical * qr.maxComplementarity, tAssembly,
                                tContact, 0.0, tFree, tRemesh, tEstimate, double(d->forest->numGlobalCells())};
@@ -1277,6 +1303,12 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                                                               << "): is the exact solution within the range of doubles?");
       row.push_back(l2);
       row.push_back(h1);
+    }
+    if (options.reportWork) {
+      largestEnergy = std::max(largestEnergy, newmarkEnergy);
+      if (step == 0) initialEnergy = newmarkEnergy;
+      row.push_back(workExternal);
+      row.push_back(workContact);
     }
     if (options.reportTransferEnergy) {
       row.push_back(transferred.first + transferred.second);
@@ -1334,6 +1366,10 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       I.currentStep = n;
       const double t = n * k;
       const auto tR0 = std::chrono::steady_clock::now();
+      if (options.reportWork) {
+        uPrevious->assign(*u);
+        lambdaPrevious = lambda;
+      }
       // The step's Newmark predictors, formed on the mesh of step n-1 and moved with it.
       std::vector<RCP<Vector>> predictors = {Teuchos::rcp(new Vector(u->getMap())), Teuchos::rcp(new Vector(u->getMap()))};
       I.newmark->predictor(*u, *v, *a, *predictors[0]);
@@ -1433,6 +1469,20 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       }
       tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();
       I.newmark->update(pred, *predictors[1], *u, *v, *a);
+      if (options.reportWork) {  // (u^n - u^{n-1}) . (f^{n-1} + f^n) / 2, f^n = load / (beta k^2)
+        Vector du(owned), mean(owned);
+        du.update(1.0, *u, -1.0, *uPrevious, 0.0);
+        mean.update(0.5 * toPhysical, load, 0.5, *loadPrevious, 0.0);
+        workExternal += core::dot(du, mean);
+        loadPrevious->update(toPhysical, load, 0.0);
+        if (d->coupling) {
+          auto contact = d->coupling->applyTranspose(*u);
+          double w = 0;
+          for (size_t j = 0; j < contact.size(); ++j) w += (contact[j] - contactPrevious[j]) * (lambdaPrevious[j] + lambda[j]);
+          workContact -= 0.5 * toPhysical * w;
+          contactPrevious = std::move(contact);
+        }
+      }
       writeOutputs(n, t, qr, std::chrono::duration<double>(tA1 - tA0).count(),
                    std::chrono::duration<double>(tA2 - tA1).count() + projectionSeconds, tFree, freeIterations, extras);
       if (n % progress == 0 || n == nSteps) {
@@ -1444,6 +1494,18 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                             << elapsed / n * (nSteps - n) << " s" << std::endl;
       }
     }
+    // The time-discrete contact gains energy where contact is released (README, Known behaviour).
+    const double supplied = initialEnergy + workExternal;  // by the initial state and the loads
+    const double scale = supplied > 0 ? supplied : largestEnergy;
+    if (options.reportWork && scale > 0 && workContact > 0.05 * scale && rank == 0)
+      std::cerr << "signorini: warning: " << I.deckPath << ": the contact did work " << workContact
+                << " on the body by t = " << nSteps * k << ", " << std::setprecision(2) << 100 * workContact / scale
+                << std::setprecision(6) << "% of the " << (supplied > 0 ? "energy supplied by the initial state and the loads, "
+                                                                            : "largest newmark_energy, ")
+                << scale
+                << ": the time-discrete contact gains energy where contact is released; a smaller Time Step reduces "
+                   "it (README, Known behaviour; the step table's contact_work)"
+                << std::endl;
     // Inside the try: if either fails (on rank 0), every rank throws and neither output is left.
     core::onRootCollectively(*I.comm, [&] {
       if (csv) csv->commit();

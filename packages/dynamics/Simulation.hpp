@@ -89,6 +89,11 @@ struct PassOptions {
   /// of (I_h u^{n-1}, I_h v^{n-1}) on the mesh of step n (those of step n-1 when the mesh is kept),
   /// so the transfer's effect on the energy is visible. Costs a third projected field (Newmark::recoveryField).
   bool reportTransferEnergy = false;
+  /// Step-table columns external_work, contact_work: the work of the loads and of the contact
+  /// multipliers on the body since t = 0, summed over the steps as (u^n - u^{n-1}) . (f^{n-1} + f^n) / 2,
+  /// so that with Alpha = 1/2 newmark_energy(n) = newmark_energy(0) + external_work + contact_work.
+  /// Only for a pass on one mesh (every step's mesh the same).
+  bool reportWork = true;
   /// Compact a step's forest (mesh::Forest::compact()) once the pass has moved past it; meshes are
   /// expanded when a step needs them either way.
   bool compactMeshes = false;

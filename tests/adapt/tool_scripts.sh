@@ -116,6 +116,10 @@ expect_error cut_uniform "cut-uniform.steps.csv: not a complete table" \
   "${plot[@]}" --adaptive "$work/membrane" --uniform "$work/cut-uniform"
 expect_error bar_missing "plot_bar.py: error: $work/nothing.cycles.csv: no such file" \
   /usr/bin/python3 "$src/tools/plot_bar.py" --adaptive "$work/nothing"
+expect_error one_mesh "plot_results.py: error: $work/plain.cycles.csv: no such file: a run on one mesh, not an adaptive run" \
+  "${plot[@]}" --adaptive "$work/plain"
+expect_error bar_one_mesh "plot_bar.py: error: $work/plain.cycles.csv: no such file: a run on one mesh" \
+  /usr/bin/python3 "$src/tools/plot_bar.py" --adaptive "$work/plain"
 expect_error bar_scalar "plot_bar.py: error: $work/membrane.e: no nodal variable u_x, u_y .*not an elasticity run" \
   /usr/bin/python3 "$src/tools/plot_bar.py" --adaptive "$work/membrane"
 expect_error bad_steps "plot_results.py: error: --steps 5,abc: not a comma-separated list of step numbers" \
@@ -353,7 +357,7 @@ if [ -w /dev/full ]; then
 else
   echo "skipped: the full-disk checks (/dev/full is not writable here)"
 fi
-# Runs of the wrong kind and bad arguments: the membrane's checkers refuse the bar (its domain is
+# Runs of the wrong kind and bad arguments: the membrane's checkers and plot_results.py refuse the bar (its domain is
 # [0,0.2]x[0,0.05], not the membrane's [0,1]^2), a mirror line that is not finite or not inside the
 # domain and a negative level; deck_from_exodus.py names a directory as such.
 "$signorini" --output-dir "$work" --set 'Time Integration/Final Time=3e-4' --set 'Adaptivity/Cycles=1' \
@@ -362,6 +366,25 @@ not_membrane="$work/bar.e: not a membrane run: the cells do not cover \[0,1\]^2"
 refuses first_bar "check_first_contact.py: error: $not_membrane" "$py" "$tools/check_first_contact.py" "$work/bar"
 refuses mirror_bar "check_mirror_symmetry.py: error: $not_membrane" "$py" "$tools/check_mirror_symmetry.py" "$work/bar"
 refuses zone_bar "contact_zone_levels.py: error: $not_membrane" "$py" "$tools/contact_zone_levels.py" "$work/bar"
+refuses plot_bar_run "plot_results.py: error: $work/bar.e: a run of Problem/Type = plane strain elasticity: plot_results.py draws" \
+  "$py" "$tools/plot_results.py" --adaptive "$work/bar" --out "$work/plots-of-bar"
+[ ! -e "$work/plots-of-bar" ] || fail "plot_results.py made its output folder for an elasticity run"
+# plot_steps.py: any run's columns against t (the bar's, the membrane's cycle 0 as rates); one curve per
+# run and matched column (counted here from the headers); one-line errors before anything is written.
+"$py" "$tools/plot_steps.py" "$work/bar" "$work/bar" --columns 'energy,kinetic_energy' 'probe:*' 'contact_*' \
+  --out "$work/bar-steps.png" > "$work/plot-steps.log" 2>&1 || { cat "$work/plot-steps.log"; fail "plot_steps.py on the bar"; }
+matched=$("$py" -c "import csv, fnmatch, sys; h = next(csv.reader(open(sys.argv[1]))); print(2 * sum(any(fnmatch.fnmatchcase(n, p) for p in ('energy', 'kinetic_energy', 'probe:*', 'contact_*')) for n in h))" "$work/bar.steps.csv")
+[ "$matched" -ge 6 ] && grep -qx "wrote $work/bar-steps.png: $matched curve(s) in 3 panel(s)" "$work/plot-steps.log" && [ -s "$work/bar-steps.png" ] ||
+  { cat "$work/plot-steps.log"; fail "plot_steps.py on the bar: not the $matched curves matched"; }
+"$py" "$tools/plot_steps.py" "$work/membrane" --cycle 0 --rate --columns energy --out "$work/membrane-rate.png" > "$work/plot-rate.log" 2>&1 &&
+  grep -qx "wrote $work/membrane-rate.png: 1 curve(s) in 1 panel(s)" "$work/plot-rate.log" || { cat "$work/plot-rate.log"; fail "plot_steps.py --rate --cycle 0"; }
+refuses steps_no_match "plot_steps.py: error: $work/bar.steps.csv: no column matches 'probe:nowhere' (its columns: step, t," \
+  "$py" "$tools/plot_steps.py" "$work/bar" --columns energy,probe:nowhere --out "$work/never.png"
+refuses steps_missing "plot_steps.py: error: $work/nothing.steps.csv: no such file" \
+  "$py" "$tools/plot_steps.py" "$work/bar" "$work/nothing" --columns energy --out "$work/never.png"
+refuses steps_no_folder "plot_steps.py: error: --out $work/no/such.png: no folder $work/no" \
+  "$py" "$tools/plot_steps.py" "$work/bar" --columns energy --out "$work/no/such.png"
+[ ! -e "$work/never.png" ] || fail "plot_steps.py wrote a figure after an error"
 refuses mirror_nan "check_mirror_symmetry.py: error: argument axis: nan: not a line x2 = c inside" \
   "$py" "$tools/check_mirror_symmetry.py" "$work/membrane" nan
 refuses mirror_outside "check_mirror_symmetry.py: error: argument axis: 1.5: not a line x2 = c inside" \
@@ -472,6 +495,17 @@ refuses tables_no_rows "compare_step_tables.py: error: $work/cst0/a.steps.csv: a
 printf 'x,time_output\n1,2\n' > "$work/cst0/c.steps.csv" && printf 'y,time_output\n1,2\n' > "$work/cst0/d.steps.csv"
 refuses tables_nothing_common "compare_step_tables.py: error: $work/cst0/c and $work/cst0/d: no column to compare" \
   "$py" "$tools/compare_step_tables.py" "$work/cst0/c" "$work/cst0/d" --common-columns
+# --rtol: 4 + 2e-10 against 4 in a column whose largest magnitude is 4 is equal within 1e-10, not within 1e-11.
+printf 'step,t,x\n0,0,-4\n1,1,4\n' > "$work/cst0/e.steps.csv" && printf 'step,t,x\n0,0,-4\n1,1,4.0000000002\n' > "$work/cst0/f.steps.csv"
+"$py" "$tools/compare_step_tables.py" "$work/cst0/e" "$work/cst0/f" > /dev/null && fail "compare_step_tables.py: 4.0000000002 equal to 4 bit for bit"
+"$py" "$tools/compare_step_tables.py" "$work/cst0/e" "$work/cst0/f" --rtol 1e-10 > "$work/rtol.log" &&
+  grep -qx ".steps.csv: x: largest difference 5e-11 of the column's largest magnitude 4" "$work/rtol.log" ||
+  { cat "$work/rtol.log"; fail "compare_step_tables.py --rtol 1e-10"; }
+"$py" "$tools/compare_step_tables.py" "$work/cst0/e" "$work/cst0/f" --rtol 1e-11 > "$work/rtol.log" && fail "compare_step_tables.py --rtol 1e-11 passed"
+grep -q "^.steps.csv: x differs first in row 2: 4 against 4.0000000002 (largest difference 5e-11" "$work/rtol.log" ||
+  { cat "$work/rtol.log"; fail "compare_step_tables.py --rtol 1e-11: message"; }
+refuses tables_bad_rtol "compare_step_tables.py: error: --rtol -1.0: not a number >= 0" \
+  "$py" "$tools/compare_step_tables.py" "$work/cst0/e" "$work/cst0/f" --rtol -1
 # check_adaptive_meshes.py: --coarser-than compares every written time with BASE2's mesh at that time
 # (A: one file, one mesh at t = 0, 1, 2; B: a finer mesh at t = 0, A's at t = 1, 2: coarser in 1 of 3
 # steps); a mesh off the dyadic lattice: one line naming the file.

@@ -489,7 +489,7 @@ signorini_add_driver_test(bad_probe_not_a_number EXIT 1
   REGEX "Output/Probes/p: \"nan, 0[.]5\" is not a point [(]a coordinate is not a finite number[)]")
 signorini_add_driver_test(bad_probe_outside_the_mesh EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/far=5, 0.5" ${decks}/good.xml
-  REGEX "Output/Probes/far: point [(]5, 0[.]5[)] is outside the mesh")
+  REGEX "Output/Probes/far: point [(]5, 0[.]5[)] is outside the mesh, which lies in [[]0, 1[]] x [[]0, 1[]]")
 # The Exodus file cannot take its final name when the run ends: the step table goes too.
 signorini_add_driver_test(output_exodus_not_renamable EXIT 1
   ARGS --output-dir {OUT} ${decks}/good.xml

@@ -1,0 +1,98 @@
+#!/usr/bin/env bash
+# The step tables' energy balance (external_work, contact_work; runs on one mesh):
+#  - with Alpha = 1/2, newmark_energy(n) = newmark_energy(0) + external_work(n) + contact_work(n) in
+#    every step (check_energy_balance.py): an aluminium block dropped onto a floor at the deck's
+#    Time Step and at a tenth of it, the bar of paper Example 6.2 under its load on 2 ranks (loads
+#    and contact both do work), the membrane through contact with Beta = 1/2 and 1/4;
+#  - the block's impact at a Time Step longer than the wave's transit gains more than 30% of the
+#    initial energy from the contact, and the run warns; at a tenth of the step under 5%, no warning;
+#  - controls: Alpha = 0.6 breaks the balance (the relation is that of alpha = 1/2), and so do a
+#    table whose contact_work is zeroed and one whose external_work is halved;
+#  - adaptive runs (a mesh per step) have no such columns.
+# Usage: energy_balance.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
+# MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (cmake/SignoriniTesting.cmake).
+set -uo pipefail
+signorini=$1 src=$3 work=$4
+IFS='|' read -r -a launcher <<< "$2"
+py=/usr/bin/python3
+check="$py $src/tests/dynamics/check_energy_balance.py"
+decks=$src/tests/driver/decks
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+run() {  # run NAME NP ARGS...: the run's folder is $work/NAME, its output $work/NAME.log
+  local name=$1 np=$2; shift 2
+  "${launcher[0]}" "${launcher[1]:--n}" "$np" "${launcher[@]:2}" "$signorini" --output-dir "$work/$name" "$@" > "$work/$name.log" 2>&1 ||
+    { cat "$work/$name.log"; fail "run $name"; }
+}
+membrane=(--set "Time Integration/Final Time=1.2" --set "Output/Write Exodus=false" "$decks/good.xml")
+run block 1 "$decks/block-on-floor.xml"
+run block_fine 1 --set "Time Integration/Time Step=1e-6" "$decks/block-on-floor.xml"
+run bar 2 --set "Adaptivity/Strategy=none" --set "Time Integration/Final Time=1e-3" --set "Output/Write Exodus=false" \
+  "$src/inputs/bar.xml"
+run membrane 1 "${membrane[@]}"
+run membrane_quarter 1 --set "Time Integration/Beta=0.25" "${membrane[@]}"
+run membrane_alpha 1 --set "Time Integration/Alpha=0.6" --set "Time Integration/Beta=0.4" "${membrane[@]}"
+run adaptive 1 --set "Adaptivity/Strategy=fixed fraction" --set "Adaptivity/Cycles=2" "${membrane[@]}"
+
+$check "$work/block/block-on-floor.steps.csv" 1e-7 || fail "block: energy balance"
+$check "$work/block_fine/block-on-floor.steps.csv" 1e-7 || fail "block, Time Step 1e-6: energy balance"
+$check "$work/bar/bar.steps.csv" 1e-7 || fail "bar on 2 ranks: energy balance"
+$check "$work/membrane/good.steps.csv" 1e-6 || fail "membrane: energy balance"
+$check "$work/membrane_quarter/good.steps.csv" 1e-6 || fail "membrane, Beta = 1/4: energy balance"
+
+$py - "$work" <<'PY' || exit 1
+import csv, sys
+work = sys.argv[1]
+def table(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+def fail(message):
+    print("FAIL:", message)
+    sys.exit(1)
+def gain(name):
+    t = table(f"{work}/{name}/block-on-floor.steps.csv")
+    return float(t[-1]["contact_work"]) / float(t[0]["newmark_energy"])
+def warned(name):
+    return "the contact did work" in open(f"{work}/{name}.log").read()
+coarse, fine = gain("block"), gain("block_fine")
+if not (coarse > 0.3 and warned("block")):
+    fail(f"block: the contact's work is {coarse:.3g} of the initial energy (more than 0.3 expected), warned: {warned('block')}")
+if not (0 < fine < 0.05 and not warned("block_fine")):
+    fail(f"block, Time Step 1e-6: the contact's work is {fine:.3g} of the initial energy (0 to 0.05 expected), "
+         f"warned: {warned('block_fine')}")
+bar = table(f"{work}/bar/bar.steps.csv")
+e0, w_ext, w_c = (float(bar[0]["newmark_energy"]), float(bar[-1]["external_work"]), float(bar[-1]["contact_work"]))
+if not (abs(w_ext) > 10 * e0 and w_c != 0 and any(int(r["active"]) > 0 for r in bar)):
+    fail(f"bar: external_work {w_ext}, contact_work {w_c}, newmark_energy(0) {e0}: loads and contact were to do work")
+membrane = table(f"{work}/membrane/good.steps.csv")
+if not any(int(r["active"]) > 0 for r in membrane) or float(membrane[-1]["contact_work"]) == 0:
+    fail("the membrane run has no contact work: the balance was not checked through contact")
+for f in (f"{work}/adaptive/good.steps.csv", f"{work}/adaptive/good.cycle0.steps.csv"):
+    header = table(f)[0]
+    if "external_work" in header or "contact_work" in header:
+        fail(f"{f}: work columns in an adaptive run")
+print(f"block: contact work {coarse:.3g} of the initial energy (warned), {fine:.3g} at a tenth of the step; "
+      f"bar: external work {w_ext:.6g}, contact work {w_c:.6g}")
+PY
+
+# Controls: Alpha = 0.6, a zeroed contact_work and a halved external_work break the balance.
+$py - "$work" <<'PY'
+import csv, sys
+work = sys.argv[1]
+for source, column, factor, name in (("block/block-on-floor", "contact_work", 0.0, "no_contact_work"),
+                                      ("bar/bar", "external_work", 0.5, "half_external_work")):
+    with open(f"{work}/{source}.steps.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    for r in rows:
+        r[column] = repr(factor * float(r[column]))
+    with open(f"{work}/{name}.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+PY
+for table in "$work/membrane_alpha/good.steps.csv" "$work/no_contact_work.csv" "$work/half_external_work.csv"; do
+  $check "$table" 1e-6 > "$work/control.log" && fail "control: the checker passed $table"
+  grep -q "newmark_energy - newmark_energy(0) - external_work - contact_work = " "$work/control.log" ||
+    { cat "$work/control.log"; fail "control $table: another failure"; }
+done
+echo "PASS"

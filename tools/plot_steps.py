@@ -1,0 +1,117 @@
+#!/usr/bin/python3
+"""Plots columns of signorini step tables (<base>.steps.csv) against time, for any run: probes,
+energies and work, contact force, KKT columns, iterations.
+
+  tools/plot_steps.py BASE [BASE ...] --columns PATTERN [PATTERN ...] --out FILE.png [--rate]
+                      [--cycle L]
+
+Each PATTERN is one panel and draws every column it matches (shell-style: 'probe:tip:*' gives the
+tip's u, v and a; 'energy' only the column energy; several patterns in one panel joined by ','
+as in 'energy,kinetic_energy'), for every BASE (runs compared in one figure). --rate draws the
+step differences (x^n - x^{n-1}) / k instead of the values: the motion of a probe's u, which in
+contact differs from Newmark's own v^n (README, Outputs). --cycle L takes the tables of cycle L of
+adaptive runs (<base>.cycle<L>.steps.csv; the last cycle is <base>.steps.csv). A pattern that
+matches no column of a run, a missing or cut-short table stop the script with one line naming
+it, before anything is written. Uses Debian's python3 with matplotlib.
+"""
+import argparse
+import csv
+import fnmatch
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from tool_errors import ArgumentParser, InputError, reporting, require_complete, require_file  # noqa: E402
+
+
+def read_steps(path):
+    """{column: [float]} of a step table, names as written ('probe:tip:v:y'); InputError for a
+    table that is missing, cut short, has no rows or a value that is not a number."""
+    require_file(path)
+    require_complete(path)  # also: empty
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    header, body = rows[0], rows[1:]
+    if not body:
+        raise InputError(f"{path}: no rows")
+    if "t" not in header:
+        raise InputError(f"{path}: no column t: not a step table of signorini")
+    table = {name: [] for name in header}
+    for r, row in enumerate(body, start=1):
+        if len(row) != len(header):
+            raise InputError(f"{path}: row {r} has {len(row)} values, the header {len(header)} columns")
+        for name, value in zip(header, row):
+            try:
+                table[name].append(float(value))
+            except ValueError:
+                raise InputError(f"{path}: row {r}, column {name}: '{value}' is not a number") from None
+    return table
+
+
+def matching(table, pattern, path):
+    """The columns of table that the panel pattern matches (its ','-separated parts in order)."""
+    names = []
+    for part in pattern.split(","):
+        found = [n for n in table if fnmatch.fnmatchcase(n, part.strip())]
+        if not found:
+            shown = ", ".join(n for n in table if not n.startswith("time_"))
+            raise InputError(f"{path}: no column matches '{part.strip()}' (its columns: {shown})")
+        names += [n for n in found if n not in names]
+    return names
+
+
+def main():
+    ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("bases", nargs="+", metavar="BASE", help="output base of a run (folder/basename)")
+    ap.add_argument("--columns", nargs="+", required=True, metavar="PATTERN",
+                    help="one panel per pattern: the columns it matches (shell-style; ',' joins patterns)")
+    ap.add_argument("--rate", action="store_true", help="draw (x^n - x^{n-1}) / k instead of x^n")
+    ap.add_argument("--cycle", type=int, help="cycle L of adaptive runs (<base>.cycle<L>.steps.csv)")
+    ap.add_argument("--out", required=True, help="the PNG file to write")
+    a = ap.parse_args()
+    suffix = ".steps.csv" if a.cycle is None else f".cycle{a.cycle}.steps.csv"
+    runs = []  # (label, table, [[columns] per panel]): every input read and checked before drawing
+    for base in a.bases:
+        path = base + suffix
+        if a.cycle is not None and not os.path.isfile(path) and os.path.isfile(base + ".cycles.csv"):
+            path = base + ".steps.csv"  # the last cycle has no number
+        table = read_steps(path)
+        if a.rate and len(table["t"]) < 2:
+            raise InputError(f"{path}: one step: no difference to draw (--rate)")
+        runs.append((os.path.basename(base), table, [matching(table, p, path) for p in a.columns]))
+    if os.path.isdir(a.out):
+        raise InputError(f"--out {a.out}: a folder, not a file")
+    folder = os.path.dirname(os.path.abspath(a.out))
+    if not os.path.isdir(folder):
+        raise InputError(f"--out {a.out}: no folder {folder}")
+
+    fig, axes = plt.subplots(len(a.columns), 1, figsize=(9, 2.8 * len(a.columns)), sharex=True, squeeze=False)
+    for panel, pattern in enumerate(a.columns):
+        ax = axes[panel][0]
+        for label, table, columns in runs:
+            t = table["t"]
+            for name in columns[panel]:
+                x = table[name]
+                if a.rate:
+                    y = [(x[n] - x[n - 1]) / (t[n] - t[n - 1]) for n in range(1, len(t))]
+                    ax.plot(t[1:], y, lw=1, label=f"{label}: d({name})/dt")
+                else:
+                    ax.plot(t, x, lw=1, label=f"{label}: {name}")
+        ax.set_ylabel(("rate of " if a.rate else "") + pattern, fontsize=8)
+        ax.grid(True, alpha=0.3)
+        ax.legend(fontsize=7)
+    axes[-1][0].set_xlabel("t")
+    fig.tight_layout()
+    fig.savefig(a.out, dpi=130)
+    plt.close(fig)
+    drawn = sum(len(c) for _, _, panels in runs for c in panels)
+    print(f"wrote {a.out}: {drawn} curve(s) in {len(a.columns)} panel(s)")
+
+
+if __name__ == "__main__":
+    reporting(main)
