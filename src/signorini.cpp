@@ -291,7 +291,20 @@ int main(int argc, char** argv) {
         for (const auto& [phase, seconds] : summary.phaseSeconds)
           out << " " << phase << " " << std::fixed << std::setprecision(3) << seconds;
         out << std::endl;
-        for (const auto& f : summary.files) out << "  wrote " << f << std::endl;
+        // An Exodus series' further files (<base>.e-s.0001, ...) in one line: first, last and count.
+        for (size_t i = 0; i < summary.files.size();) {
+          const std::string& f = summary.files[i];
+          const size_t series = f.rfind(".e-s.");
+          size_t j = i + 1;
+          if (series != std::string::npos)
+            while (j < summary.files.size() && summary.files[j].compare(0, series + 5, f, 0, series + 5) == 0) ++j;
+          if (j - i > 2)
+            out << "  wrote " << f << " ... " << summary.files[j - 1] << " (" << j - i << " files of the series of "
+                << f.substr(0, series + 2) << ")" << std::endl;
+          else
+            for (size_t m = i; m < j; ++m) out << "  wrote " << summary.files[m] << std::endl;
+          i = j;
+        }
         ++finished;
       } catch (signorini::core::Interrupted& e) {  // the run's files are gone; the remaining decks do not run
         if (rank == 0) std::cerr << "signorini: " << path << ": " << e.what() << "; its files were removed" << std::endl;

@@ -770,6 +770,16 @@ signorini_add_driver_test(muelu_values_take_muelus_types EXIT 0
        --set "Linear Solver/MueLu/problem: symmetric=yes" --set "Output/Write Exodus=false" ${decks}/good.xml
   REGEX "wrote .*good[.]steps[.]csv"
   FILES good.steps.csv)
+# The log names an Exodus series' further files in one line (first, last, count), the others one by one.
+signorini_add_driver_test(exodus_series_in_one_line EXIT 0 NP 1
+  ARGS --output-dir {OUT} --set "Adaptivity/Cycles=2" --set "Time Integration/Final Time=0.2"
+       ${PROJECT_SOURCE_DIR}/inputs/membrane.xml
+  REGEX "wrote [^ ]*/membrane[.]e\n"
+        "wrote [^ ]*/membrane[.]e-s[.]0001 [.][.][.] [^ ]*/membrane[.]e-s[.]0009 [(]9 files of the series of [^ ]*/membrane[.]e[)]"
+  ABSENT "wrote [^ ]*/membrane[.]e-s[.]0002"
+  FILES membrane.cycle0.steps.csv membrane.steps.csv membrane.cycles.csv membrane.e membrane.e-s.0001 membrane.e-s.0002
+        membrane.e-s.0003 membrane.e-s.0004 membrane.e-s.0005 membrane.e-s.0006 membrane.e-s.0007 membrane.e-s.0008
+        membrane.e-s.0009)
 # Output names the Exodus library would change or that break listings (it dropped the leading blanks
 # of "   /good.e": the file went to the root folder while the tables went to "   /").
 signorini_add_driver_test(output_directory_with_leading_blanks EXIT 1
