@@ -9,7 +9,7 @@ namespace signorini::dynamics {
 /// The Newmark scheme of paper (3.1)-(3.2) (alpha is Newmark's gamma): the parameters of the deck's "Time Integration"
 /// sublist and the predictor and velocity/acceleration updates on caller-owned vectors. A plain value type.
 struct Newmark {
-  /// The valid "Time Integration" sublist (Time Step, Final Time, Alpha, Beta, Contact Stabilisation) with
+  /// The valid "Time Integration" sublist (Time Step, Final Time, Alpha, Beta, Contact Stabilisation, Contact Force) with
   /// defaults, doc strings and validators.
   static core::ParameterList getValidParameters();
   /// Reads a validated "Time Integration" sublist; throws core::UserError unless
@@ -21,6 +21,10 @@ struct Newmark {
   double alpha;      ///< Newmark gamma (paper alpha), in [1/2, 2 beta]
   double beta;       ///< Newmark beta (paper beta); the step matrix is M + beta k^2 K
   bool stabilised = false;  ///< project the predictor onto the admissible set before each step
+  /// Contact Force = implicit: the predictors of step n+1 take the acceleration without step n's contact
+  /// force, M^{-1} (f^n - K u^n), so only the new step's contact force acts in a step; the physical
+  /// contact force is then alpha times the step equation's (-B lambda / (beta k^2)).
+  bool implicitContact = false;
   /// Number of steps N = T / k (rounded to the nearest integer).
   int numSteps() const;
 

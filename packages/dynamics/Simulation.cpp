@@ -1215,8 +1215,12 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
 
   RunSummary summary;
   const auto start = std::chrono::steady_clock::now();
-  // The QP multiplier is beta k^2 times the physical one (kappa du/dn = -lambda on Gamma_C).
+  // The QP multiplier is beta k^2 times the step equation's (toPhysical); the physical one (kappa du/dn =
+  // -lambda on Gamma_C) is that, or alpha times that when only the new contact force acts in a step
+  // (Newmark::implicitContact: v gains alpha k of its acceleration).
   const double toPhysical = 1.0 / (beta * k * k);
+  const bool implicitContact = I.newmark->implicitContact;
+  const double lambdaToPhysical = (implicitContact ? I.newmark->alpha : 1.0) * toPhysical;
 
   std::unique_ptr<Discretisation> d;
   if (I.initialDiscretisation && meshes[0] == I.initialDiscretisation->forest) {
@@ -1230,6 +1234,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
               v = Teuchos::rcp(new Vector(d->assembler->ownedMap())),
               a = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
   I.initialState(*d, *u, *v, *a);
+  RCP<Vector> aCarried = a;  // the acceleration the next step's predictors take (Newmark::implicitContact)
   I.checkInitialGap(*d, *u);
   std::vector<double> lambda(d->coupling ? d->coupling->numSegments() : 0, 0.0), gap;
   if (d->coupling) {
@@ -1267,7 +1272,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     const auto dofs = static_cast<double>(d->assembler->ownedMap()->getGlobalNumElements());
     double force = 0;
     if (d->coupling)
-      for (int j = 0; j < d->coupling->numSegments(); ++j) force -= toPhysical * lambda[j] * d->coupling->segmentLength()[j];
+      for (int j = 0; j < d->coupling->numSegments(); ++j) force -= lambdaToPhysical * lambda[j] * d->coupling->segmentLength()[j];
     Vector uOverlap(d->assembler->overlapMap());
     d->assembler->toOverlap(*u, uOverlap);
     const bool writeExodus = exodus && (step % exodusInterval == 0 || step == nSteps);
@@ -1285,8 +1290,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     std::vector<double> row = {double(step), t, dofs, double(qr.active), double(qr.activeSetIterations),
                                double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),
                                energy, kinetic, newmarkEnergy, force,
-                               toPhysical * qr.maxLambda, toPhysical * qr.minLambda, qr.minGap,
-                               toPhysical * qr.maxComplementarity, tAssembly,
+                               lambdaToPhysical * qr.maxLambda, lambdaToPhysical * qr.minLambda, qr.minGap,
+                               lambdaToPhysical * qr.maxComplementarity, tAssembly,
                                tContact, 0.0, tFree, tRemesh, tEstimate, double(d->forest->numGlobalCells())};
     if (measureOverhead) row.push_back(freeIterations);
     const Vector* const fields[] = {&uOverlap, vOverlap.get(), aOverlap.get()};  // u, v, a (v, a may be null)
@@ -1331,7 +1336,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
           const int j = d->coupling->localEdgeSegment()[i];
           if (j < 0) continue;
           contactEdges.push_back(static_cast<int>(i));
-          contact[0].push_back(toPhysical * lambda[j]);
+          contact[0].push_back(lambdaToPhysical * lambda[j]);
           contact[1].push_back(gap[j] / d->coupling->segmentLength()[j]);
         }
       std::vector<RCP<Vector>> parts;
@@ -1372,13 +1377,13 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       }
       // The step's Newmark predictors, formed on the mesh of step n-1 and moved with it.
       std::vector<RCP<Vector>> predictors = {Teuchos::rcp(new Vector(u->getMap())), Teuchos::rcp(new Vector(u->getMap()))};
-      I.newmark->predictor(*u, *v, *a, *predictors[0]);
-      I.newmark->velocityPredictor(*v, *a, *predictors[1]);
+      I.newmark->predictor(*u, *v, *aCarried, *predictors[0]);
+      I.newmark->velocityPredictor(*v, *aCarried, *predictors[1]);
       if (n > 1 && meshes[n - 1] != d->forest && !meshes[n - 1]->sameCells(*d->forest)) {
         meshes[n - 1]->expand();
         auto next = I.build(meshes[n - 1], n);
         if (options.reportTransferEnergy)  // only to recover I_h u and I_h v
-          predictors.push_back(Teuchos::rcp(new Vector(I.newmark->recoveryField(*v, *a), Teuchos::Copy)));
+          predictors.push_back(Teuchos::rcp(new Vector(I.newmark->recoveryField(*v, *aCarried), Teuchos::Copy)));
         I.transfer(*d, *next, options.interpolateTransfer, predictors, lambda, carried);
         const auto previous = d->forest;
         d = std::move(next);
@@ -1469,6 +1474,20 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       }
       tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();
       I.newmark->update(pred, *predictors[1], *u, *v, *a);
+      if (!implicitContact) {
+        aCarried = a;
+      } else {  // M^{-1} (f^n - K u^n) = a^n + M^{-1} B lambda / (beta k^2): without the step's contact force
+        auto scope = I.timers.scope("contact");
+        aCarried = Teuchos::rcp(new Vector(a->getMap()));
+        aCarried->assign(*a);
+        if (d->coupling && std::any_of(lambda.begin(), lambda.end(), [](double l) { return l != 0.0; })) {
+          Vector contactForce(owned), x(owned);
+          d->coupling->apply(lambda, contactForce, toPhysical);
+          d->assembler->zeroDirichlet(contactForce);
+          I.massSolver(*d).solve(contactForce, x);
+          aCarried->update(1.0, x, 1.0);
+        }
+      }
       if (options.reportWork) {  // (u^n - u^{n-1}) . (f^{n-1} + f^n) / 2, f^n = load / (beta k^2)
         Vector du(owned), mean(owned);
         du.update(1.0, *u, -1.0, *uPrevious, 0.0);
@@ -1478,8 +1497,10 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         if (d->coupling) {
           auto contact = d->coupling->applyTranspose(*u);
           double w = 0;
-          for (size_t j = 0; j < contact.size(); ++j) w += (contact[j] - contactPrevious[j]) * (lambdaPrevious[j] + lambda[j]);
-          workContact -= 0.5 * toPhysical * w;
+          // The contact force acting in the step: the mean of its two ends, or the new one alone.
+          for (size_t j = 0; j < contact.size(); ++j)
+            w += (contact[j] - contactPrevious[j]) * (implicitContact ? lambda[j] : 0.5 * (lambdaPrevious[j] + lambda[j]));
+          workContact -= (implicitContact ? lambdaToPhysical : toPhysical) * w;
           contactPrevious = std::move(contact);
         }
       }
@@ -1499,8 +1520,9 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     const double scale = supplied > 0 ? supplied : largestEnergy;
     if (options.reportWork && scale > 0 && workContact > 0.05 * scale && rank == 0)
       std::cerr << "signorini: warning: " << I.deckPath << ": the contact did work " << workContact
-                << " on the body by t = " << nSteps * k << ", " << std::setprecision(2) << 100 * workContact / scale
-                << std::setprecision(6) << "% of the " << (supplied > 0 ? "energy supplied by the initial state and the loads, "
+                << " on the body by t = " << nSteps * k << ", " << std::fixed
+                << std::setprecision(100 * workContact < 10 * scale ? 1 : 0) << 100 * workContact / scale
+                << std::defaultfloat << std::setprecision(6) << "% of the " << (supplied > 0 ? "energy supplied by the initial state and the loads, "
                                                                             : "largest newmark_energy, ")
                 << scale
                 << ": the time-discrete contact gains energy where contact is released; a smaller Time Step reduces "

@@ -163,6 +163,10 @@ signorini_add_bad_deck_test(newmark_alpha_too_small ${decks}/alpha-too-small.xml
   "Time Integration/Alpha = 0[.]4 violates 2 Beta >= Alpha >= 1/2")
 signorini_add_bad_deck_test(newmark_beta_too_small ${decks}/beta-too-small.xml
   "Time Integration/Beta = 0[.]2 violates 2 Beta >= Alpha >= 1/2")
+# The implicit contact force is Deuflhard, Krause and Ertel's trapezoidal step: other Alpha or Beta are refused.
+signorini_add_driver_test(newmark_implicit_contact_needs_trapezoidal EXIT 1
+  ARGS --output-dir {OUT} --set "Time Integration/Contact Force=implicit" ${decks}/good.xml
+  REGEX "Time Integration/Contact Force = implicit needs Alpha = 1/2 and Beta = 1/4 .*not Alpha = 0[.]5 and Beta = 0[.]5")
 
 # Boundary segments naming a side set the mesh does not have.
 signorini_add_bad_deck_test(missing_side_set ${decks}/missing-side-set.xml

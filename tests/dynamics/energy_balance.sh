@@ -6,6 +6,12 @@
 #    and contact both do work), the membrane through contact with Beta = 1/2 and 1/4;
 #  - the block's impact at a Time Step longer than the wave's transit gains more than 30% of the
 #    initial energy from the contact, and the run warns; at a tenth of the step under 5%, no warning;
+#  - Contact Force = implicit (with Beta = 1/4): the balance holds, and the contact never does positive
+#    work (contact_work never rises beyond the tolerance): the block gains nothing where the
+#    trapezoidal contact force gains 43%, and neither does the membrane;
+#  - the block resting on the floor under its weight: over 600 steps the mean contact_force is its
+#    weight (momentum balance) with either contact force, which checks the implicit one's physical
+#    scale (alpha times the step equation's);
 #  - controls: Alpha = 0.6 breaks the balance (the relation is that of alpha = 1/2), and so do a
 #    table whose contact_work is zeroed and one whose external_work is halved;
 #  - adaptive runs (a mesh per step) have no such columns.
@@ -33,12 +39,23 @@ run membrane 1 "${membrane[@]}"
 run membrane_quarter 1 --set "Time Integration/Beta=0.25" "${membrane[@]}"
 run membrane_alpha 1 --set "Time Integration/Alpha=0.6" --set "Time Integration/Beta=0.4" "${membrane[@]}"
 run adaptive 1 --set "Adaptivity/Strategy=fixed fraction" --set "Adaptivity/Cycles=2" "${membrane[@]}"
+implicit=(--set "Time Integration/Contact Force=implicit" --set "Time Integration/Beta=0.25")
+run block_implicit 2 "${implicit[@]}" "$decks/block-on-floor.xml"
+run membrane_implicit 1 "${implicit[@]}" "${membrane[@]}"
+resting=(--set "Problem/Initial Velocity=0, 0" --set "Problem/Obstacle=0" --set "Problem/Body Force=0, -27173.7"
+         "$decks/block-on-floor.xml")  # rho g = 2770 kg/m^3 x 9.81 m/s^2: a weight of 135.87 N/m
+run resting 1 "${resting[@]}"
+run resting_implicit 1 "${implicit[@]}" "${resting[@]}"
 
 $check "$work/block/block-on-floor.steps.csv" 1e-7 || fail "block: energy balance"
 $check "$work/block_fine/block-on-floor.steps.csv" 1e-7 || fail "block, Time Step 1e-6: energy balance"
 $check "$work/bar/bar.steps.csv" 1e-7 || fail "bar on 2 ranks: energy balance"
 $check "$work/membrane/good.steps.csv" 1e-6 || fail "membrane: energy balance"
 $check "$work/membrane_quarter/good.steps.csv" 1e-6 || fail "membrane, Beta = 1/4: energy balance"
+$check "$work/block_implicit/block-on-floor.steps.csv" 1e-7 || fail "block, implicit contact force: energy balance"
+$check "$work/membrane_implicit/good.steps.csv" 1e-6 || fail "membrane, implicit contact force: energy balance"
+$check "$work/resting/block-on-floor.steps.csv" 1e-7 || fail "resting block: energy balance"
+$check "$work/resting_implicit/block-on-floor.steps.csv" 1e-7 || fail "resting block, implicit contact force: energy balance"
 
 $py - "$work" <<'PY' || exit 1
 import csv, sys
@@ -71,8 +88,23 @@ for f in (f"{work}/adaptive/good.steps.csv", f"{work}/adaptive/good.cycle0.steps
     header = table(f)[0]
     if "external_work" in header or "contact_work" in header:
         fail(f"{f}: work columns in an adaptive run")
+for name, base in (("block_implicit", "block-on-floor"), ("membrane_implicit", "good")):
+    t = table(f"{work}/{name}/{base}.steps.csv")
+    e = [float(r["newmark_energy"]) for r in t]
+    w = [float(r["contact_work"]) for r in t]
+    rise = max(w[n] - w[n - 1] for n in range(1, len(w))) / max(e)
+    if not (rise <= 1e-9 and w[-1] < 0 and e[-1] <= e[0] * (1 + 1e-7) and any(int(r["active"]) > 0 for r in t)):
+        fail(f"{name}: with the implicit contact force the contact's work rises by {rise:.3g} of the energy in a "
+             f"step and ends at {w[-1]:.6g}; newmark_energy {e[0]:.6g} -> {e[-1]:.6g}")
+    if warned(name):
+        fail(f"{name}: a warning about the contact's work with the implicit contact force")
+for name in ("resting", "resting_implicit"):
+    force = [float(r["contact_force"]) for r in table(f"{work}/{name}/block-on-floor.steps.csv")[1:]]
+    mean = sum(force) / len(force)
+    if not abs(mean / 135.87 - 1) <= 0.01:
+        fail(f"{name}: mean contact_force {mean:.6g} N/m over {len(force)} steps, the weight is 135.87 N/m")
 print(f"block: contact work {coarse:.3g} of the initial energy (warned), {fine:.3g} at a tenth of the step; "
-      f"bar: external work {w_ext:.6g}, contact work {w_c:.6g}")
+      f"bar: external work {w_ext:.6g}, contact work {w_c:.6g}; implicit contact force: no energy gained")
 PY
 
 # Controls: Alpha = 0.6, a zeroed contact_work and a halved external_work break the balance.
