@@ -7,7 +7,8 @@ differs, the tables do not match in shape or no value was compared. With --commo
 runs has (a version that added a column) are named and left out instead. With --rtol R, values
 compare equal within R times the largest magnitude of their column in the two tables (runs that
 need not agree bit for bit: ordinary arithmetic on other numbers of ranks, elasticity), and the
-largest difference of every column is printed.
+largest difference of every column is printed; the counts too (dofs, active, iterations) compare
+within R of their largest value.
 Usage: compare_step_tables.py BASE_A BASE_B [--common-columns] [--rtol R]"""
 import argparse
 import csv

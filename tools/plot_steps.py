@@ -5,12 +5,15 @@ energies and work, contact force, KKT columns, iterations.
   tools/plot_steps.py BASE [BASE ...] --columns PATTERN [PATTERN ...] --out FILE.png [--rate]
                       [--cycle L]
 
-Each PATTERN is one panel and draws every column it matches (shell-style: 'probe:tip:*' gives the
-tip's u, v and a; 'energy' only the column energy; several patterns in one panel joined by ','
-as in 'energy,kinetic_energy'), for every BASE (runs compared in one figure). --rate draws the
+Each PATTERN is one panel and draws every column it matches (shell-style: 'probe:tip*' gives the
+tip's u, v and a, 'probe:tip:*y' an elastic body's y components; 'energy' only the column energy;
+several patterns in one panel joined by ',' as in 'energy,kinetic_energy'), for every BASE (runs
+compared in one figure; a legend names a run by its basename, or by its path where two runs share
+a basename). --rate draws the
 step differences (x^n - x^{n-1}) / k instead of the values: the motion of a probe's u, which in
 contact differs from Newmark's own v^n (README, Outputs). --cycle L takes the tables of cycle L of
-adaptive runs (<base>.cycle<L>.steps.csv; the last cycle is <base>.steps.csv). A pattern that
+adaptive runs (<base>.cycle<L>.steps.csv; the last cycle is <base>.steps.csv; a cycle the run does
+not have is refused). A pattern that
 matches no column of a run, a missing or cut-short table stop the script with one line naming
 it, before anything is written. Uses Debian's python3 with matplotlib.
 """
@@ -65,6 +68,19 @@ def matching(table, pattern, path):
     return names
 
 
+def cycle_table(base, cycle):
+    """The step table of cycle \p cycle of the adaptive run at base (the last cycle's is <base>.steps.csv);
+    InputError for a cycle the run does not have (its cycles.csv counts them)."""
+    cycles = base + ".cycles.csv"
+    require_file(cycles)
+    require_complete(cycles)
+    with open(cycles, newline="") as f:
+        count = len(list(csv.reader(f))) - 1
+    if not 0 <= cycle < count:
+        raise InputError(f"--cycle {cycle}: {cycles} has cycles 0 to {count - 1}")
+    return base + (".steps.csv" if cycle == count - 1 else f".cycle{cycle}.steps.csv")
+
+
 def main():
     ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("bases", nargs="+", metavar="BASE", help="output base of a run (folder/basename)")
@@ -75,15 +91,17 @@ def main():
     ap.add_argument("--out", required=True, help="the PNG file to write")
     a = ap.parse_args()
     suffix = ".steps.csv" if a.cycle is None else f".cycle{a.cycle}.steps.csv"
+    names = [os.path.basename(b) for b in a.bases]
     runs = []  # (label, table, [[columns] per panel]): every input read and checked before drawing
     for base in a.bases:
         path = base + suffix
-        if a.cycle is not None and not os.path.isfile(path) and os.path.isfile(base + ".cycles.csv"):
-            path = base + ".steps.csv"  # the last cycle has no number
+        if a.cycle is not None:
+            path = cycle_table(base, a.cycle)
         table = read_steps(path)
         if a.rate and len(table["t"]) < 2:
             raise InputError(f"{path}: one step: no difference to draw (--rate)")
-        runs.append((os.path.basename(base), table, [matching(table, p, path) for p in a.columns]))
+        label = os.path.basename(base) if names.count(os.path.basename(base)) == 1 else base
+        runs.append((label, table, [matching(table, p, path) for p in a.columns]))
     if os.path.isdir(a.out):
         raise InputError(f"--out {a.out}: a folder, not a file")
     folder = os.path.dirname(os.path.abspath(a.out))

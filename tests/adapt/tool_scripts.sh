@@ -384,6 +384,10 @@ refuses steps_missing "plot_steps.py: error: $work/nothing.steps.csv: no such fi
   "$py" "$tools/plot_steps.py" "$work/bar" "$work/nothing" --columns energy --out "$work/never.png"
 refuses steps_no_folder "plot_steps.py: error: --out $work/no/such.png: no folder $work/no" \
   "$py" "$tools/plot_steps.py" "$work/bar" --columns energy --out "$work/no/such.png"
+for c in 2 -1; do
+  refuses "steps_cycle_$c" "plot_steps.py: error: --cycle $c: $work/membrane.cycles.csv has cycles 0 to 1" \
+    "$py" "$tools/plot_steps.py" "$work/membrane" --cycle "$c" --columns energy --out "$work/never.png"
+done
 [ ! -e "$work/never.png" ] || fail "plot_steps.py wrote a figure after an error"
 refuses mirror_nan "check_mirror_symmetry.py: error: argument axis: nan: not a line x2 = c inside" \
   "$py" "$tools/check_mirror_symmetry.py" "$work/membrane" nan

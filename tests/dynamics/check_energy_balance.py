@@ -24,7 +24,7 @@ values = {n: [float(r[n]) for r in rows] for n in names}
 if not all(math.isfinite(x) for column in values.values() for x in column):
     print(f"FAIL: {path}: a value that is not a finite number")
     sys.exit(1)
-scale = max(abs(x) for column in values.values() for x in column)
+scale = max(abs(x) for column in values.values() for x in column) or 1.0  # a body at rest: absolute
 e, w_ext, w_c = values["newmark_energy"], values["external_work"], values["contact_work"]
 residual = [(e[n] - e[0] - w_ext[n] - w_c[n]) / scale for n in range(len(rows))]
 worst = max(range(len(rows)), key=lambda n: abs(residual[n]))

@@ -3,7 +3,9 @@
 #  - with Alpha = 1/2, newmark_energy(n) = newmark_energy(0) + external_work(n) + contact_work(n) in
 #    every step (check_energy_balance.py): an aluminium block dropped onto a floor at the deck's
 #    Time Step and at a tenth of it, the bar of paper Example 6.2 under its load on 2 ranks (loads
-#    and contact both do work), the membrane through contact with Beta = 1/2 and 1/4;
+#    and contact both do work), the membrane through contact with Beta = 1/2 and 1/4 and under a
+#    body force that varies in time and space, a block lifted by a floor that moves (no warning:
+#    the obstacle's own work);
 #  - the block's impact at a Time Step longer than the wave's transit gains more than 30% of the
 #    initial energy from the contact, and the run warns; at a tenth of the step under 5%, no warning;
 #  - Contact Force = implicit (with Beta = 1/4): the balance holds, and the contact never does positive
@@ -13,7 +15,8 @@
 #    weight (momentum balance) with either contact force, which checks the implicit one's physical
 #    scale (alpha times the step equation's);
 #  - controls: Alpha = 0.6 breaks the balance (the relation is that of alpha = 1/2), and so do a
-#    table whose contact_work is zeroed and one whose external_work is halved;
+#    table whose contact_work is zeroed, one whose external_work is halved and one whose
+#    contact_work lags a step;
 #  - adaptive runs (a mesh per step) have no such columns.
 # Usage: energy_balance.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
 # MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (cmake/SignoriniTesting.cmake).
@@ -46,6 +49,8 @@ resting=(--set "Problem/Initial Velocity=0, 0" --set "Problem/Obstacle=0" --set 
          "$decks/block-on-floor.xml")  # rho g = 2770 kg/m^3 x 9.81 m/s^2: a weight of 135.87 N/m
 run resting 1 "${resting[@]}"
 run resting_implicit 1 "${implicit[@]}" "${resting[@]}"
+run membrane_load 1 --set "Problem/Body Force=-2*sin(3*t)*x" "${membrane[@]}"
+run lifted 1 --set "Problem/Initial Velocity=0, 0" --set "Problem/Obstacle=-0.0005 + 2*t" "$decks/block-on-floor.xml"
 
 $check "$work/block/block-on-floor.steps.csv" 1e-7 || fail "block: energy balance"
 $check "$work/block_fine/block-on-floor.steps.csv" 1e-7 || fail "block, Time Step 1e-6: energy balance"
@@ -56,6 +61,8 @@ $check "$work/block_implicit/block-on-floor.steps.csv" 1e-7 || fail "block, impl
 $check "$work/membrane_implicit/good.steps.csv" 1e-6 || fail "membrane, implicit contact force: energy balance"
 $check "$work/resting/block-on-floor.steps.csv" 1e-7 || fail "resting block: energy balance"
 $check "$work/resting_implicit/block-on-floor.steps.csv" 1e-7 || fail "resting block, implicit contact force: energy balance"
+$check "$work/membrane_load/good.steps.csv" 1e-6 || fail "membrane under a body force varying in time: energy balance"
+$check "$work/lifted/block-on-floor.steps.csv" 1e-7 || fail "block lifted by a moving floor: energy balance"
 
 $py - "$work" <<'PY' || exit 1
 import csv, sys
@@ -79,6 +86,12 @@ if not (0 < fine < 0.05 and not warned("block_fine")):
          f"warned: {warned('block_fine')}")
 bar = table(f"{work}/bar/bar.steps.csv")
 e0, w_ext, w_c = (float(bar[0]["newmark_energy"]), float(bar[-1]["external_work"]), float(bar[-1]["contact_work"]))
+load = table(f"{work}/membrane_load/good.steps.csv")
+if not (float(load[-1]["external_work"]) != 0 and any(int(r["active"]) > 0 for r in load)):
+    fail("membrane_load: no external work or no contact")
+lifted = table(f"{work}/lifted/block-on-floor.steps.csv")
+if not (float(lifted[-1]["contact_work"]) > 0.05 * float(lifted[-1]["newmark_energy"]) and not warned("lifted")):
+    fail(f"lifted: contact_work {lifted[-1]['contact_work']} (the floor's work: most of the energy), warned: {warned('lifted')}")
 if not (abs(w_ext) > 10 * e0 and w_c != 0 and any(int(r["active"]) > 0 for r in bar)):
     fail(f"bar: external_work {w_ext}, contact_work {w_c}, newmark_energy(0) {e0}: loads and contact were to do work")
 membrane = table(f"{work}/membrane/good.steps.csv")
@@ -112,17 +125,23 @@ $py - "$work" <<'PY'
 import csv, sys
 work = sys.argv[1]
 for source, column, factor, name in (("block/block-on-floor", "contact_work", 0.0, "no_contact_work"),
-                                      ("bar/bar", "external_work", 0.5, "half_external_work")):
+                                      ("bar/bar", "external_work", 0.5, "half_external_work"),
+                                      ("block/block-on-floor", "contact_work", None, "late_contact_work")):
     with open(f"{work}/{source}.steps.csv", newline="") as f:
         rows = list(csv.DictReader(f))
-    for r in rows:
-        r[column] = repr(factor * float(r[column]))
+    if factor is None:  # one step late
+        for n in range(len(rows) - 1, 0, -1):
+            rows[n][column] = rows[n - 1][column]
+    else:
+        for r in rows:
+            r[column] = repr(factor * float(r[column]))
     with open(f"{work}/{name}.csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
         w.writerows(rows)
 PY
-for table in "$work/membrane_alpha/good.steps.csv" "$work/no_contact_work.csv" "$work/half_external_work.csv"; do
+for table in "$work/membrane_alpha/good.steps.csv" "$work/no_contact_work.csv" "$work/half_external_work.csv" \
+    "$work/late_contact_work.csv"; do
   $check "$table" 1e-6 > "$work/control.log" && fail "control: the checker passed $table"
   grep -q "newmark_energy - newmark_energy(0) - external_work - contact_work = " "$work/control.log" ||
     { cat "$work/control.log"; fail "control $table: another failure"; }
