@@ -24,8 +24,10 @@ core::ParameterList Newmark::getValidParameters() {
                   "\"trapezoidal\": the contact force acts in a step, like every force, averaged over the step's two "
                   "ends (the paper's; it gains energy where contact is released, README Known behaviour); "
                   "\"implicit\": only the step's new contact force acts in it, the previous one is left out of the "
-                  "predictors (Deuflhard, Krause, Ertel's contact-implicit Newmark step; needs Alpha = 1/2 and Beta = "
-                  "1/4, with which the contact never adds energy); costs a mass solve per step in contact",
+                  "predictors (Deuflhard, Krause, Ertel's contact-implicit Newmark step, with the predictor projection "
+                  "their contact-stabilised one; needs Alpha = 1/2 and Beta = 1/4, with which a fixed obstacle never "
+                  "adds energy); the multiplier is then alpha times the step equation's, a the physical acceleration; "
+                  "costs a mass solve per step in contact",
                   {"trapezoidal", "implicit"});
   return p;
 }

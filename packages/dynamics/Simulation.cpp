@@ -538,12 +538,13 @@ struct Simulation::Impl {
     auto massParams = deck.sublist("Linear Solver");
     massParams.set("Preconditioner", "Jacobi");
     auto solver = std::make_unique<solvers::LinearSolver>(massParams);
-    solver->setSystemName("the mass matrix M (initial data, contact stabilisation; always with Jacobi)");
+    solver->setSystemName("the mass matrix M (initial data, contact stabilisation, the implicit contact force's "
+                          "acceleration; always with Jacobi)");
     solver->setOperator(M, 0.0);
     return solver;
   }
   /// The mass solver of d, set up on first use: an adaptive step needs none (the transfer runs
-  /// its own Jacobi CG).
+  /// its own Jacobi CG) unless the contact stabilisation or the implicit contact force asks for it.
   solvers::LinearSolver& massSolver(Discretisation& d) {
     if (!d.massSolver) d.massSolver = massSolverOn(d.M);
     return *d.massSolver;
@@ -1281,7 +1282,13 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       vOverlap = std::make_unique<Vector>(d->assembler->overlapMap());
       aOverlap = std::make_unique<Vector>(d->assembler->overlapMap());
       d->assembler->toOverlap(*v, *vOverlap);
-      d->assembler->toOverlap(*a, *aOverlap);
+      if (implicitContact) {  // the physical acceleration: the contact force alpha = 1/2 times the equation's
+        Vector physical(a->getMap());
+        physical.update(0.5, *a, 0.5, *aCarried, 0.0);
+        d->assembler->toOverlap(physical, *aOverlap);
+      } else {
+        d->assembler->toOverlap(*a, *aOverlap);
+      }
     }
     written = I.energies(*d, *u, *v);
     if (step == 0) transferred = written;  // the initial state: nothing moved
@@ -1379,12 +1386,25 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       std::vector<RCP<Vector>> predictors = {Teuchos::rcp(new Vector(u->getMap())), Teuchos::rcp(new Vector(u->getMap()))};
       I.newmark->predictor(*u, *v, *aCarried, *predictors[0]);
       I.newmark->velocityPredictor(*v, *aCarried, *predictors[1]);
+      // The implicit contact force with the predictor projection (Deuflhard, Krause, Ertel's contact-
+      // stabilised step) projects u + k v only and adds (1/2 - beta) k^2 a back after the projection:
+      // projected, that term would be lost where the predictor meets the obstacle.
+      RCP<Vector> accelerationTerm;
+      if (implicitContact && I.newmark->stabilised) {
+        accelerationTerm = Teuchos::rcp(new Vector(u->getMap()));
+        accelerationTerm->update((0.5 - beta) * k * k, *aCarried, 0.0);
+      }
       if (n > 1 && meshes[n - 1] != d->forest && !meshes[n - 1]->sameCells(*d->forest)) {
         meshes[n - 1]->expand();
         auto next = I.build(meshes[n - 1], n);
         if (options.reportTransferEnergy)  // only to recover I_h u and I_h v
           predictors.push_back(Teuchos::rcp(new Vector(I.newmark->recoveryField(*v, *aCarried), Teuchos::Copy)));
+        if (accelerationTerm) predictors.push_back(accelerationTerm);  // moved along (I_h is linear), last
         I.transfer(*d, *next, options.interpolateTransfer, predictors, lambda, carried);
+        if (accelerationTerm) {
+          accelerationTerm = predictors.back();
+          predictors.pop_back();
+        }
         const auto previous = d->forest;
         d = std::move(next);
         if (options.compactMeshes && previous.use_count() > 1) previous->compact();  // still stored by the caller
@@ -1407,6 +1427,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       Vector& pred = *predictors[0];
       Vector F(owned), load(owned);
       double projectionSeconds = 0;  // contact work, booked as such
+      if (accelerationTerm) pred.update(-1.0, *accelerationTerm, 1.0);
       if (d->projection) {  // the predictor projected onto the admissible set in the mass norm
         auto& massSolver = I.massSolver(*d);  // its set-up on a new mesh is the preconditioner's phase
         const auto tP0 = std::chrono::steady_clock::now();
@@ -1419,6 +1440,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                              mu, pred, gapPred);
         projectionSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tP0).count();
       }
+      if (accelerationTerm) pred.update(1.0, *accelerationTerm, 1.0);
       const auto tA0 = std::chrono::steady_clock::now();
       {
         auto scope = I.timers.scope("assembly");
@@ -1474,10 +1496,12 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       }
       tEstimate = std::chrono::duration<double>(std::chrono::steady_clock::now() - tE0).count();
       I.newmark->update(pred, *predictors[1], *u, *v, *a);
+      double accelerationSeconds = 0;  // the implicit contact force's mass solve, booked as contact
       if (!implicitContact) {
         aCarried = a;
       } else {  // M^{-1} (f^n - K u^n) = a^n + M^{-1} B lambda / (beta k^2): without the step's contact force
         auto scope = I.timers.scope("contact");
+        const auto tM0 = std::chrono::steady_clock::now();
         aCarried = Teuchos::rcp(new Vector(a->getMap()));
         aCarried->assign(*a);
         if (d->coupling && std::any_of(lambda.begin(), lambda.end(), [](double l) { return l != 0.0; })) {
@@ -1487,6 +1511,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
           I.massSolver(*d).solve(contactForce, x);
           aCarried->update(1.0, x, 1.0);
         }
+        accelerationSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tM0).count();
       }
       if (options.reportWork) {  // (u^n - u^{n-1}) . (f^{n-1} + f^n) / 2, f^n = load / (beta k^2)
         Vector du(owned), mean(owned);
@@ -1505,7 +1530,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         }
       }
       writeOutputs(n, t, qr, std::chrono::duration<double>(tA1 - tA0).count(),
-                   std::chrono::duration<double>(tA2 - tA1).count() + projectionSeconds, tFree, freeIterations, extras);
+                   std::chrono::duration<double>(tA2 - tA1).count() + projectionSeconds + accelerationSeconds, tFree,
+                   freeIterations, extras);
       if (n % progress == 0 || n == nSteps) {
         const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         core::rootOut(rank) << std::defaultfloat << std::setprecision(6) << "  step " << n << "/" << nSteps

@@ -156,7 +156,8 @@ core::ParameterList ResidualEstimator::getValidParameters() {
                   "(F_h, phi), whose residuals carry the factor beta k^2 (on the membrane eta_* is about 1e-6, s0 1e-4 and s1 1e-2: s1 "
                   "dominates eta); \"physical\": the same terms divided by beta k^2 kappa (eta_*) and sqrt(beta k^2 kappa) (s0), "
                   "kappa the stiffness (Problem/Stiffness; elasticity: lambda + 2 mu), i.e. for the equation divided "
-                  "by beta k^2 kappa with the physical multiplier: eta_* and s0 in units of the displacement, "
+                  "by beta k^2 kappa with the step equation's multiplier divided by beta k^2 (the physical one; with Time "
+                  "Integration/Contact Force = implicit the reported multiplier is alpha times it): eta_* and s0 in units of the displacement, "
                   "whatever the units of force and length (s1 too, with S1 Length Scale a length of the problem), "
                   "and ordered as in the paper's Fig. 4.1 (s1 smallest)",
                   {"physical", "step"});
