@@ -864,7 +864,7 @@ signorini_add_driver_test(reproducible_arithmetic_ignores_belos_sublist EXIT 0
 # Data beyond the range of doubles: Belos meets a NaN residual, a solver failure about the data.
 signorini_add_driver_test(body_force_beyond_doubles EXIT 1
   ARGS --output-dir {OUT} --set "Problem/Body Force=1e200" ${decks}/good.xml
-  REGEX "solver failure: linear solver CG [+] Jacobi for the mass matrix M [(]initial data, contact stabilisation; always with Jacobi[)] stopped: a residual is not a number")
+  REGEX "solver failure: linear solver CG [+] Jacobi for the mass matrix M [(]initial data, contact stabilisation, the implicit contact force.s acceleration; always with Jacobi[)] stopped: a residual is not a number")
 # Density, stiffness and Young's modulus are held within 1e-100..1e100 (the solvers' squared norms
 # leave the doubles beyond; a density and stiffness of 1e-160 lost the initial velocity silently).
 signorini_add_driver_test(density_out_of_range EXIT 1
