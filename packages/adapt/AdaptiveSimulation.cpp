@@ -246,6 +246,21 @@ std::string AdaptiveSimulation::plan() const {
   os << sim_->numSteps() << " steps of k = " << t.get<double>("Time Step") << " to T = " << t.get<double>("Final Time")
      << "; the initial mesh: " << sim_->initialForest()->numGlobalCells() << " cells, " << sim_->initialUnknowns()
      << " unknowns\n";
+  os << "Newmark alpha = " << t.get<double>("Alpha") << ", beta = " << t.get<double>("Beta") << ", contact force "
+     << t.get<std::string>("Contact Force")
+     << (t.get<std::string>("Contact Force") == "trapezoidal" ? " (the paper's)" : " (Deuflhard, Krause, Ertel)")
+     << ", contact stabilisation " << t.get<std::string>("Contact Stabilisation") << "\n";
+  {
+    const auto& out = deck_.sublist("Output");
+    const auto& probes = out.sublist("Probes");
+    if (probes.numParams() > 0) {
+      os << "probes (" << out.get<std::string>("Probe Fields") << ", points of the undeformed body):";
+      for (auto it = probes.begin(); it != probes.end(); ++it)
+        os << (it == probes.begin() ? " " : ", ") << probes.name(it) << " at ("
+           << Teuchos::getValue<std::string>(probes.entry(it)) << ")";
+      os << "\n";
+    }
+  }
   {
     const int finer = a.get<std::string>("Strategy") == "none"
                           ? 0

@@ -634,8 +634,16 @@ signorini_add_driver_test(check_valid_deck EXIT 0
   REGEX "checking .*good[.]xml on 2 rank[(]s[)]" "good[.]xml is valid; the run would do:"
         "4 steps of k = 0[.]0025 to T = 0[.]01; the initial mesh: 16 cells, 25 unknowns"
         "Algorithm 5[.]1: 3 cycle[(]s[)], strategy bulk 50%"
+        "Newmark alpha = 0[.]5, beta = 0[.]5, contact force trapezoidal [(]the paper's[)], contact stabilisation none"
         # c k / h_min = 1 x 0.0025 / 0.25; two cycles after the first refine at most two levels
         "linear solver: CG [+] Jacobi on the initial mesh [(]Preconditioner = auto: c k / h_min = 0[.]01, up to 0[.]04 on meshes 2 levels finer; MueLu above 5[)]")
+# The plan names the probes and the implicit contact force.
+signorini_add_driver_test(check_names_probes_and_scheme EXIT 0
+  ARGS --check --output-dir {OUT} --set "Output/Probes/middle=0.5, 0.5" --set "Output/Probes/edge=1, 0.25"
+       --set "Output/Probe Fields=u, v" --set "Time Integration/Contact Force=implicit" --set "Time Integration/Beta=0.25"
+       ${decks}/good.xml
+  REGEX "probes [(]u, v, points of the undeformed body[)]: (middle at [(]0[.]5, 0[.]5[)], edge at [(]1, 0[.]25[)]|edge at [(]1, 0[.]25[)], middle at [(]0[.]5, 0[.]5[)])"
+        "Newmark alpha = 0[.]5, beta = 0[.]25, contact force implicit [(]Deuflhard, Krause, Ertel[)]")
 # The plan says where "auto" switches to MueLu (c k / h_min = 0.16 on the deck's mesh at
 # k = 0.04, 2.56 four levels finer; the threshold lowered to 1).
 signorini_add_driver_test(check_plan_muelu_on_finer_meshes EXIT 0
