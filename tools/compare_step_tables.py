@@ -11,14 +11,13 @@ largest difference of every column is printed; the counts too (dofs, active, ite
 within R of their largest value.
 Usage: compare_step_tables.py BASE_A BASE_B [--common-columns] [--rtol R]"""
 import argparse
-import csv
 import glob
 import math
 import os
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from tool_errors import ArgumentParser, InputError, fail, require_complete, require_file  # noqa: E402
+from tool_errors import ArgumentParser, InputError, fail, read_text_table  # noqa: E402
 
 ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
 ap.add_argument("base_a", help="output base of one run (folder/basename)")
@@ -39,29 +38,13 @@ def suffixes(base):
 
 
 def read(path):
-    """The table at path: its header and its rows as floats; one line (fail) for a table that is
+    """The table at path: its header, then its rows (texts); one line (fail) for a table that is
     missing, cut short, has rows of another length than the header or a cell that is not a number."""
     try:
-        require_file(path)
-        require_complete(path)  # also: empty
-        with open(path, newline="") as f:
-            table = list(csv.reader(f))
-    except OSError as e:
-        fail(f"{path}: {e.strerror}")
+        header, rows = read_text_table(path)
     except InputError as e:
         fail(e)
-    header, rows = table[0], table[1:]
-    if not rows:
-        fail(f"{path}: a header and no rows (a run writes at least step 0)")
-    for r, row in enumerate(rows, start=1):
-        if len(row) != len(header):
-            fail(f"{path}: row {r} has {len(row)} values, the header {len(header)} columns")
-        for name, value in zip(header, row):
-            try:
-                float(value)
-            except ValueError:
-                fail(f"{path}: row {r}, column {name}: '{value}' is not a number")
-    return table
+    return [header] + rows
 
 
 for base in (a, b):

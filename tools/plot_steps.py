@@ -29,31 +29,17 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from tool_errors import ArgumentParser, InputError, reporting, require_complete, require_file  # noqa: E402
+from tool_errors import (ArgumentParser, InputError, read_text_table, reporting, require_complete,  # noqa: E402
+                         require_file)
 
 
 def read_steps(path):
     """{column: [float]} of a step table, names as written ('probe:tip:v:y'); InputError for a
-    table that is missing, cut short, has no rows or a value that is not a number."""
-    require_file(path)
-    require_complete(path)  # also: empty
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    header, body = rows[0], rows[1:]
-    if not body:
-        raise InputError(f"{path}: no rows")
+    table that is missing, cut short, has no rows, a value that is not a number or no column t."""
+    header, rows = read_text_table(path)
     if "t" not in header:
         raise InputError(f"{path}: no column t: not a step table of signorini")
-    table = {name: [] for name in header}
-    for r, row in enumerate(body, start=1):
-        if len(row) != len(header):
-            raise InputError(f"{path}: row {r} has {len(row)} values, the header {len(header)} columns")
-        for name, value in zip(header, row):
-            try:
-                table[name].append(float(value))
-            except ValueError:
-                raise InputError(f"{path}: row {r}, column {name}: '{value}' is not a number") from None
-    return table
+    return {name: [float(row[c]) for row in rows] for c, name in enumerate(header)}
 
 
 def matching(table, pattern, path):

@@ -11,12 +11,14 @@ write output: <reason>', exit status 1), wherever the script prints; output into
   reporting(main)     runs main(); an InputError ends it with the one line
   ArgumentParser      argparse, its usage errors in one line (message, then the usage)
   read_table(path)    a CSV table of signorini (numpy structured array), checked complete
+  read_text_table(path)  a step table as (header, rows of texts), every cell a number, names as written
   require_complete_exodus(path)  an Exodus file as long as its header says (not cut short)
   exodus(path)        an Exodus file opened with netCDF4, checked complete
   require_unit_square(path, d)   the cells of an open Exodus file cover [0,1]^2 (a membrane run)
 """
 import argparse
 import atexit
+import csv
 import errno
 import os
 import signal
@@ -110,6 +112,31 @@ def require_complete(path):
         f.seek(-1, os.SEEK_END)
         if f.read(1) != b"\n":
             raise InputError(f"{path}: not a complete table: its last line has no line end (cut short)")
+
+
+def read_text_table(path):
+    """(header, rows) of the CSV table at path, the cells as written ('probe:tip:v:y' keeps its
+    colons); InputError for a table that is missing, cut short, has a header and no rows, rows of
+    another length than the header or a cell that is not a number."""
+    try:
+        require_file(path)
+        require_complete(path)  # also: empty
+        with open(path, newline="") as f:
+            table = list(csv.reader(f))
+    except OSError as e:
+        raise InputError(f"{path}: {e.strerror}") from None
+    header, rows = table[0], table[1:]
+    if not rows:
+        raise InputError(f"{path}: a header and no rows (a run writes at least step 0)")
+    for r, row in enumerate(rows, start=1):
+        if len(row) != len(header):
+            raise InputError(f"{path}: row {r} has {len(row)} values, the header {len(header)} columns")
+        for name, value in zip(header, row):
+            try:
+                float(value)
+            except ValueError:
+                raise InputError(f"{path}: row {r}, column {name}: '{value}' is not a number") from None
+    return header, rows
 
 
 def read_table(path, columns=(), min_rows=1):

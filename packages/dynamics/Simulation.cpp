@@ -599,13 +599,18 @@ struct Simulation::Impl {
     solver.solve(b, out);
   }
 
+  /// out = scale (f(t), phi) + scale (Neumann data at t, phi): the loads on d [force, times scale].
+  void assembleLoads(const Discretisation& d, double t, double scale, Vector& out) const {
+    d.assembler->assembleLoad(problem->bodyForce, t, scale, out);
+    d.assembler->addBoundaryLoad(problem->neumannData, t, problem->neumannMask, scale, out);
+  }
+
   /// Initial state on d: u0, v0 projected, a0 from (rho a0, phi) + a(u0, phi) = (f(0), phi) + Neumann.
   void initialState(Discretisation& d, Vector& u, Vector& v, Vector& a) {
     projectL2(d, problem->initialDisplacement, u);
     projectL2(d, problem->initialVelocity, v);
     Vector rhs(d.assembler->ownedMap()), Ku(d.assembler->ownedMap());
-    d.assembler->assembleLoad(problem->bodyForce, 0.0, 1.0, rhs);
-    d.assembler->addBoundaryLoad(problem->neumannData, 0.0, problem->neumannMask, 1.0, rhs);
+    assembleLoads(d, 0.0, 1.0, rhs);
     core::apply(*d.K, u, Ku);
     rhs.update(-1.0, Ku, 1.0);
     a.putScalar(0.0);
@@ -1255,8 +1260,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       SIGNORINI_ASSERT(m == meshes[0], "PassOptions::reportWork needs one mesh for every step");
     uPrevious = std::make_unique<Vector>(d->assembler->ownedMap());
     loadPrevious = std::make_unique<Vector>(d->assembler->ownedMap());
-    d->assembler->assembleLoad(I.problem->bodyForce, 0.0, 1.0, *loadPrevious);
-    d->assembler->addBoundaryLoad(I.problem->neumannData, 0.0, I.problem->neumannMask, 1.0, *loadPrevious);
+    I.assembleLoads(*d, 0.0, 1.0, *loadPrevious);
     if (d->coupling) contactPrevious = d->coupling->applyTranspose(*u);
   }
 
@@ -1282,9 +1286,10 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       vOverlap = std::make_unique<Vector>(d->assembler->overlapMap());
       aOverlap = std::make_unique<Vector>(d->assembler->overlapMap());
       d->assembler->toOverlap(*v, *vOverlap);
-      if (implicitContact) {  // the physical acceleration: the contact force alpha = 1/2 times the equation's
+      if (implicitContact) {  // the physical acceleration: the contact force alpha times the equation's
+        const double alpha = I.newmark->alpha;
         Vector physical(a->getMap());
-        physical.update(0.5, *a, 0.5, *aCarried, 0.0);
+        physical.update(alpha, *a, 1 - alpha, *aCarried, 0.0);
         d->assembler->toOverlap(physical, *aOverlap);
       } else {
         d->assembler->toOverlap(*a, *aOverlap);
@@ -1446,8 +1451,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         auto scope = I.timers.scope("assembly");
         // F^n = beta k^2 (f(t_n) + Neumann) + M (u + k v + (1/2 - beta) k^2 a)
         core::apply(*d->M, pred, F);
-        d->assembler->assembleLoad(I.problem->bodyForce, t, beta * k * k, load);
-        d->assembler->addBoundaryLoad(I.problem->neumannData, t, I.problem->neumannMask, beta * k * k, load);
+        I.assembleLoads(*d, t, beta * k * k, load);
         F.update(1.0, load, 1.0);
         d->assembler->zeroDirichlet(F);
       }
