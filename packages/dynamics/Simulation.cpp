@@ -271,6 +271,7 @@ struct Discretisation {
   std::unique_ptr<solvers::ContactQP> projection;  ///< predictor projection (contact stabilisation)
   double courant = 0;
   bool lumpedMass = false;
+  std::vector<char> lumpAt;  ///< the unknowns whose mass couplings M holds on its diagonal (empty: none)
   long builtAtStep = 0;  ///< identifies the mesh in the Exodus series
   long id = 0;           ///< unique among all discretisations of the run (StepView::meshId)
 };
@@ -424,9 +425,9 @@ struct Simulation::Impl {
       auto scope = timers.scope("assembly");
       d->assembler = makeAssembler(*d->mesh);
       const double k = newmark->timeStep;
-      const std::vector<char> lump = lumpedUnknowns(*d->assembler);
+      d->lumpAt = lumpedUnknowns(*d->assembler);
       d->lumpedMass = lumpsMass();  // the same on every rank, with or without contact nodes
-      auto matrices = d->assembler->assembleStepMatrices(newmark->beta * k * k, *problem, lump);
+      auto matrices = d->assembler->assembleStepMatrices(newmark->beta * k * k, *problem, d->lumpAt);
       d->M = matrices.M;
       d->K = matrices.K;
       d->A = matrices.A;
@@ -1178,17 +1179,31 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                       "contact_force", "max_lambda", "min_lambda", "min_gap", "max_complementarity",
                                       "time_assembly", "time_contact", "time_output", "time_unconstrained",
                                       "time_remesh", "time_estimate", "cells"};
+  const int nc = I.problem->components();
+  // The supports' force on the body (the rows that the Dirichlet elimination drops), after contact_force.
+  const bool reportReaction = (I.problem->dirichletMask | I.problem->componentDirichletMask[0] |
+                               I.problem->componentDirichletMask[1]) != 0;
+  const size_t reactionColumn = std::find(columns.begin(), columns.end(), "contact_force") - columns.begin() + 1;
+  if (reportReaction) {
+    const std::vector<std::string> names = nc == 1 ? std::vector<std::string>{"reaction_force"}
+                                                   : std::vector<std::string>{"reaction_force_x", "reaction_force_y"};
+    columns.insert(columns.begin() + static_cast<std::ptrdiff_t>(reactionColumn), names.begin(), names.end());
+  }
   const bool measureOverhead = outParams.get<bool>("Measure Contact Overhead");
   if (measureOverhead) columns.push_back("unconstrained_iterations");  // the benchmark unit's iterations
   const size_t timeOutputColumn = std::find(columns.begin(), columns.end(), "time_output") - columns.begin();
-  const int nc = I.problem->components();
   columns.insert(columns.end(), I.probeColumns.begin(), I.probeColumns.end());
   if (I.problem->exactSolution) {
     columns.push_back("error_l2");
     columns.push_back("error_h1");
   }
-  if (options.reportWork)
+  if (options.reportWork) {
     for (const char* c : {"external_work", "contact_work"}) columns.push_back(c);
+    if (nc == 1)
+      columns.push_back("momentum");
+    else
+      for (const char* c : {"momentum_x", "momentum_y"}) columns.push_back(c);
+  }
   if (options.reportTransferEnergy)
     for (const char* c : {"energy_transferred", "kinetic_energy_transferred"}) columns.push_back(c);
   columns.insert(columns.end(), options.extraColumns.begin(), options.extraColumns.end());
@@ -1255,6 +1270,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   double workExternal = 0, workContact = 0, largestEnergy = 0, initialEnergy = 0;
   std::unique_ptr<Vector> uPrevious, loadPrevious;
   std::vector<double> contactPrevious, lambdaPrevious;
+  // The momentum sum_j m_j v_j of each component, m_j = int rho phi_j (PassOptions::reportWork).
+  std::vector<std::unique_ptr<Vector>> momentumWeights;
   if (options.reportWork) {
     for (const auto& m : meshes)
       SIGNORINI_ASSERT(m == meshes[0], "PassOptions::reportWork needs one mesh for every step");
@@ -1262,6 +1279,14 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     loadPrevious = std::make_unique<Vector>(d->assembler->ownedMap());
     I.assembleLoads(*d, 0.0, 1.0, *loadPrevious);
     if (d->coupling) contactPrevious = d->coupling->applyTranspose(*u);
+    for (int c = 0; c < nc; ++c) {
+      std::ostringstream density;
+      density << std::setprecision(17);
+      for (int i = 0; i < nc; ++i) density << (i ? ", " : "") << (i == c ? I.problem->density : 0.0);
+      momentumWeights.push_back(std::make_unique<Vector>(d->assembler->ownedMap()));
+      d->assembler->assembleLoad(core::ExpressionList(density.str(), "Problem/Density", nc), 0.0, 1.0,
+                                 *momentumWeights.back());
+    }
   }
 
   double tRemesh = 0, tEstimate = 0;  // of the current step
@@ -1282,7 +1307,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     d->assembler->toOverlap(*u, uOverlap);
     const bool writeExodus = exodus && (step % exodusInterval == 0 || step == nSteps);
     std::unique_ptr<Vector> vOverlap, aOverlap;  // for the Exodus file and the probes of v and a
-    if (writeExodus || (I.probeFields > 1 && !I.probes.empty())) {
+    if (writeExodus || (I.probeFields > 1 && !I.probes.empty()) || reportReaction) {
       vOverlap = std::make_unique<Vector>(d->assembler->overlapMap());
       aOverlap = std::make_unique<Vector>(d->assembler->overlapMap());
       d->assembler->toOverlap(*v, *vOverlap);
@@ -1305,6 +1330,11 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                lambdaToPhysical * qr.maxLambda, lambdaToPhysical * qr.minLambda, qr.minGap,
                                lambdaToPhysical * qr.maxComplementarity, tAssembly,
                                tContact, 0.0, tFree, tRemesh, tEstimate, double(d->forest->numGlobalCells())};
+    if (reportReaction) {  // sum_d (M a + K u - f + B lambda)_d over the Dirichlet rows, per component
+      auto reaction = d->assembler->dirichletRowSums(uOverlap, *aOverlap, *I.problem, t, d->lumpAt);
+      if (d->coupling) reaction[nc == 1 ? 0 : I.problem->contactComponent] += lambdaToPhysical * d->coupling->heldShare(lambda);
+      row.insert(row.begin() + static_cast<std::ptrdiff_t>(reactionColumn), reaction.begin(), reaction.end());
+    }
     if (measureOverhead) row.push_back(freeIterations);
     const Vector* const fields[] = {&uOverlap, vOverlap.get(), aOverlap.get()};  // u, v, a (v, a may be null)
     for (const auto& p : I.probes)
@@ -1326,6 +1356,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       if (step == 0) initialEnergy = newmarkEnergy;
       row.push_back(workExternal);
       row.push_back(workContact);
+      for (const auto& m : momentumWeights) row.push_back(core::dot(*m, *v));
     }
     if (options.reportTransferEnergy) {
       row.push_back(transferred.first + transferred.second);

@@ -74,6 +74,16 @@ class Assembler {
   /// Component \p c of u_h at a point (every rank gets the value); NaN outside the mesh.
   virtual double evaluateComponent(const Vector& uOverlap, double x, double y, int c) const = 0;
 
+  /// For each component c, the sum over its Dirichlet unknowns d of the rows that the elimination
+  /// drops: sum_d (M a + K u - f(t) - q(t))_d [force], with the problem's body force f and Neumann
+  /// data q, mass couplings lumped at \p lumpAt as in assembleSystem(). With the contact force's
+  /// share of those rows added, it is the force that the supports exert on the body (the reaction);
+  /// \p uOverlap and \p aOverlap are u and a on the overlap unknowns. Collective; the bits do not
+  /// depend on the partition.
+  virtual std::vector<double> dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap,
+                                               const ProblemData& problem, double t,
+                                               const std::vector<char>& lumpAt) const = 0;
+
   /// M (lumped at \p lumpAt) and K of assembleSystem(1, 0, ...) and assembleSystem(0, 1, ...); an
   /// assembler may compute both in one pass over the cells.
   virtual std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> assembleMassAndStiffness(const ProblemData& problem,

@@ -277,6 +277,11 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
     const double dx = be.x[1][0] - be.x[0][0], dy = be.x[1][1] - be.x[0][1];
     return 0.5 * unknowns.sign * std::sqrt(dx * dx + dy * dy);
   };
+  for (size_t k = 0; k < localIds.size(); ++k) {
+    const auto& be = bedges[localIds[k]];
+    const int held = (dirichlet[row(be.node[0])] ? 1 : 0) + (dirichlet[row(be.node[1])] ? 1 : 0);
+    if (held) heldEdges_.push_back({localEdgeSegment_[localIds[k]], held * halfLength(be)});
+  }
   if (comm_->getSize() == 1) {
     // B is summed into local CRS arrays (columns: the segments) and built from them.
     const size_t nRows = overlap->getNodeNumElements();
@@ -446,6 +451,14 @@ std::vector<double> ContactCoupling::canonicalSums(int n, const std::vector<std:
   std::vector<double> out(static_cast<size_t>(n), 0.0);
   for (const auto& [i, v] : all) out[static_cast<size_t>(i)] += v;
   return out;
+}
+
+double ContactCoupling::heldShare(const std::vector<double>& lambda) const {
+  double sum = 0;
+  core::reproducibleSums(*comm_, 1, heldEdges_.size(),
+                         [&](std::size_t k, double* out) { out[0] = heldEdges_[k].second * lambda[heldEdges_[k].first]; },
+                         &sum);
+  return sum;
 }
 
 std::vector<double> ContactCoupling::applyTranspose(const Vector& u) const {

@@ -61,6 +61,10 @@ class ContactCoupling {
 
   /// y (owned) = scale * B lambda (+ y if accumulate).
   void apply(const std::vector<double>& lambda, Vector& y, double scale = 1.0, bool accumulate = false) const;
+  /// The part of B lambda in the rows of the Dirichlet unknowns, which B leaves out: sum over the
+  /// contact edges that end at a Dirichlet unknown of sign |E| / 2 lambda_j (a contact edge next to a
+  /// clamped corner). The supports carry it; it belongs to their reaction. Replicated; collective.
+  double heldShare(const std::vector<double>& lambda) const;
   /// B^T u for an owned vector u; the result is replicated on every rank.
   std::vector<double> applyTranspose(const Vector& u) const;
   /// gbar_j = int_{E_j} g(., t) ds (3-point Gauss per fine edge), replicated.
@@ -100,6 +104,7 @@ class ContactCoupling {
   std::vector<std::array<double, 2>> midpoint_;
   std::vector<int> edgeCount_;
   std::vector<int> localEdgeSegment_;
+  std::vector<std::pair<int, double>> heldEdges_;  // (segment, sign |E| / 2 per Dirichlet end) of local contact edges
   std::vector<std::array<double, 4>> edges_;  // all contact edges (x0, y0, x1, y1), replicated
   std::vector<int> edgeSegment_;              // segment of each replicated edge
   Kokkos::View<double* [4], DeviceType> edgeCoords_;  // the same, for kernels

@@ -9,6 +9,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/fem/AssemblyTools.hpp"
+#include "signorini/fem/DirichletRowSums.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/core/MpiComm.hpp"
 #include "signorini/fem/Q1Kernels.hpp"
@@ -41,7 +42,48 @@ void cornerValues(const mesh::Q1Mesh& mesh, const View& uh, LO e, int c, double 
   }
 }
 
+/// The element mass (times cm, one block for both components) and stiffness (Lame parameters cl and
+/// cmu; Ke[2 a + i][2 b + j]) of the cell with corners Xe, by 2 x 2 Gauss.
+KOKKOS_INLINE_FUNCTION void elasticElementMatrices(const double Xe[4][2], double cm, double cl, double cmu,
+                                                   double Me[4][4], double Ke[8][8]) {
+  for (int a = 0; a < 4; ++a)
+    for (int b = 0; b < 4; ++b) Me[a][b] = 0.0;
+  for (int a = 0; a < 8; ++a)
+    for (int b = 0; b < 8; ++b) Ke[a][b] = 0.0;
+  for (int q = 0; q < 4; ++q) {
+    double N[4], g[2][4];
+    const double w =
+        kGauss2Weight * kGauss2Weight * q1Gradients(Xe, gauss2Point(q & 1), gauss2Point(q >> 1), N, g[0], g[1]);
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) {
+        Me[a][b] += w * cm * N[a] * N[b];
+        const double dot = g[0][a] * g[0][b] + g[1][a] * g[1][b];
+        for (int i = 0; i < 2; ++i)
+          for (int j = 0; j < 2; ++j)
+            Ke[2 * a + i][2 * b + j] += w * (cl * g[i][a] * g[j][b] + cmu * (g[j][a] * g[i][b] + (i == j ? dot : 0.0)));
+      }
+  }
+}
+
 }  // namespace
+
+std::vector<double> ElasticityAssembler::dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap,
+                                                          const ProblemData& problem, double t,
+                                                          const std::vector<char>& lumpAt) const {
+  DirichletRowsInput in;
+  in.mesh = &mesh_;
+  in.components = 2;
+  in.held = &dirichlet_;
+  in.lumped = &lumpAt;
+  const double rho = problem.density, cl = lambda_, cmu = mu_;
+  in.element = [rho, cl, cmu](const double X[4][2], double Me[4][4], double Ke[8][8]) {
+    elasticElementMatrices(X, rho, cl, cmu, Me, Ke);
+  };
+  in.bodyForce = &problem.bodyForce;
+  in.neumann = &problem.neumannData;
+  in.neumannMask = problem.neumannMask;
+  return sumDirichletRows(in, uOverlap, aOverlap, t);
+}
 
 std::vector<char> ElasticityAssembler::dirichletUnknowns(const mesh::Q1Mesh& mesh, const ProblemData& problem) {
   const auto all = mesh.nodesOnSegments(problem.dirichletMask);
@@ -84,22 +126,9 @@ RCP<CrsMatrix> ElasticityAssembler::assembleOperator(double massCoeff, double st
     Kokkos::parallel_for(
         "signorini::assembleElasticity", Kokkos::RangePolicy<ExecSpace>(0, mesh_.numLocalCells()),
         KOKKOS_LAMBDA(const LO e) {
-          double Xe[4][2], Ke[8][8] = {}, Me[4][4] = {};
+          double Xe[4][2], Ke[8][8], Me[4][4];
           for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
-          for (int q = 0; q < 4; ++q) {
-            double N[4], g[2][4];
-            const double w = kGauss2Weight * kGauss2Weight *
-                             q1Gradients(Xe, gauss2Point(q & 1), gauss2Point(q >> 1), N, g[0], g[1]);
-            for (int a = 0; a < 4; ++a)
-              for (int b = 0; b < 4; ++b) {
-                Me[a][b] += w * cm * N[a] * N[b];
-                const double dot = g[0][a] * g[0][b] + g[1][a] * g[1][b];
-                for (int i = 0; i < 2; ++i)
-                  for (int j = 0; j < 2; ++j)
-                    Ke[2 * a + i][2 * b + j] +=
-                        w * (cl * g[i][a] * g[j][b] + cmu * (g[j][a] * g[i][b] + (i == j ? dot : 0.0)));
-              }
-          }
+          elasticElementMatrices(Xe, cm, cl, cmu, Me, Ke);
           for (int a = 0; a < 4; ++a)
             for (int ka = 0; ka < 2; ++ka) {
               const LO na = dofs(e, a, ka);
@@ -114,7 +143,14 @@ RCP<CrsMatrix> ElasticityAssembler::assembleOperator(double massCoeff, double st
                     const double wab = wts(e, a, ka) * wts(e, b, kb);
                     for (int j = 0; j < 2; ++j) {
                       const LO unknown = 2 * nb + j;
-                      if (dir(unknown)) continue;
+                      if (dir(unknown)) {  // eliminated; lumped before the elimination, its mass coupling stays on the diagonal
+                        if (i == j && (lump(row) || lump(unknown))) {
+                          LO diag = toCol(row);
+                          double m = wab * Me[a][b];
+                          local.sumIntoValues(row, &diag, 1, &m, false, kAtomicScatter);
+                        }
+                        continue;
+                      }
                       LO col = toCol(unknown);
                       double v = wab * Ke[2 * a + i][2 * b + j];
                       if (i == j) {

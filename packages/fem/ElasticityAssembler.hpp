@@ -57,6 +57,8 @@ class ElasticityAssembler : public Assembler {
   std::pair<double, double> errorNorms(const Vector& uOwned, const core::ExpressionList& exact,
                                        double t) const override;
   double evaluateComponent(const Vector& uOverlap, double x, double y, int c) const override;
+  std::vector<double> dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap, const ProblemData& problem,
+                                       double t, const std::vector<char>& lumpAt) const override;
 
   /// The three rigid body modes (translations in x and y, rotation about the origin of the
   /// coordinates' centroid) as an owned multivector: MueLu's near-nullspace for elasticity.

@@ -8,6 +8,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/fem/AssemblyTools.hpp"
+#include "signorini/fem/DirichletRowSums.hpp"
 #include "signorini/fem/EntrySums.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/core/MpiComm.hpp"
@@ -127,9 +128,13 @@ void Q1Assembler::cellContributions(double cm, double ck, const std::vector<char
         for (int b = 0; b < 4; ++b)
           for (int kb = 0; kb < 2; ++kb) {
             const LO dof = dofs(e, b, kb);
-            if (dof < 0 || dirichlet_[dof]) continue;
+            if (dof < 0) continue;
             const double wab = wts(e, a, ka) * wts(e, b, kb);
             const bool lumped = anyLump && row != dof && (lumpMassAt[row] || lumpMassAt[dof]);
+            if (dirichlet_[dof]) {  // as assembleInto: a lumped coupling stays on the diagonal
+              if (lumped) mass->push_back({row, overlap->getGlobalElement(row), wab * Me[a][b]});
+              continue;
+            }
             mass->push_back({row, overlap->getGlobalElement(lumped ? row : dof), wab * Me[a][b]});
             stiffness->push_back({row, overlap->getGlobalElement(dof), wab * Ke[a][b]});
           }
@@ -176,8 +181,12 @@ void Q1Assembler::assembleInto(const LocalMatrix& one, const LocalMatrix& two, d
             for (int b = 0; b < 4; ++b)
               for (int kb = 0; kb < 2; ++kb) {
                 const LO dof = dofs(e, b, kb);
-                if (dof < 0 || dir(dof)) continue;
+                if (dof < 0) continue;
                 const double wab = wts(e, a, ka) * wts(e, b, kb);
+                if (dir(dof)) {  // eliminated; lumped before the elimination, its mass coupling stays on the diagonal
+                  if (anyLump && (lump(row) || lump(dof))) add(v1, offset(toCol(row)), wab * Me[a][b]);
+                  continue;
+                }
                 const auto at = offset(toCol(dof));
                 const double m = wab * Me[a][b];
                 // lumped: the mass coupling moves to the diagonal
@@ -325,6 +334,26 @@ void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned 
     return;
   }
   addExported(overlap, *exporter_, out, true);
+}
+
+std::vector<double> Q1Assembler::dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap,
+                                                  const ProblemData& problem, double t,
+                                                  const std::vector<char>& lumpAt) const {
+  DirichletRowsInput in;
+  in.mesh = &mesh_;
+  in.held = &dirichlet_;
+  in.lumped = &lumpAt;
+  const double rho = problem.density, kappa = problem.stiffness;
+  in.element = [rho, kappa](const double X[4][2], double Me[4][4], double Ke[8][8]) {
+    double K4[4][4];
+    q1ElementMatrices(X, rho, kappa, Me, K4);
+    for (int a = 0; a < 4; ++a)
+      for (int b = 0; b < 4; ++b) Ke[a][b] = K4[a][b];
+  };
+  in.bodyForce = &problem.bodyForce;
+  in.neumann = &problem.neumannData;
+  in.neumannMask = problem.neumannMask;
+  return sumDirichletRows(in, uOverlap, aOverlap, t);
 }
 
 void Q1Assembler::zeroDirichlet(Vector& v) const {

@@ -54,10 +54,13 @@ class Q1Assembler : public Assembler {
   double evaluateComponent(const Vector& uOverlap, double x, double y, int) const override {
     return evaluate(uOverlap, x, y);
   }
+  std::vector<double> dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap, const ProblemData& problem,
+                                       double t, const std::vector<char>& lumpAt) const override;
   /// massCoeff * M_rho + stiffCoeff * K_kappa with M_ij = int rho phi_i phi_j and
   /// K_ij = int kappa grad phi_i . grad phi_j; Dirichlet rows/columns replaced by the identity.
   /// With \p lumpMassAt (overlap flags, optional), mass couplings of the flagged nodes are moved to
-  /// the diagonal (row sums kept): lumped mass on the contact boundary against chattering (DESIGN 1.6).
+  /// the diagonal (row sums kept, couplings to Dirichlet nodes included: lumped before the elimination):
+  /// lumped mass on the contact boundary against chattering (DESIGN 1.6).
   RCP<CrsMatrix> assembleOperator(double massCoeff, double stiffCoeff, double rho, double kappa,
                                   const std::vector<char>& lumpMassAt = {}) const;
   /// M_rho (lumped at \p lumpAt) and K_kappa in one pass over the cells (same values as

@@ -343,9 +343,23 @@ Q1Mesh::Q1Mesh(const Forest& forest, const BoundarySegments& segments, RCP<const
 }
 
 LO Q1Mesh::locate(double x, double y, double& s, double& r) const {
+  for (LO e = 0; e < numCells_; ++e)
+    if (cellContains(e, x, y, s, r)) return e;
+  return -1;
+}
+
+std::vector<Q1Mesh::CellPoint> Q1Mesh::locateAll(double x, double y) const {
+  std::vector<CellPoint> found;
+  double s, r;
+  for (LO e = 0; e < numCells_; ++e)
+    if (cellContains(e, x, y, s, r)) found.push_back({e, s, r});
+  return found;
+}
+
+bool Q1Mesh::cellContains(LO e, double x, double y, double& s, double& r) const {
   const auto& X = cornerCoordsHost;
   const double tol = 1e-10;
-  for (LO e = 0; e < numCells_; ++e) {
+  {
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
     double Xe[4][2];
     for (int c = 0; c < 4; ++c)
@@ -354,7 +368,7 @@ LO Q1Mesh::locate(double x, double y, double& s, double& r) const {
         lo[d] = std::min(lo[d], Xe[c][d]), hi[d] = std::max(hi[d], Xe[c][d]);
       }
     const double pad = 1e-9 * (hi[0] - lo[0] + hi[1] - lo[1]);
-    if (x < lo[0] - pad || x > hi[0] + pad || y < lo[1] - pad || y > hi[1] + pad) continue;
+    if (x < lo[0] - pad || x > hi[0] + pad || y < lo[1] - pad || y > hi[1] + pad) return false;
     s = 0.5, r = 0.5;
     for (int it = 0; it < 30; ++it) {  // Newton on the bilinear map
       double N[4], ds[4], dr[4];
@@ -374,9 +388,8 @@ LO Q1Mesh::locate(double x, double y, double& s, double& r) const {
       r -= (-c * fx + a * fy) / det;
       if (std::abs(fx) + std::abs(fy) < 1e-14 * (hi[0] - lo[0] + hi[1] - lo[1])) break;
     }
-    if (s >= -tol && s <= 1 + tol && r >= -tol && r <= 1 + tol) return e;
+    return s >= -tol && s <= 1 + tol && r >= -tol && r <= 1 + tol;
   }
-  return -1;
 }
 
 std::vector<char> Q1Mesh::nodesOnSegments(unsigned mask) const {

@@ -112,11 +112,21 @@ class Q1Mesh {
   /// Local cell containing (x, y) and the point's reference coordinates (s, r) in [0,1]^2; -1 if
   /// no local cell contains it.
   LO locate(double x, double y, double& s, double& r) const;
+  /// A local cell that contains a point, with the point's reference coordinates in it.
+  struct CellPoint {
+    LO cell;      ///< local cell id
+    double s, r;  ///< reference coordinates in [0,1]^2 (to 1e-10)
+  };
+  /// Every local cell whose closure contains (x, y) (up to four; several where the point lies on
+  /// cell edges), in local order.
+  std::vector<CellPoint> locateAll(double x, double y) const;
   /// Flags (1 / 0, one char per node) on the overlap map for the nodes that lie on a boundary edge whose
   /// segment mask intersects \p mask, consistent across ranks. Collective.
   std::vector<char> nodesOnSegments(unsigned mask) const;
 
  private:
+  /// Whether the closure of local cell \p e contains (x, y) (to 1e-10 in reference coordinates), and where (s, r).
+  bool cellContains(LO e, double x, double y, double& s, double& r) const;
   Numbering numbering_ = Numbering::lnodes;
   RCP<const Comm> comm_;
   RCP<const Map> ownedMap_, overlapMap_;

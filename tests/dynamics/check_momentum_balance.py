@@ -1,0 +1,89 @@
+"""Checks a step table's momentum balance (runs on one mesh: the momentum columns; the reaction_force
+columns of a problem with Dirichlet conditions).
+
+Summing the rows of the full system M a^n + K u^n = f^n - B lambda^n + r^n over all unknowns of
+component c (the partition of unity: the column sums of M are m_j = int rho phi_j and those of K
+vanish, constants and translations being in its kernel) gives
+    sum_j m_j a_j^n = F_c(t_n) + contact_c^n + reaction_c^n,
+where reaction^n is the sum of the rows the Dirichlet elimination drops (reaction_force), contact
+the contact force's resultant (contact_force along the contact direction) and F the applied loads'
+resultant. Newmark's (3.2), v^n = v^{n-1} + k ((1 - alpha) a^{n-1} + alpha a^n), then gives, step by
+step and up to the solves' tolerance,
+    momentum(n) - momentum(n-1) = k ((1 - alpha) G(n-1) + alpha G(n)),  G = F + contact + reaction.
+
+Usage: check_momentum_balance.py STEPS_CSV TOL [--alpha A] [--load EXPR ...] [--contact C:S] [--free]
+  --load EXPR: the applied loads' resultant of each component as a Python expression of t (math's
+    names allowed), one per component (default 0);
+  --contact C:S: the contact force acts on component C (0 or 1) with sign S (+1 or -1; default 0:+1);
+  --free: a body without Dirichlet conditions, whose table has no reaction_force columns (they are 0);
+  TOL: relative to the largest |k G| of the run.
+Exit 0 when every step balances to TOL, 1 otherwise (also without the columns, with fewer than two
+steps, or with a value that is not a finite number)."""
+import argparse
+import csv
+import math
+import sys
+
+parser = argparse.ArgumentParser()
+parser.add_argument("table")
+parser.add_argument("tol", type=float)
+parser.add_argument("--alpha", type=float, default=0.5)
+parser.add_argument("--load", action="append", default=[])
+parser.add_argument("--contact", default="0:+1")
+parser.add_argument("--free", action="store_true")
+args = parser.parse_args()
+with open(args.table, newline="") as f:
+    rows = list(csv.DictReader(f))
+if len(rows) < 2:
+    print(f"FAIL: {args.table}: fewer than two steps")
+    sys.exit(1)
+header = rows[0].keys()
+suffixes = ["_x", "_y"] if "momentum_x" in header else [""]
+nc = len(suffixes)
+reactions = [f"reaction_force{s}" for s in suffixes]
+needed = ["t", "contact_force"] + [f"momentum{s}" for s in suffixes] + ([] if args.free else reactions)
+missing = [n for n in needed if n not in header]
+if missing:
+    print(f"FAIL: {args.table}: no column {', '.join(missing)}")
+    sys.exit(1)
+if args.free and any(n in header for n in reactions):
+    print(f"FAIL: {args.table}: --free, but the table has reaction_force columns")
+    sys.exit(1)
+try:
+    values = {n: [float(r[n]) for r in rows] for n in needed}
+except ValueError as e:
+    print(f"FAIL: {args.table}: {e}")
+    sys.exit(1)
+if not all(math.isfinite(x) for column in values.values() for x in column):
+    print(f"FAIL: {args.table}: a value that is not a finite number")
+    sys.exit(1)
+loads = args.load + ["0"] * (nc - len(args.load))
+if len(loads) != nc:
+    print(f"FAIL: {len(args.load)} --load expressions for {nc} component(s)")
+    sys.exit(1)
+component, sign = args.contact.split(":")
+component, sign = int(component), float(sign)
+t = values["t"]
+k = t[1] - t[0]
+alpha = args.alpha
+worst = (0.0, None)
+scale = 0.0
+residuals = []
+for c, s in enumerate(suffixes):
+    load = [eval(loads[c], vars(math), {"t": tn}) for tn in t]
+    reaction = [0.0] * len(rows) if args.free else values[f"reaction_force{s}"]
+    G = [load[n] + reaction[n] + (sign * values["contact_force"][n] if c == component else 0.0)
+         for n in range(len(rows))]
+    scale = max(scale, max(abs(k * g) for g in G))
+    P = values[f"momentum{s}"]
+    for n in range(1, len(rows)):
+        residuals.append((P[n] - P[n - 1] - k * ((1 - alpha) * G[n - 1] + alpha * G[n]), rows[n]["step"], f"momentum{s}"))
+scale = scale or 1.0
+r, step, name = max(residuals, key=lambda x: abs(x[0]))
+if not abs(r) / scale <= args.tol:
+    print(f"FAIL: {args.table}: step {step}: {name} changed by k ((1 - alpha) G(n-1) + alpha G(n)) "
+          f"{'+' if r >= 0 else '-'} {abs(r):.3g}, {abs(r) / scale:.3g} of the largest |k G| {scale:.6g} "
+          f"(tolerance {args.tol:g})")
+    sys.exit(1)
+print(f"{args.table}: largest momentum imbalance {abs(r) / scale:.2g} of the largest |k G| {scale:.6g} "
+      f"(step {step}, {name})")

@@ -1,0 +1,119 @@
+#!/usr/bin/env bash
+# The step tables' reaction forces (reaction_force: the rows that the Dirichlet elimination drops)
+# and momentum (runs on one mesh) satisfy the momentum balance of the Newmark scheme in every step
+# (check_momentum_balance.py: momentum(n) - momentum(n-1) = k ((1 - alpha) G(n-1) + alpha G(n)),
+# G = applied loads + contact force + reaction), to the solves' tolerance:
+#  - the membrane through contact (clamped left, contact right), also with Alpha = 0.6;
+#  - the membrane under a body force varying in time and space and a traction on its top edge,
+#    which ends at the clamped corner (the traction's share there is the support's);
+#  - the membrane clamped along its bottom with the contact on its right side, whose first segment
+#    ends at the clamped corner and is pressed (its contact force there is carried by the support:
+#    without that share the balance misses by 4.5% of the largest force), with consistent and with
+#    lumped boundary mass (the lumped rows keep their couplings to the clamped corner);
+#  - the bar of paper Example 6.2 under its load on 2 ranks (elasticity, two components);
+#  - the block dropped onto the floor: no Dirichlet conditions, no reaction_force column;
+#  - a block hanging from its clamped top under its weight (no contact): the mean reaction over 600
+#    steps is its weight, 27173.7 N/m^3 x 0.005 m^2 = 135.87 N/m upwards;
+#  - controls: the Alpha = 0.6 table checked as Alpha = 1/2, a zeroed reaction_force, a reaction_force
+#    one step late and a halved momentum fail the checker;
+#  - adaptive runs have reaction_force but no momentum column.
+# Usage: momentum_balance.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
+# MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (cmake/SignoriniTesting.cmake).
+set -uo pipefail
+signorini=$1 src=$3 work=$4
+IFS='|' read -r -a launcher <<< "$2"
+py=/usr/bin/python3
+check="$py $src/tests/dynamics/check_momentum_balance.py"
+decks=$src/tests/driver/decks
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+run() {  # run NAME NP ARGS...: the run's folder is $work/NAME, its output $work/NAME.log
+  local name=$1 np=$2; shift 2
+  "${launcher[0]}" "${launcher[1]:--n}" "$np" "${launcher[@]:2}" "$signorini" --output-dir "$work/$name" "$@" > "$work/$name.log" 2>&1 ||
+    { cat "$work/$name.log"; fail "run $name"; }
+}
+membrane=(--set "Time Integration/Final Time=1.2" --set "Output/Write Exodus=false" "$decks/good.xml")
+corner=(--set "Mesh/Boundary Segments/clamped=bottom" --set "Problem/Obstacle=-0.05"
+        --set "Problem/Initial Velocity=-sin(pi*x/2)*sin(pi*y/2)")
+run membrane 1 "${membrane[@]}"
+run membrane_alpha 1 --set "Time Integration/Alpha=0.6" --set "Time Integration/Beta=0.4" "${membrane[@]}"
+run membrane_loaded 1 --set "Problem/Body Force=-2*sin(3*t)*x" --set "Mesh/Boundary Segments/loaded=top" \
+  --set "Problem/Neumann Segments=loaded" --set "Problem/Neumann Data=cos(t)*x" "${membrane[@]}"
+run corner 1 "${corner[@]}" "${membrane[@]}"
+run corner_lumped 1 "${corner[@]}" --set "Contact/Boundary Mass=lumped" "${membrane[@]}"
+run bar 2 --set "Adaptivity/Strategy=none" --set "Time Integration/Final Time=1e-3" --set "Output/Write Exodus=false" \
+  "$src/inputs/bar.xml"
+run block 1 "$decks/block-on-floor.xml"
+run hanging 1 --set "Problem/Initial Velocity=0, 0" --set "Problem/Contact Segments=" --set "Problem/Obstacle=" \
+  --set "Mesh/Boundary Segments/floor=top" --set "Problem/Dirichlet Segments=floor" \
+  --set "Problem/Body Force=0, -27173.7" --set "Time Integration/Final Time=6e-3" "$decks/block-on-floor.xml"
+run adaptive 1 --set "Adaptivity/Strategy=fixed fraction" --set "Adaptivity/Cycles=2" "${membrane[@]}"
+
+$check "$work/membrane/good.steps.csv" 1e-6 || fail "membrane: momentum balance"
+$check "$work/membrane_alpha/good.steps.csv" 1e-6 --alpha 0.6 || fail "membrane, Alpha = 0.6: momentum balance"
+$check "$work/membrane_loaded/good.steps.csv" 1e-6 "--load=-sin(3*t) + 0.5*cos(t)" ||
+  fail "membrane under a body force and a traction: momentum balance"
+$check "$work/corner/good.steps.csv" 1e-6 || fail "membrane clamped at the contact's end: momentum balance"
+$check "$work/corner_lumped/good.steps.csv" 1e-6 || fail "the same with lumped boundary mass: momentum balance"
+$check "$work/bar/bar.steps.csv" 1e-7 --load 0 "--load=-3.75e7*0.1" --contact 1:+1 || fail "bar on 2 ranks: momentum balance"
+$check "$work/block/block-on-floor.steps.csv" 1e-7 --free --contact 1:+1 || fail "block: momentum balance"
+$check "$work/hanging/block-on-floor.steps.csv" 1e-7 --load 0 "--load=-27173.7*0.1*0.05" || fail "hanging block: momentum balance"
+
+$py - "$work" <<'PY' || exit 1
+import csv, sys
+work = sys.argv[1]
+def table(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+def fail(message):
+    print("FAIL:", message)
+    sys.exit(1)
+for name in ("membrane", "membrane_loaded", "corner", "corner_lumped"):
+    t = table(f"{work}/{name}/good.steps.csv")
+    if not (any(int(r["active"]) > 0 for r in t) and max(abs(float(r["reaction_force"])) for r in t) > 0):
+        fail(f"{name}: no contact or no reaction: the balance was not checked through both")
+bar = table(f"{work}/bar/bar.steps.csv")
+if not (any(int(r["active"]) > 0 for r in bar) and max(abs(float(r["reaction_force_x"])) for r in bar) > 1e4):
+    fail("bar: no contact or no horizontal reaction")
+hanging = [float(r["reaction_force_y"]) for r in table(f"{work}/hanging/block-on-floor.steps.csv")[1:]]
+mean = sum(hanging) / len(hanging)
+if not abs(mean / 135.87 - 1) <= 0.01:
+    fail(f"hanging block: mean reaction_force_y {mean:.6g} N/m over {len(hanging)} steps, its weight is 135.87 N/m")
+if any(c.startswith("reaction_force") for c in table(f"{work}/block/block-on-floor.steps.csv")[0]):
+    fail("block: a reaction_force column without Dirichlet conditions")
+for f in (f"{work}/adaptive/good.steps.csv", f"{work}/adaptive/good.cycle0.steps.csv"):
+    header = table(f)[0]
+    if "reaction_force" not in header or "momentum" in header:
+        fail(f"{f}: an adaptive run's table has {'no reaction_force' if 'reaction_force' not in header else 'momentum'}")
+print(f"hanging block: mean reaction {mean:.6g} N/m (weight 135.87 N/m)")
+PY
+
+# Controls: the balance of Alpha = 0.6 is not that of 1/2; a zeroed, late or halved column breaks it.
+$py - "$work" <<'PY'
+import csv, sys
+work = sys.argv[1]
+for source, column, factor, name in (("corner/good", "reaction_force", 0.0, "no_reaction"),
+                                      ("membrane/good", "reaction_force", None, "late_reaction"),
+                                      ("bar/bar", "momentum_y", 0.5, "half_momentum")):
+    with open(f"{work}/{source}.steps.csv", newline="") as f:
+        rows = list(csv.DictReader(f))
+    if factor is None:  # one step late
+        for n in range(len(rows) - 1, 0, -1):
+            rows[n][column] = rows[n - 1][column]
+    else:
+        for r in rows:
+            r[column] = repr(factor * float(r[column]))
+    with open(f"{work}/{name}.csv", "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=list(rows[0]))
+        w.writeheader()
+        w.writerows(rows)
+PY
+for control in "$work/membrane_alpha/good.steps.csv" "$work/no_reaction.csv" "$work/late_reaction.csv" \
+    "$work/half_momentum.csv"; do
+  loads=()
+  case $control in *half_momentum*) loads=(--load 0 "--load=-3.75e7*0.1" --contact 1:+1) ;; esac
+  $check "$control" 1e-6 "${loads[@]}" > "$work/control.log" && fail "control: the checker passed $control"
+  grep -q "changed by k ((1 - alpha) G(n-1) + alpha G(n))" "$work/control.log" ||
+    { cat "$work/control.log"; fail "control $control: another failure"; }
+done
+echo "PASS"
