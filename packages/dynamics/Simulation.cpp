@@ -17,6 +17,7 @@
 #include <map>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
@@ -95,10 +96,12 @@ core::ParameterList outputParameters() {
                 "time as time_unconstrained: the contact solve costs time_contact / time_unconstrained of it");
   core::addNamedStrings(p, "Probes", "Named points \"x, y\": u interpolated there becomes the CSV column probe:<name> (elasticity: "
                           "probe:<name>:x and probe:<name>:y); a name holds no comma, quote or line break");
-  core::addChoice(p, "Probe Fields", "u",
-                  "The fields interpolated at each probe: u (displacement) gives probe:<name>, v (velocity) "
-                  "probe:<name>:v, a (acceleration) probe:<name>:a (elasticity: each with :x and :y appended)",
-                  {"u", "u, v", "u, v, a"});
+  core::addString(p, "Probe Fields", "u",
+                  "The fields sampled at each probe, a list of u, v, a, sigma (in any order; u always): u "
+                  "(displacement) gives probe:<name>, v (velocity) probe:<name>:v, a (acceleration) probe:<name>:a "
+                  "(elasticity: each with :x and :y appended); sigma (elasticity) the stress probe:<name>:sigma_xx, "
+                  ":sigma_yy, :sigma_xy, :sigma_zz and :von_mises [force / area], the mean over the cells that hold "
+                  "the point");
   return p;
 }
 
@@ -108,11 +111,45 @@ std::string probeSuffix(int field, int c, int nc) {
   return std::string(fieldSuffix[field]) + (nc == 1 ? "" : c == 0 ? ":x" : ":y");
 }
 
+/// The suffixes of a probe's stress columns (Output/Probe Fields with sigma), in
+/// ElasticityAssembler::stressAtPoint's order.
+const std::array<const char*, 5> kProbeStressSuffixes = {":sigma_xx", ":sigma_yy", ":sigma_xy", ":sigma_zz", ":von_mises"};
+
+/// Output/Probe Fields read: the fields among u (0), v (1), a (2), in that order (u always), and
+/// whether the stress is sampled. A name other than u, v, a, sigma, or one given twice, is a user error.
+std::pair<std::vector<int>, bool> parseProbeFields(const std::string& text, bool elasticity) {
+  static const char* const names[] = {"u", "v", "a", "sigma"};
+  bool chosen[4] = {true, false, false, false};
+  bool named[4] = {false, false, false, false};
+  std::istringstream items(text);
+  for (std::string item; std::getline(items, item, ',');) {
+    const auto first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
+    const std::string name = first == std::string::npos ? "" : item.substr(first, last - first + 1);
+    const auto at = std::find(std::begin(names), std::end(names), name) - std::begin(names);
+    if (at == 4)
+      SIGNORINI_USER_ERROR("Output/Probe Fields: \"" << name << "\" in \"" << text
+                                                     << "\" is not a field: list u, v, a or sigma, separated by commas");
+    if (named[at]) SIGNORINI_USER_ERROR("Output/Probe Fields: \"" << name << "\" is listed twice in \"" << text << "\"");
+    named[at] = chosen[at] = true;
+  }
+  if (chosen[3] && !elasticity)
+    SIGNORINI_USER_ERROR("Output/Probe Fields: sigma is the stress of plane strain elasticity (Problem/Type); the "
+                         "scalar wave has none");
+  std::vector<int> fields;
+  for (int f = 0; f < 3; ++f)
+    if (chosen[f]) fields.push_back(f);
+  return {fields, chosen[3]};
+}
+
 /// The longest probe name: "probe:<name>" and its longest suffix (":v:x") must fit the 256 bytes
 /// of a netCDF name. At least two bytes are kept for the suffix, so that the names of a deck's
 /// probes of u fit both a scalar problem and elasticity.
-size_t maxProbeNameLength(int fields, int nc) {
-  return 256 - 6 - std::max<size_t>(2, probeSuffix(fields - 1, nc - 1, nc).size());
+size_t maxProbeNameLength(const std::vector<int>& fields, bool stress, int nc) {
+  size_t longest = 2;
+  for (const int f : fields) longest = std::max(longest, probeSuffix(f, nc - 1, nc).size());
+  if (stress)
+    for (const char* suffix : kProbeStressSuffixes) longest = std::max(longest, std::string(suffix).size());
+  return 256 - 6 - longest;
 }
 
 bool isFileDescriptorPath(const std::string& path);
@@ -299,7 +336,8 @@ struct Simulation::Impl {
   std::shared_ptr<mesh::Forest> initialForest;
   std::unique_ptr<Discretisation> initialDiscretisation;  ///< built for the set-up checks; used by the first pass
   std::vector<std::pair<std::string, std::array<double, 2>>> probes;
-  int probeFields = 1;  ///< u; u and v; or u, v and a at each probe (Output/Probe Fields)
+  std::vector<int> probeFields = {0};  ///< the fields sampled at each probe: 0 u, 1 v, 2 a (Output/Probe Fields)
+  bool probeStress = false;            ///< and the stress (elasticity)
   std::vector<std::string> probeColumns;  ///< the steps table's probe columns, probe by probe, field by field
   core::PhaseTimers timers;
   std::map<std::string, double> setupSeconds;  // the phases of the constructor's set-up
@@ -894,9 +932,8 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   I.newmark = std::make_unique<Newmark>(deck.sublist("Time Integration"));
 
   const auto& out = deck.sublist("Output");
-  I.probeFields = 1 + static_cast<int>(std::count(out.get<std::string>("Probe Fields").begin(),
-                                                  out.get<std::string>("Probe Fields").end(), ','));
-  const size_t maxNameLength = maxProbeNameLength(I.probeFields, I.problem->components());
+  std::tie(I.probeFields, I.probeStress) = parseProbeFields(out.get<std::string>("Probe Fields"), I.problem->components() == 2);
+  const size_t maxNameLength = maxProbeNameLength(I.probeFields, I.probeStress, I.problem->components());
   for (auto it = out.sublist("Probes").begin(); it != out.sublist("Probes").end(); ++it) {
     const std::string name = out.sublist("Probes").name(it);
     const std::string spec = Teuchos::any_cast<std::string>(out.sublist("Probes").entry(it).getAny());
@@ -919,16 +956,21 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   }
   // Two probes must not name one column (a probe "p" with its velocity and a probe "p:v").
   std::map<std::string, std::string> probeOfColumn;
-  for (const auto& [name, point] : I.probes)
-    for (int field = 0; field < I.probeFields; ++field)
-      for (int c = 0; c < I.problem->components(); ++c) {
-        const std::string column = "probe:" + name + probeSuffix(field, c, I.problem->components());
-        const auto [it, added] = probeOfColumn.emplace(column, name);
-        if (!added)
-          SIGNORINI_USER_ERROR("Output/Probes/" << name << " and Output/Probes/" << it->second
-                                                << " both give the column '" << column << "'; rename one of them");
-        I.probeColumns.push_back(column);
-      }
+  for (const auto& [name, point] : I.probes) {
+    std::vector<std::string> columns;
+    for (const int field : I.probeFields)
+      for (int c = 0; c < I.problem->components(); ++c)
+        columns.push_back("probe:" + name + probeSuffix(field, c, I.problem->components()));
+    if (I.probeStress)
+      for (const char* suffix : kProbeStressSuffixes) columns.push_back("probe:" + name + suffix);
+    for (const auto& column : columns) {
+      const auto [it, added] = probeOfColumn.emplace(column, name);
+      if (!added)
+        SIGNORINI_USER_ERROR("Output/Probes/" << name << " and Output/Probes/" << it->second
+                                              << " both give the column '" << column << "'; rename one of them");
+      I.probeColumns.push_back(column);
+    }
+  }
 
   I.initialForest = std::make_shared<mesh::Forest>(I.coarse, core::rawMpiComm(*comm), meshParams.get<int>("Refinement Level"));
   // Set-up checks on the initial mesh, before any output exists.
@@ -1307,7 +1349,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     d->assembler->toOverlap(*u, uOverlap);
     const bool writeExodus = exodus && (step % exodusInterval == 0 || step == nSteps);
     std::unique_ptr<Vector> vOverlap, aOverlap;  // for the Exodus file and the probes of v and a
-    if (writeExodus || (I.probeFields > 1 && !I.probes.empty()) || reportReaction) {
+    if (writeExodus || (I.probeFields.size() > 1 && !I.probes.empty()) || reportReaction) {
       vOverlap = std::make_unique<Vector>(d->assembler->overlapMap());
       aOverlap = std::make_unique<Vector>(d->assembler->overlapMap());
       d->assembler->toOverlap(*v, *vOverlap);
@@ -1337,10 +1379,15 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     }
     if (measureOverhead) row.push_back(freeIterations);
     const Vector* const fields[] = {&uOverlap, vOverlap.get(), aOverlap.get()};  // u, v, a (v, a may be null)
-    for (const auto& p : I.probes)
-      for (int field = 0; field < I.probeFields; ++field)
+    for (const auto& p : I.probes) {
+      for (const int field : I.probeFields)
         for (int c = 0; c < nc; ++c)
           row.push_back(d->assembler->evaluateComponent(*fields[field], p.second[0], p.second[1], c));
+      if (I.probeStress)
+        for (const double value : dynamic_cast<const fem::ElasticityAssembler&>(*d->assembler)
+                                      .stressAtPoint(uOverlap, p.second[0], p.second[1]))
+          row.push_back(value);
+    }
     if (I.problem->exactSolution) {
       const auto [l2, h1] = d->assembler->errorNorms(*u, *I.problem->exactSolution, t);
       if (!std::isfinite(l2) || !std::isfinite(h1))  // the norms are sums over all ranks: every rank stops

@@ -12,6 +12,7 @@
 #include "signorini/fem/DirichletRowSums.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/core/MpiComm.hpp"
+#include "signorini/core/ReproducibleSum.hpp"
 #include "signorini/fem/Q1Kernels.hpp"
 
 namespace signorini::fem {
@@ -372,20 +373,41 @@ std::array<double, 3> ElasticityAssembler::stressAt(const Vector& uOverlap, LO e
   return {lambda_ * tr + 2 * mu_ * du[0][0], lambda_ * tr + 2 * mu_ * du[1][1], mu_ * (du[0][1] + du[1][0])};
 }
 
+std::array<double, 5> ElasticityAssembler::withOutOfPlaneAndVonMises(double sxx, double syy, double sxy) const {
+  // sigma_xx + sigma_yy = 2 (lambda + mu) tr(eps), so sigma_zz = lambda tr(eps) follows from them.
+  const double szz = lambda_ / (2 * (lambda_ + mu_)) * (sxx + syy);
+  return {sxx, syy, sxy, szz,
+          std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+                    3 * sxy * sxy)};
+}
+
 std::array<std::vector<double>, 5> ElasticityAssembler::cellCentreStresses(const Vector& uOverlap) const {
   const LO nc = mesh_.numLocalCells();
   std::array<std::vector<double>, 5> out;
   for (auto& v : out) v.resize(nc);
-  // sigma_xx + sigma_yy = 2 (lambda + mu) tr(eps), so sigma_zz = lambda tr(eps) follows from them.
-  const double zzPerTrace = lambda_ / (2 * (lambda_ + mu_));
   for (LO e = 0; e < nc; ++e) {
     const auto [sxx, syy, sxy] = stressAt(uOverlap, e, 0.5, 0.5);
-    const double szz = zzPerTrace * (sxx + syy);
-    out[0][e] = sxx, out[1][e] = syy, out[2][e] = sxy, out[3][e] = szz;
-    out[4][e] = std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
-                          3 * sxy * sxy);
+    const auto all = withOutOfPlaneAndVonMises(sxx, syy, sxy);
+    for (int q = 0; q < 5; ++q) out[q][e] = all[q];
   }
   return out;
+}
+
+std::array<double, 5> ElasticityAssembler::stressAtPoint(const Vector& uOverlap, double x, double y) const {
+  std::vector<std::array<double, 3>> terms;
+  for (const auto& at : mesh_.locateAll(x, y)) terms.push_back(stressAt(uOverlap, at.cell, at.s, at.r));
+  double sums[4];
+  core::reproducibleSums(*mesh_.comm(), 4, terms.size(),
+                         [&](std::size_t k, double* out) {
+                           for (int q = 0; q < 3; ++q) out[q] = terms[k][q];
+                           out[3] = 1.0;
+                         },
+                         sums);
+  if (sums[3] == 0) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {nan, nan, nan, nan, nan};
+  }
+  return withOutOfPlaneAndVonMises(sums[0] / sums[3], sums[1] / sums[3], sums[2] / sums[3]);
 }
 
 }  // namespace signorini::fem

@@ -71,8 +71,15 @@ class ElasticityAssembler : public Assembler {
   /// strain: eps_zz = 0) and the von Mises stress
   /// sqrt(((sigma_xx - sigma_yy)^2 + (sigma_yy - sigma_zz)^2 + (sigma_zz - sigma_xx)^2) / 2 + 3 sigma_xy^2).
   std::array<std::vector<double>, 5> cellCentreStresses(const Vector& uOverlap) const;
+  /// The stress at the point (x, y): sigma_xx, sigma_yy, sigma_xy, sigma_zz and von Mises as in
+  /// cellCentreStresses(), of the mean of sigma_xx, sigma_yy, sigma_xy over the cells whose closure
+  /// holds the point (one inside a cell; two or four on edges and corners, where the stress of Q1
+  /// elements jumps), on all ranks; NaN outside the mesh. Collective; the bits do not depend on the partition.
+  std::array<double, 5> stressAtPoint(const Vector& uOverlap, double x, double y) const;
 
  private:
+  /// {sigma_xx, sigma_yy, sigma_xy} completed by sigma_zz (plane strain) and the von Mises stress.
+  std::array<double, 5> withOutOfPlaneAndVonMises(double sxx, double syy, double sxy) const;
   const mesh::Q1Mesh& mesh_;
   std::vector<char> dirichlet_;
   double lambda_, mu_;

@@ -485,6 +485,21 @@ signorini_add_driver_test(bad_probe_names_one_column EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/p=0.5, 0.5" --set "Output/Probes/p:v=0.25, 0.5"
        --set "Output/Probe Fields=u, v" ${decks}/good.xml
   REGEX "Output/Probes/p:v and Output/Probes/p both give the column 'probe:p:v'; rename one of them")
+# With the stress probed, the longest column is "probe:<name>:von_mises".
+string(REPEAT "p" 241 long_probe_name)
+signorini_add_driver_test(bad_probe_name_too_long_for_stress EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probes/${long_probe_name}=0.05, 0.01" --set "Output/Probe Fields=u, sigma"
+       ${decks}/block-into-wall.xml
+  REGEX "Output/Probes/p+[.][.][.]: a probe's name has at most 240 bytes [(]it has 241")
+signorini_add_driver_test(bad_probe_fields_unknown EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probe Fields=u, w" ${decks}/good.xml
+  REGEX "Output/Probe Fields: \"w\" in \"u, w\" is not a field: list u, v, a or sigma, separated by commas")
+signorini_add_driver_test(bad_probe_fields_twice EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probe Fields=u, v,v" ${decks}/good.xml
+  REGEX "Output/Probe Fields: \"v\" is listed twice in \"u, v,v\"")
+signorini_add_driver_test(bad_probe_stress_of_membrane EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probes/p=0.5, 0.5" --set "Output/Probe Fields=u, sigma" ${decks}/good.xml
+  REGEX "Output/Probe Fields: sigma is the stress of plane strain elasticity [(]Problem/Type[)]; the scalar wave has none")
 signorini_add_driver_test(bad_probe_point EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/centre=0.5 0.5" ${decks}/good.xml
   REGEX "Output/Probes/centre: expected \"x, y\", got \"0[.]5 0[.]5\"")

@@ -1,0 +1,95 @@
+#!/usr/bin/env bash
+# Output/Probe Fields with sigma: the stress at the probes (elasticity).
+#  - an elastic block in a uniform strain state at t = 0 (u0 linear, which the initial projection
+#    reproduces): every probe, inside a cell, on a cell edge, at a node where four cells meet and at
+#    the body's corners, reads the exact stress sigma = lambda tr(eps) I + 2 mu eps, sigma_zz =
+#    lambda tr(eps) and von Mises, to 1e-9;
+#  - after the block has started to vibrate, a probe at a cell's centre reads the Exodus file's cell
+#    stress of that cell (the same quantity, two outputs) in every written step;
+#  - 2 ranks give the same probe stresses as 1 rank to 1e-9 in every step (the node probe lies on the
+#    ranks' boundary: its mean takes cells of both ranks);
+#  - the list may come in any order and spacing ("sigma,v , u" gives u, v and the stress).
+# Usage: probe_stress.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
+# MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (cmake/SignoriniTesting.cmake).
+set -uo pipefail
+signorini=$1 src=$3 work=$4
+IFS='|' read -r -a launcher <<< "$2"
+py=/usr/bin/python3
+decks=$src/tests/driver/decks
+rm -rf "$work" && mkdir -p "$work"
+fail() { echo "FAIL: $*"; exit 1; }
+run() {  # run NAME NP ARGS...: the run's folder is $work/NAME
+  local name=$1 np=$2; shift 2
+  "${launcher[0]}" "${launcher[1]:--n}" "$np" "${launcher[@]:2}" "$signorini" --output-dir "$work/$name" "$@" > "$work/$name.log" 2>&1 ||
+    { cat "$work/$name.log"; fail "run $name"; }
+}
+# The block of block-on-floor.xml: 0.1 m x 0.05 m, 16 x 8 cells of 6.25 mm; E = 73 GPa, nu = 0.33.
+block=(--set "Problem/Initial Displacement=1e-4*x + 2e-5*y, -3e-5*y" --set "Problem/Initial Velocity=0, 0"
+       --set "Time Integration/Final Time=2e-4" --set "Output/Write Exodus=true"
+       --set "Output/Probes/inside=0.03, 0.02" --set "Output/Probes/centre=0.028125, 0.021875"
+       --set "Output/Probes/edge=0.05, 0.02" --set "Output/Probes/node=0.05, 0.025"
+       --set "Output/Probes/corner=0, 0" --set "Output/Probes/far=0.1, 0.05" "$decks/block-on-floor.xml")
+run one 1 --set "Output/Probe Fields=sigma,v , u" "${block[@]}"
+run two 2 --set "Output/Probe Fields=u, sigma" "${block[@]}"
+
+$py - "$work" <<'PY' || exit 1
+import csv, glob, math, sys
+import netCDF4
+work = sys.argv[1]
+def table(path):
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+def fail(message):
+    print("FAIL:", message)
+    sys.exit(1)
+E, nu = 73e9, 0.33
+lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
+exx, eyy, exy = 1e-4, -3e-5, 1e-5  # u0 = (1e-4 x + 2e-5 y, -3e-5 y): gamma_xy = 2e-5
+sxx, syy, sxy = lam * (exx + eyy) + 2 * mu * exx, lam * (exx + eyy) + 2 * mu * eyy, 2 * mu * exy
+szz = lam * (exx + eyy)
+vm = math.sqrt(0.5 * ((sxx - syy) ** 2 + (syy - szz) ** 2 + (szz - sxx) ** 2) + 3 * sxy ** 2)
+exact = {"sigma_xx": sxx, "sigma_yy": syy, "sigma_xy": sxy, "sigma_zz": szz, "von_mises": vm}
+one, two = table(f"{work}/one/block-on-floor.steps.csv"), table(f"{work}/two/block-on-floor.steps.csv")
+probes = ("inside", "centre", "edge", "node", "corner", "far")
+stress = [f"probe:{p}:{q}" for p in probes for q in exact]
+missing = [c for c in stress + [f"probe:{p}:{s}" for p in probes for s in ("x", "y", "v:x", "v:y")] if c not in one[0]]
+if missing or any(c.startswith("probe:") and c.split(":")[2] == "a" for c in one[0]):
+    fail(f"the columns of 'sigma,v , u': missing {missing}, or an acceleration column")
+for c in stress:
+    value, want = float(one[0][c]), exact[c.split(":")[2]]
+    if not abs(value - want) <= 1e-9 * abs(sxx):
+        fail(f"step 0: {c} = {value!r}, the uniform strain's stress is {want!r}")
+# The block vibrates: its stress is no longer uniform.
+last = one[-1]
+spread = max(abs(float(last[f"probe:{p}:sigma_xx"]) - float(last["probe:inside:sigma_xx"])) for p in probes)
+if not spread > 1e-3 * abs(sxx):
+    fail(f"the stress is still uniform at the end (spread {spread:.3g}): the run checked nothing after step 0")
+for a, b in zip(one, two):
+    for c in stress:
+        if not abs(float(a[c]) - float(b[c])) <= 1e-9 * abs(sxx):
+            fail(f"step {a['step']}: {c} is {a[c]} on 1 rank, {b[c]} on 2")
+if len(one) != len(two):
+    fail(f"{len(one)} steps on 1 rank, {len(two)} on 2")
+# The centre probe against the Exodus cell stress of the cell whose centre it is.
+files = glob.glob(f"{work}/one/block-on-floor.e*")
+if len(files) != 1:
+    fail(f"one Exodus file expected on 1 rank, found {files}")
+with netCDF4.Dataset(files[0]) as d:
+    x, y = d.variables["coordx"][:], d.variables["coordy"][:]
+    connect = d.variables["connect1"][:] - 1
+    centres = [(x[c].mean(), y[c].mean()) for c in connect]
+    cell = min(range(len(centres)), key=lambda e: (centres[e][0] - 0.028125) ** 2 + (centres[e][1] - 0.021875) ** 2)
+    names = [bytes(r).rstrip(b"\0").decode() for r in d.variables["name_elem_var"][:].data]
+    times = list(d.variables["time_whole"][:])
+    checked = 0
+    for i, t in enumerate(times):
+        row = next(r for r in one if abs(float(r["t"]) - t) <= 1e-12)
+        for q in exact:
+            value = d.variables[f"vals_elem_var{names.index(q) + 1}eb1"][i][cell]
+            if not abs(value - float(row[f"probe:centre:{q}"])) <= 1e-12 * abs(sxx):
+                fail(f"t = {t}: probe:centre:{q} = {row[f'probe:centre:{q}']}, the Exodus cell's {q} = {value!r}")
+            checked += 1
+print(f"step 0 exact at {len(probes)} probes; 1 and 2 ranks agree in {len(one)} steps; "
+      f"the centre probe equals its cell's Exodus stress in {checked} values")
+PY
+echo "PASS"
