@@ -196,10 +196,13 @@ bool isFileDescriptorPath(const std::string& path) {
 
 /// Whether a file can be created in the existing directory \p dir (a probe with a name of this
 /// process, created exclusively and removed again).
-bool canCreateIn(const std::string& dir) {
+bool canCreateIn(const std::string& dir, int* error = nullptr) {
   const std::string probe = dir + "/.signorini-write-test-" + std::to_string(::getpid());
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0644);
-  if (fd < 0) return false;
+  if (fd < 0) {
+    if (error) *error = errno;
+    return false;
+  }
   ::close(fd);
   ::unlink(probe.c_str());
   return true;
@@ -240,7 +243,8 @@ void ensureWritableDirectory(const std::string& dir, const std::string& key, con
         why = " (" + std::string(std::strerror(errno)) + ")";
       }
     }
-    if (ok && !canCreateIn(deepest)) ok = false, why = " (no file can be created in '" + deepest + "')";
+    if (int error = 0; ok && !canCreateIn(deepest, &error))
+      ok = false, why = " (no file can be created in '" + deepest + "': " + std::strerror(error) + ")";
     if (ok)
       io::removeOnFailure(created);
     else
