@@ -239,6 +239,17 @@ std::string AdaptiveSimulation::whereInRun(int cycle) const {
   return os.str();
 }
 
+dynamics::PassOptions AdaptiveSimulation::cyclePassOptions() const {
+  const auto& ap = deck_.sublist("Adaptivity");
+  dynamics::PassOptions options;
+  options.extraColumns = {"eta_star", "s0", "s1", "eta"};
+  options.cellFieldName = "indicator";
+  options.interpolateTransfer = ap.get<std::string>("Transfer") == "interpolation";
+  options.reportTransferEnergy = ap.get<bool>("Report Transfer Energy");
+  options.reportWork = false;  // the meshes change between steps
+  return options;
+}
+
 std::string AdaptiveSimulation::plan() const {
   const auto& a = deck_.sublist("Adaptivity");
   const auto& t = deck_.sublist("Time Integration");
@@ -295,6 +306,11 @@ std::string AdaptiveSimulation::plan() const {
   }
   if (deck_.sublist("Parallel").get<bool>("Reproducible Arithmetic"))
     os << "\nreproducible arithmetic: the same bits on any number of ranks";
+  {
+    const auto columns = sim_->stepColumns(strategy == "none" ? dynamics::PassOptions() : cyclePassOptions());
+    os << "\nstep table " << sim_->outputBase() << ".steps.csv, " << columns.size() << " columns:";
+    for (size_t c = 0; c < columns.size(); ++c) os << (c ? ", " : " ") << columns[c];
+  }
   os << "\noutput: " << sim_->outputBase() << ".*";
   return os.str();
 }
@@ -522,15 +538,10 @@ dynamics::RunSummary AdaptiveSimulation::run() {
         next[n - 1] = (n > 1 && next[n - 2]->sameCells(*refined)) ? next[n - 2] : refined;
         return extras;
       };
-      dynamics::PassOptions options;
+      dynamics::PassOptions options = cyclePassOptions();
       const std::string& outBase = sim_->outputBase();
       options.basename = lastPlanned ? "" : outBase.substr(outBase.find_last_of('/') + 1) + ".cycle" + std::to_string(l);
       options.writeExodus = lastPlanned || writeAll || mayStopEarly;
-      options.extraColumns = {"eta_star", "s0", "s1", "eta"};
-      options.cellFieldName = "indicator";
-      options.interpolateTransfer = ap.get<std::string>("Transfer") == "interpolation";
-      options.reportTransferEnergy = ap.get<bool>("Report Transfer Energy");
-      options.reportWork = false;  // the meshes change between steps
       options.compactMeshes = compactMeshes;
       last = locatingFailures(l, [&] { return sim_->runPass(meshes, hook, options); });
       for (const auto& [phase, seconds] : last.phaseSeconds) phaseSeconds[phase] += seconds;

@@ -55,6 +55,8 @@ class AdaptiveSimulation {
  private:
   /// "cycle l, step n (t = ...): " (no cycle without adaptivity), the start of a failure's message.
   std::string whereInRun(int cycle) const;
+  /// The options every cycle's pass shares (the estimate's columns and cell field, the transfer, no work columns).
+  dynamics::PassOptions cyclePassOptions() const;
   /// pass() (a pass of cycle \p cycle), its solver and user errors prefixed with whereInRun().
   template <class Pass>
   dynamics::RunSummary locatingFailures(int cycle, Pass pass) const;

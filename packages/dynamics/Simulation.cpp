@@ -94,8 +94,10 @@ core::ParameterList outputParameters() {
   core::addBool(p, "Measure Contact Overhead", false,
                 "Also solve each step without contact (same A, preconditioner and initial guess) and report its "
                 "time as time_unconstrained: the contact solve costs time_contact / time_unconstrained of it");
-  core::addNamedStrings(p, "Probes", "Named points \"x, y\": u interpolated there becomes the CSV column probe:<name> (elasticity: "
-                          "probe:<name>:x and probe:<name>:y); a name holds no comma, quote or line break");
+  core::addNamedStrings(p, "Probes",
+                        "Named points \"x, y\" of the undeformed body (numbers or constant expressions, e.g. \"0.2, "
+                        "0.05/2\"): u interpolated there becomes the CSV column probe:<name> (elasticity: "
+                        "probe:<name>:x and probe:<name>:y); a name holds no comma, quote or line break");
   core::addString(p, "Probe Fields", "u",
                   "The fields sampled at each probe, a list of u, v, a, sigma (in any order; u always): u "
                   "(displacement) gives probe:<name>, v (velocity) probe:<name>:v, a (acceleration) probe:<name>:a "
@@ -950,10 +952,33 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
       SIGNORINI_USER_ERROR("Output/Probes/" << name.substr(0, 40) << "...: a probe's name has at most "
                                             << maxNameLength << " bytes (it has " << name.size()
                                             << "; the Exodus files name a variable after it)");
+    // "x, y": numbers or constant expressions ("0.05/2, pi/8"); commas inside parentheses belong to calls.
+    std::vector<std::string> parts(1);
+    int depth = 0;
+    for (const char c : spec) {
+      depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+      if (c == ',' && depth == 0)
+        parts.emplace_back();
+      else
+        parts.back() += c;
+    }
+    if (parts.size() != 2 || parts[0].find_first_not_of(" \t") == std::string::npos ||
+        parts[1].find_first_not_of(" \t") == std::string::npos)
+      SIGNORINI_USER_ERROR("Output/Probes/" << name << ": expected \"x, y\", got \"" << spec << "\"");
     double x, y;
     char extra;
-    if (std::sscanf(spec.c_str(), " %lf , %lf %c", &x, &y, &extra) != 2)
-      SIGNORINI_USER_ERROR("Output/Probes/" << name << ": expected \"x, y\", got \"" << spec << "\"");
+    if (std::sscanf(spec.c_str(), " %lf , %lf %c", &x, &y, &extra) != 2) {  // not two plain numbers
+      double xy[2];
+      for (int c = 0; c < 2; ++c) {
+        const core::Expression coordinate(parts[c], "Output/Probes/" + name + (c ? " (y)" : " (x)"));
+        if (!coordinate.isConstant())
+          SIGNORINI_USER_ERROR("Output/Probes/" << name << ": \"" << spec
+                                                << "\": a probe's coordinates are numbers or constant expressions, not "
+                                                   "functions of x, y or t");
+        xy[c] = coordinate(0, 0, 0);
+      }
+      x = xy[0], y = xy[1];
+    }
     if (!std::isfinite(x) || !std::isfinite(y))
       SIGNORINI_USER_ERROR("Output/Probes/" << name << ": \"" << spec << "\" is not a point (a coordinate is not a finite number)");
     I.probes.push_back({name, {x, y}});
@@ -1205,21 +1230,8 @@ RunSummary Simulation::run() {
   return summary;
 }
 
-RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>& meshes, const StepHook& hook,
-                               const PassOptions& options) {
-  auto& I = *impl_;
-  const int rank = I.comm->getRank();
-  const auto& outParams = I.deck.sublist("Output");
-  const std::string base = I.outDir + "/" + (options.basename.empty() ? I.basename : options.basename);
-  const int nSteps = I.newmark->numSteps();
-  SIGNORINI_ASSERT(static_cast<int>(meshes.size()) == nSteps, "one mesh per time step");
-  I.currentStep = 0;
-  const double k = I.newmark->timeStep, beta = I.newmark->beta;
-  const int exodusInterval = outParams.get<int>("Exodus Interval");
-  int progress = outParams.get<int>("Progress Interval");
-  if (progress == 0) progress = std::max(1, nSteps / 20);
-  I.timers.clear();
-
+std::vector<std::string> Simulation::stepColumns(const PassOptions& options) const {
+  const auto& I = *impl_;
   std::vector<std::string> columns = {"step", "t", "dofs", "active", "qp_iterations", "cg_iterations",
                                       "linear_solves", "linear_iterations", "energy", "kinetic_energy", "newmark_energy",
                                       "contact_force", "max_lambda", "min_lambda", "min_gap", "max_complementarity",
@@ -1227,17 +1239,14 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                       "time_remesh", "time_estimate", "cells"};
   const int nc = I.problem->components();
   // The supports' force on the body (the rows that the Dirichlet elimination drops), after contact_force.
-  const bool reportReaction = (I.problem->dirichletMask | I.problem->componentDirichletMask[0] |
-                               I.problem->componentDirichletMask[1]) != 0;
-  const size_t reactionColumn = std::find(columns.begin(), columns.end(), "contact_force") - columns.begin() + 1;
-  if (reportReaction) {
+  if (I.problem->hasDirichletConditions()) {
+    const auto after = std::find(columns.begin(), columns.end(), "contact_force") + 1;
     const std::vector<std::string> names = nc == 1 ? std::vector<std::string>{"reaction_force"}
                                                    : std::vector<std::string>{"reaction_force_x", "reaction_force_y"};
-    columns.insert(columns.begin() + static_cast<std::ptrdiff_t>(reactionColumn), names.begin(), names.end());
+    columns.insert(after, names.begin(), names.end());
   }
-  const bool measureOverhead = outParams.get<bool>("Measure Contact Overhead");
-  if (measureOverhead) columns.push_back("unconstrained_iterations");  // the benchmark unit's iterations
-  const size_t timeOutputColumn = std::find(columns.begin(), columns.end(), "time_output") - columns.begin();
+  if (I.deck.sublist("Output").get<bool>("Measure Contact Overhead"))
+    columns.push_back("unconstrained_iterations");  // the benchmark unit's iterations
   columns.insert(columns.end(), I.probeColumns.begin(), I.probeColumns.end());
   if (I.problem->exactSolution) {
     columns.push_back("error_l2");
@@ -1253,6 +1262,30 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   if (options.reportTransferEnergy)
     for (const char* c : {"energy_transferred", "kinetic_energy_transferred"}) columns.push_back(c);
   columns.insert(columns.end(), options.extraColumns.begin(), options.extraColumns.end());
+  return columns;
+}
+
+RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>& meshes, const StepHook& hook,
+                               const PassOptions& options) {
+  auto& I = *impl_;
+  const int rank = I.comm->getRank();
+  const auto& outParams = I.deck.sublist("Output");
+  const std::string base = I.outDir + "/" + (options.basename.empty() ? I.basename : options.basename);
+  const int nSteps = I.newmark->numSteps();
+  SIGNORINI_ASSERT(static_cast<int>(meshes.size()) == nSteps, "one mesh per time step");
+  I.currentStep = 0;
+  const double k = I.newmark->timeStep, beta = I.newmark->beta;
+  const int exodusInterval = outParams.get<int>("Exodus Interval");
+  int progress = outParams.get<int>("Progress Interval");
+  if (progress == 0) progress = std::max(1, nSteps / 20);
+  I.timers.clear();
+
+  const std::vector<std::string> columns = stepColumns(options);
+  const int nc = I.problem->components();
+  const bool reportReaction = I.problem->hasDirichletConditions();
+  const size_t reactionColumn = std::find(columns.begin(), columns.end(), "contact_force") - columns.begin() + 1;
+  const bool measureOverhead = outParams.get<bool>("Measure Contact Overhead");
+  const size_t timeOutputColumn = std::find(columns.begin(), columns.end(), "time_output") - columns.begin();
   std::unique_ptr<io::CsvWriter> csv;
   if (options.writeCsv)
     core::onRootCollectively(*I.comm, [&] { csv = std::make_unique<io::CsvWriter>(base + ".steps.csv", columns); });

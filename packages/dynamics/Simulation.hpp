@@ -141,6 +141,9 @@ class Simulation {
   /// "CG + Jacobi" and, for Preconditioner = auto, the Courant numbers c k / h_min that choose it:
   /// on the initial mesh and on a mesh refined \p finerLevels more levels (--check's plan).
   std::string linearSolverPlan(int finerLevels) const;
+  /// The step table's columns (and, but for step, t and the time_ columns, the Exodus global
+  /// variables) of a pass with \p options.
+  std::vector<std::string> stepColumns(const PassOptions& options) const;
   RCP<const Comm> comm() const;  ///< the constructor's communicator
   const std::string& outputBase() const;  ///< output folder + "/" + basename
   /// The deck as the run uses it and its output files record it: validated, defaults filled in,

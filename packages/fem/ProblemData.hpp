@@ -62,6 +62,10 @@ struct ProblemData {
   int components() const { return model == Model::ScalarWave ? 1 : 2; }
   /// The stiffness of the fastest wave: kappa [force / length], or the P-wave modulus lambda + 2 mu
   /// [force / area]; the estimator's physical scaling divides by it.
+  /// Whether any unknown is held (Dirichlet Segments, Dirichlet X/Y Segments): then the supports exert a reaction.
+  bool hasDirichletConditions() const {
+    return (dirichletMask | componentDirichletMask[0] | componentDirichletMask[1]) != 0;
+  }
   double waveModulus() const { return model == Model::ScalarWave ? stiffness : lameLambda + 2 * lameMu; }
   /// Fastest wave speed: sqrt(waveModulus() / rho).
   double waveSpeed() const;

@@ -503,6 +503,13 @@ signorini_add_driver_test(bad_probe_stress_of_membrane EXIT 1
 signorini_add_driver_test(bad_probe_point EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/centre=0.5 0.5" ${decks}/good.xml
   REGEX "Output/Probes/centre: expected \"x, y\", got \"0[.]5 0[.]5\"")
+# Coordinates may be constant expressions: the point is evaluated (here outside the mesh, as named).
+signorini_add_driver_test(bad_probe_expression_outside_the_mesh EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probes/far=2*2.5, max(1, 2)/4" ${decks}/good.xml
+  REGEX "Output/Probes/far: point [(]5, 0[.]5[)] is outside the mesh")
+signorini_add_driver_test(bad_probe_point_function EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probes/p=0.5, t" ${decks}/good.xml
+  REGEX "Output/Probes/p: \"0[.]5, t\": a probe's coordinates are numbers or constant expressions, not functions of x, y or t")
 signorini_add_driver_test(bad_probe_not_a_number EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/p=nan, 0.5" ${decks}/good.xml
   REGEX "Output/Probes/p: \"nan, 0[.]5\" is not a point [(]a coordinate is not a finite number[)]")

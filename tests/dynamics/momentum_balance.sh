@@ -5,12 +5,15 @@
 # G = applied loads + contact force + reaction), to the solves' tolerance:
 #  - the membrane through contact (clamped left, contact right), also with Alpha = 0.6;
 #  - the membrane under a body force varying in time and space and a traction on its top edge,
-#    which ends at the clamped corner (the traction's share there is the support's);
+#    both non-zero on the clamped edge (their shares there are the support's);
 #  - the membrane clamped along its bottom with the contact on its right side, whose first segment
 #    ends at the clamped corner and is pressed (its contact force there is carried by the support:
 #    without that share the balance misses by 4.5% of the largest force), with consistent and with
 #    lumped boundary mass (the lumped rows keep their couplings to the clamped corner);
 #  - the bar of paper Example 6.2 under its load on 2 ranks (elasticity, two components);
+#  - the block on the floor held in x along its left side (a roller) under a traction on its top that
+#    varies in time and along x, both components non-zero at the roller's corner, on 2 ranks;
+#  - the contact stabilisation's projected predictor (the clamped corner run);
 #  - the block dropped onto the floor: no Dirichlet conditions, no reaction_force column;
 #  - a block hanging from its clamped top under its weight (no contact): the mean reaction over 600
 #    steps is its weight, 27173.7 N/m^3 x 0.005 m^2 = 135.87 N/m upwards;
@@ -37,13 +40,17 @@ corner=(--set "Mesh/Boundary Segments/clamped=bottom" --set "Problem/Obstacle=-0
         --set "Problem/Initial Velocity=-sin(pi*x/2)*sin(pi*y/2)")
 run membrane 1 "${membrane[@]}"
 run membrane_alpha 1 --set "Time Integration/Alpha=0.6" --set "Time Integration/Beta=0.4" "${membrane[@]}"
-run membrane_loaded 1 --set "Problem/Body Force=-2*sin(3*t)*x" --set "Mesh/Boundary Segments/loaded=top" \
-  --set "Problem/Neumann Segments=loaded" --set "Problem/Neumann Data=cos(t)*x" "${membrane[@]}"
+run membrane_loaded 1 --set "Problem/Body Force=1 - 2*sin(3*t)*x" --set "Mesh/Boundary Segments/loaded=top" \
+  --set "Problem/Neumann Segments=loaded" --set "Problem/Neumann Data=2*(1 + t) + cos(t)*x" "${membrane[@]}"
 run corner 1 "${corner[@]}" "${membrane[@]}"
 run corner_lumped 1 "${corner[@]}" --set "Contact/Boundary Mass=lumped" "${membrane[@]}"
+run corner_projected 1 "${corner[@]}" --set "Time Integration/Contact Stabilisation=predictor projection" "${membrane[@]}"
 run bar 2 --set "Adaptivity/Strategy=none" --set "Time Integration/Final Time=1e-3" --set "Output/Write Exodus=false" \
   "$src/inputs/bar.xml"
 run block 1 "$decks/block-on-floor.xml"
+run roller 2 --set "Mesh/Boundary Segments/left=left" --set "Mesh/Boundary Segments/top=top" \
+  --set "Problem/Dirichlet X Segments=left" --set "Problem/Neumann Segments=top" \
+  --set "Problem/Neumann Data=-1e5*(1 + 1000*t), 2e5*(x - 0.2)" "$decks/block-on-floor.xml"
 run hanging 1 --set "Problem/Initial Velocity=0, 0" --set "Problem/Contact Segments=" --set "Problem/Obstacle=" \
   --set "Mesh/Boundary Segments/floor=top" --set "Problem/Dirichlet Segments=floor" \
   --set "Problem/Body Force=0, -27173.7" --set "Time Integration/Final Time=6e-3" "$decks/block-on-floor.xml"
@@ -51,10 +58,13 @@ run adaptive 1 --set "Adaptivity/Strategy=fixed fraction" --set "Adaptivity/Cycl
 
 $check "$work/membrane/good.steps.csv" 1e-6 || fail "membrane: momentum balance"
 $check "$work/membrane_alpha/good.steps.csv" 1e-6 --alpha 0.6 || fail "membrane, Alpha = 0.6: momentum balance"
-$check "$work/membrane_loaded/good.steps.csv" 1e-6 "--load=-sin(3*t) + 0.5*cos(t)" ||
+$check "$work/membrane_loaded/good.steps.csv" 1e-6 "--load=1 - sin(3*t) + 2*(1 + t) + 0.5*cos(t)" ||
   fail "membrane under a body force and a traction: momentum balance"
 $check "$work/corner/good.steps.csv" 1e-6 || fail "membrane clamped at the contact's end: momentum balance"
 $check "$work/corner_lumped/good.steps.csv" 1e-6 || fail "the same with lumped boundary mass: momentum balance"
+$check "$work/corner_projected/good.steps.csv" 1e-6 || fail "the same with the predictor projection: momentum balance"
+$check "$work/roller/block-on-floor.steps.csv" 1e-7 "--load=-1e5*(1 + 1000*t)*0.1" "--load=2e5*(0.005 - 0.02)" --contact 1:+1 ||
+  fail "block on a roller under a traction on 2 ranks: momentum balance"
 $check "$work/bar/bar.steps.csv" 1e-7 --load 0 "--load=-3.75e7*0.1" --contact 1:+1 || fail "bar on 2 ranks: momentum balance"
 $check "$work/block/block-on-floor.steps.csv" 1e-7 --free --contact 1:+1 || fail "block: momentum balance"
 $check "$work/hanging/block-on-floor.steps.csv" 1e-7 --load 0 "--load=-27173.7*0.1*0.05" || fail "hanging block: momentum balance"
@@ -68,10 +78,14 @@ def table(path):
 def fail(message):
     print("FAIL:", message)
     sys.exit(1)
-for name in ("membrane", "membrane_loaded", "corner", "corner_lumped"):
+for name in ("membrane", "membrane_alpha", "membrane_loaded", "corner", "corner_lumped", "corner_projected"):
     t = table(f"{work}/{name}/good.steps.csv")
     if not (any(int(r["active"]) > 0 for r in t) and max(abs(float(r["reaction_force"])) for r in t) > 0):
         fail(f"{name}: no contact or no reaction: the balance was not checked through both")
+roller = table(f"{work}/roller/block-on-floor.steps.csv")
+if not (any(int(r["active"]) > 0 for r in roller) and max(abs(float(r["reaction_force_x"])) for r in roller) > 1e3
+        and all(float(r["reaction_force_y"]) == 0 for r in roller)):
+    fail("roller: no contact, no reaction in x, or a reaction in y (the roller holds x only)")
 bar = table(f"{work}/bar/bar.steps.csv")
 if not (any(int(r["active"]) > 0 for r in bar) and max(abs(float(r["reaction_force_x"])) for r in bar) > 1e4):
     fail("bar: no contact or no horizontal reaction")
