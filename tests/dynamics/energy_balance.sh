@@ -20,20 +20,9 @@
 #    contact_work lags a step;
 #  - adaptive runs (a mesh per step) have no such columns.
 # Usage: energy_balance.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
-# MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (cmake/SignoriniTesting.cmake).
-set -uo pipefail
-signorini=$1 src=$3 work=$4
-IFS='|' read -r -a launcher <<< "$2"
-py=/usr/bin/python3
+# (MPIEXEC: the launcher of cmake/SignoriniTesting.cmake; run_helpers.sh reads the arguments.)
+source "$(dirname "$0")/run_helpers.sh" "$@"
 check="$py $src/tests/dynamics/check_energy_balance.py"
-decks=$src/tests/driver/decks
-rm -rf "$work" && mkdir -p "$work"
-fail() { echo "FAIL: $*"; exit 1; }
-run() {  # run NAME NP ARGS...: the run's folder is $work/NAME, its output $work/NAME.log
-  local name=$1 np=$2; shift 2
-  "${launcher[0]}" "${launcher[1]:--n}" "$np" "${launcher[@]:2}" "$signorini" --output-dir "$work/$name" "$@" > "$work/$name.log" 2>&1 ||
-    { cat "$work/$name.log"; fail "run $name"; }
-}
 membrane=(--set "Time Integration/Final Time=1.2" --set "Output/Write Exodus=false" "$decks/good.xml")
 run block 1 "$decks/block-on-floor.xml"
 run block_fine 1 --set "Time Integration/Time Step=1e-6" "$decks/block-on-floor.xml"
@@ -69,14 +58,9 @@ $check "$work/membrane_load/good.steps.csv" 1e-6 || fail "membrane under a body 
 $check "$work/lifted/block-on-floor.steps.csv" 1e-7 || fail "block lifted by a moving floor: energy balance"
 
 $py - "$work" <<'PY' || exit 1
-import csv, sys
+import sys
+from step_tables import fail, table
 work = sys.argv[1]
-def table(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-def fail(message):
-    print("FAIL:", message)
-    sys.exit(1)
 def gain(name):
     t = table(f"{work}/{name}/block-on-floor.steps.csv")
     return float(t[-1]["contact_work"]) / float(t[0]["newmark_energy"])
@@ -131,23 +115,13 @@ PY
 
 # Controls: Alpha = 0.6, a zeroed contact_work and a halved external_work break the balance.
 $py - "$work" <<'PY'
-import csv, sys
+import sys
+from step_tables import write_altered
 work = sys.argv[1]
 for source, column, factor, name in (("block/block-on-floor", "contact_work", 0.0, "no_contact_work"),
                                       ("bar/bar", "external_work", 0.5, "half_external_work"),
                                       ("block/block-on-floor", "contact_work", None, "late_contact_work")):
-    with open(f"{work}/{source}.steps.csv", newline="") as f:
-        rows = list(csv.DictReader(f))
-    if factor is None:  # one step late
-        for n in range(len(rows) - 1, 0, -1):
-            rows[n][column] = rows[n - 1][column]
-    else:
-        for r in rows:
-            r[column] = repr(factor * float(r[column]))
-    with open(f"{work}/{name}.csv", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
+    write_altered(f"{work}/{source}.steps.csv", column, factor, f"{work}/{name}.csv")  # factor None: one step late
 PY
 for table in "$work/membrane_alpha/good.steps.csv" "$work/no_contact_work.csv" "$work/half_external_work.csv" \
     "$work/late_contact_work.csv"; do

@@ -21,20 +21,9 @@
 #    one step late and a halved momentum fail the checker;
 #  - adaptive runs have reaction_force but no momentum column.
 # Usage: momentum_balance.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
-# MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (cmake/SignoriniTesting.cmake).
-set -uo pipefail
-signorini=$1 src=$3 work=$4
-IFS='|' read -r -a launcher <<< "$2"
-py=/usr/bin/python3
+# (MPIEXEC: the launcher of cmake/SignoriniTesting.cmake; run_helpers.sh reads the arguments.)
+source "$(dirname "$0")/run_helpers.sh" "$@"
 check="$py $src/tests/dynamics/check_momentum_balance.py"
-decks=$src/tests/driver/decks
-rm -rf "$work" && mkdir -p "$work"
-fail() { echo "FAIL: $*"; exit 1; }
-run() {  # run NAME NP ARGS...: the run's folder is $work/NAME, its output $work/NAME.log
-  local name=$1 np=$2; shift 2
-  "${launcher[0]}" "${launcher[1]:--n}" "$np" "${launcher[@]:2}" "$signorini" --output-dir "$work/$name" "$@" > "$work/$name.log" 2>&1 ||
-    { cat "$work/$name.log"; fail "run $name"; }
-}
 membrane=(--set "Time Integration/Final Time=1.2" --set "Output/Write Exodus=false" "$decks/good.xml")
 corner=(--set "Mesh/Boundary Segments/clamped=bottom" --set "Problem/Obstacle=-0.05"
         --set "Problem/Initial Velocity=-sin(pi*x/2)*sin(pi*y/2)")
@@ -70,14 +59,9 @@ $check "$work/block/block-on-floor.steps.csv" 1e-7 --free --contact 1:+1 || fail
 $check "$work/hanging/block-on-floor.steps.csv" 1e-7 --load 0 "--load=-27173.7*0.1*0.05" || fail "hanging block: momentum balance"
 
 $py - "$work" <<'PY' || exit 1
-import csv, sys
+import sys
+from step_tables import fail, table
 work = sys.argv[1]
-def table(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-def fail(message):
-    print("FAIL:", message)
-    sys.exit(1)
 for name in ("membrane", "membrane_alpha", "membrane_loaded", "corner", "corner_lumped", "corner_projected"):
     t = table(f"{work}/{name}/good.steps.csv")
     if not (any(int(r["active"]) > 0 for r in t) and max(abs(float(r["reaction_force"])) for r in t) > 0):
@@ -104,23 +88,13 @@ PY
 
 # Controls: the balance of Alpha = 0.6 is not that of 1/2; a zeroed, late or halved column breaks it.
 $py - "$work" <<'PY'
-import csv, sys
+import sys
+from step_tables import write_altered
 work = sys.argv[1]
 for source, column, factor, name in (("corner/good", "reaction_force", 0.0, "no_reaction"),
                                       ("membrane/good", "reaction_force", None, "late_reaction"),
                                       ("bar/bar", "momentum_y", 0.5, "half_momentum")):
-    with open(f"{work}/{source}.steps.csv", newline="") as f:
-        rows = list(csv.DictReader(f))
-    if factor is None:  # one step late
-        for n in range(len(rows) - 1, 0, -1):
-            rows[n][column] = rows[n - 1][column]
-    else:
-        for r in rows:
-            r[column] = repr(factor * float(r[column]))
-    with open(f"{work}/{name}.csv", "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0]))
-        w.writeheader()
-        w.writerows(rows)
+    write_altered(f"{work}/{source}.steps.csv", column, factor, f"{work}/{name}.csv")  # factor None: one step late
 PY
 for control in "$work/membrane_alpha/good.steps.csv" "$work/no_reaction.csv" "$work/late_reaction.csv" \
     "$work/half_momentum.csv"; do

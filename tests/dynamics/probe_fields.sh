@@ -11,20 +11,9 @@
 #  - controls: the checker fails on a table whose v is one step late, with a NaN acceleration, with a
 #    velocity column without its acceleration, and on a table without v.
 # Usage: probe_fields.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
-# MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (cmake/SignoriniTesting.cmake).
-set -uo pipefail
-signorini=$1 src=$3 work=$4
-IFS='|' read -r -a launcher <<< "$2"
-py=/usr/bin/python3
+# (MPIEXEC: the launcher of cmake/SignoriniTesting.cmake; run_helpers.sh reads the arguments.)
+source "$(dirname "$0")/run_helpers.sh" "$@"
 check="$py $src/tests/dynamics/check_probe_rates.py"
-decks=$src/tests/driver/decks
-rm -rf "$work" && mkdir -p "$work"
-fail() { echo "FAIL: $*"; exit 1; }
-run() {  # run NAME NP ARGS...: the run's folder is $work/NAME
-  local name=$1 np=$2; shift 2
-  "${launcher[0]}" "${launcher[1]:--n}" "$np" "${launcher[@]:2}" "$signorini" --output-dir "$work/$name" "$@" > "$work/$name.log" 2>&1 ||
-    { cat "$work/$name.log"; fail "run $name"; }
-}
 newmark=(--set "Time Integration/Alpha=0.6" --set "Time Integration/Beta=0.4")
 membrane=(--set "Time Integration/Final Time=1.2" --set "Output/Probes/middle=0.5, 0.5"
           --set "Output/Probes/edge=1, 0.25" "${newmark[@]}")
@@ -38,15 +27,10 @@ $check "$work/membrane/good.steps.csv" 0.6 0.4 0.0025 || fail "membrane: Newmark
 $check "$work/block/block-into-wall.steps.csv" 0.6 0.4 2e-6 || fail "block: Newmark relations at the probes"
 
 $py - "$work" <<'PY' || exit 1
-import csv, glob, sys
+import glob, sys
 import netCDF4
+from step_tables import fail, table
 work = sys.argv[1]
-def table(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-def fail(message):
-    print("FAIL:", message)
-    sys.exit(1)
 full, plain = table(f"{work}/membrane/good.steps.csv"), table(f"{work}/membrane_u/good.steps.csv")
 if not any(int(r["active"]) > 0 for r in full):
     fail("the membrane run has no contact: the relations were not checked through contact")

@@ -10,19 +10,8 @@
 #    ranks' boundary: its mean takes cells of both ranks);
 #  - the list may come in any order and spacing ("sigma,v , u" gives u, v and the stress).
 # Usage: probe_stress.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
-# MPIEXEC is the launcher "EXECUTABLE|NUMPROC_FLAG|PREFLAGS..." (cmake/SignoriniTesting.cmake).
-set -uo pipefail
-signorini=$1 src=$3 work=$4
-IFS='|' read -r -a launcher <<< "$2"
-py=/usr/bin/python3
-decks=$src/tests/driver/decks
-rm -rf "$work" && mkdir -p "$work"
-fail() { echo "FAIL: $*"; exit 1; }
-run() {  # run NAME NP ARGS...: the run's folder is $work/NAME
-  local name=$1 np=$2; shift 2
-  "${launcher[0]}" "${launcher[1]:--n}" "$np" "${launcher[@]:2}" "$signorini" --output-dir "$work/$name" "$@" > "$work/$name.log" 2>&1 ||
-    { cat "$work/$name.log"; fail "run $name"; }
-}
+# (MPIEXEC: the launcher of cmake/SignoriniTesting.cmake; run_helpers.sh reads the arguments.)
+source "$(dirname "$0")/run_helpers.sh" "$@"
 # The block of block-on-floor.xml: 0.1 m x 0.05 m, 16 x 8 cells of 6.25 mm; E = 73 GPa, nu = 0.33.
 block=(--set "Problem/Initial Displacement=1e-4*x + 2e-5*y, -3e-5*y" --set "Problem/Initial Velocity=0, 0"
        --set "Time Integration/Final Time=2e-4" --set "Output/Write Exodus=true"
@@ -33,15 +22,10 @@ run one 1 --set "Output/Probe Fields=sigma,v , u" "${block[@]}"
 run two 2 --set "Output/Probe Fields=u, sigma" "${block[@]}"
 
 $py - "$work" <<'PY' || exit 1
-import csv, glob, math, sys
+import glob, math, sys
 import netCDF4
+from step_tables import fail, table
 work = sys.argv[1]
-def table(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-def fail(message):
-    print("FAIL:", message)
-    sys.exit(1)
 E, nu = 73e9, 0.33
 lam, mu = E * nu / ((1 + nu) * (1 - 2 * nu)), E / (2 * (1 + nu))
 exx, eyy, exy = 1e-4, -3e-5, 1e-5  # u0 = (1e-4 x + 2e-5 y, -3e-5 y): gamma_xy = 2e-5
