@@ -26,6 +26,7 @@
 
 #include "signorini/solvers/CoarseSchurCorrection.hpp"
 #include "signorini/fem/ContactCoupling.hpp"
+#include "signorini/fem/LoadResultant.hpp"
 #include "signorini/solvers/ContactQP.hpp"
 #include "signorini/io/CsvWriter.hpp"
 #include "signorini/io/OutputStaging.hpp"
@@ -1238,13 +1239,18 @@ std::vector<std::string> Simulation::stepColumns(const PassOptions& options) con
                                       "time_assembly", "time_contact", "time_output", "time_unconstrained",
                                       "time_remesh", "time_estimate", "cells"};
   const int nc = I.problem->components();
-  // The supports' force on the body (the rows that the Dirichlet elimination drops), after contact_force.
-  if (I.problem->hasDirichletConditions()) {
-    const auto after = std::find(columns.begin(), columns.end(), "contact_force") + 1;
-    const std::vector<std::string> names = nc == 1 ? std::vector<std::string>{"reaction_force"}
-                                                   : std::vector<std::string>{"reaction_force_x", "reaction_force_y"};
-    columns.insert(after, names.begin(), names.end());
-  }
+  // After contact_force: the supports' force on the body (the rows that the Dirichlet elimination
+  // drops) and the applied loads' resultant.
+  std::vector<std::string> forces;
+  for (const auto& [force, reported] : {std::pair<std::string, bool>{"reaction_force", I.problem->hasDirichletConditions()},
+                                        std::pair<std::string, bool>{"applied_load", fem::appliesLoads(*I.problem)}})
+    if (reported) {
+      if (nc == 1)
+        forces.push_back(force);
+      else
+        for (const char* c : {"_x", "_y"}) forces.push_back(force + c);
+    }
+  columns.insert(std::find(columns.begin(), columns.end(), "contact_force") + 1, forces.begin(), forces.end());
   if (I.deck.sublist("Output").get<bool>("Measure Contact Overhead"))
     columns.push_back("unconstrained_iterations");  // the benchmark unit's iterations
   columns.insert(columns.end(), I.probeColumns.begin(), I.probeColumns.end());
@@ -1282,8 +1288,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
 
   const std::vector<std::string> columns = stepColumns(options);
   const int nc = I.problem->components();
-  const bool reportReaction = I.problem->hasDirichletConditions();
-  const size_t reactionColumn = std::find(columns.begin(), columns.end(), "contact_force") - columns.begin() + 1;
+  const bool reportReaction = I.problem->hasDirichletConditions(), reportLoad = fem::appliesLoads(*I.problem);
+  const size_t forceColumn = std::find(columns.begin(), columns.end(), "contact_force") - columns.begin() + 1;
   const bool measureOverhead = outParams.get<bool>("Measure Contact Overhead");
   const size_t timeOutputColumn = std::find(columns.begin(), columns.end(), "time_output") - columns.begin();
   std::unique_ptr<io::CsvWriter> csv;
@@ -1409,11 +1415,17 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                lambdaToPhysical * qr.maxLambda, lambdaToPhysical * qr.minLambda, qr.minGap,
                                lambdaToPhysical * qr.maxComplementarity, tAssembly,
                                tContact, 0.0, tFree, tRemesh, tEstimate, double(d->forest->numGlobalCells())};
+    std::vector<double> forces;  // the columns after contact_force
     if (reportReaction) {  // sum_d (M a + K u - f + B lambda)_d over the Dirichlet rows, per component
       auto reaction = d->assembler->dirichletRowSums(uOverlap, *aOverlap, *I.problem, t, d->lumpAt);
       if (d->coupling) reaction[nc == 1 ? 0 : I.problem->contactComponent] += lambdaToPhysical * d->coupling->heldShare(lambda);
-      row.insert(row.begin() + static_cast<std::ptrdiff_t>(reactionColumn), reaction.begin(), reaction.end());
+      forces.insert(forces.end(), reaction.begin(), reaction.end());
     }
+    if (reportLoad) {
+      const auto load = fem::loadResultant(*d->mesh, nc, *I.problem, t);
+      forces.insert(forces.end(), load.begin(), load.end());
+    }
+    row.insert(row.begin() + static_cast<std::ptrdiff_t>(forceColumn), forces.begin(), forces.end());
     if (measureOverhead) row.push_back(freeIterations);
     const Vector* const fields[] = {&uOverlap, vOverlap.get(), aOverlap.get()};  // u, v, a (v, a may be null)
     for (const auto& p : I.probes) {

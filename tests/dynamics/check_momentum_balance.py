@@ -7,13 +7,14 @@ vanish, constants and translations being in its kernel) gives
     sum_j m_j a_j^n = F_c(t_n) + contact_c^n + reaction_c^n,
 where reaction^n is the sum of the rows the Dirichlet elimination drops (reaction_force), contact
 the contact force's resultant (contact_force along the contact direction) and F the applied loads'
-resultant. Newmark's (3.2), v^n = v^{n-1} + k ((1 - alpha) a^{n-1} + alpha a^n), then gives, step by
+resultant (applied_load, in a table of a problem with loads). Newmark's (3.2), v^n = v^{n-1} + k ((1 - alpha) a^{n-1} + alpha a^n), then gives, step by
 step and up to the solves' tolerance,
     momentum(n) - momentum(n-1) = k ((1 - alpha) G(n-1) + alpha G(n)),  G = F + contact + reaction.
 
 Usage: check_momentum_balance.py STEPS_CSV TOL [--alpha A] [--load EXPR ...] [--contact C:S] [--free]
   --load EXPR: the applied loads' resultant of each component as a Python expression of t (math's
-    names allowed), one per component (default 0);
+    names allowed), one per component: the table's applied_load columns must equal it (to 1e-9 of its
+    largest magnitude); without them it stands for them (default: the columns, or 0 without them);
   --contact C:S: the contact force acts on component C (0 or 1) with sign S (+1 or -1; default 0:+1);
   --free: a body without Dirichlet conditions, whose table has no reaction_force columns (they are 0);
   TOL: relative to the largest |k G| of the run.
@@ -61,6 +62,14 @@ loads = args.load + ["0"] * (nc - len(args.load))
 if len(loads) != nc:
     print(f"FAIL: {len(args.load)} --load expressions for {nc} component(s)")
     sys.exit(1)
+applied = [f"applied_load{s}" for s in suffixes]
+has_applied = all(n in header for n in applied)
+if has_applied:
+    try:
+        applied_values = {n: [float(r[n]) for r in rows] for n in applied}
+    except ValueError as e:
+        print(f"FAIL: {args.table}: {e}")
+        sys.exit(1)
 component, sign = args.contact.split(":")
 component, sign = int(component), float(sign)
 t = values["t"]
@@ -71,6 +80,16 @@ scale = 0.0
 residuals = []
 for c, s in enumerate(suffixes):
     load = [eval(loads[c], vars(math), {"t": tn}) for tn in t]
+    if has_applied:
+        column = applied_values[f"applied_load{suffixes[c]}"]
+        if args.load:
+            size = max(abs(x) for x in load) or 1.0
+            n = max(range(len(rows)), key=lambda n: abs(column[n] - load[n]))
+            if not abs(column[n] - load[n]) <= 1e-9 * size:
+                print(f"FAIL: {args.table}: step {rows[n]['step']}: applied_load{suffixes[c]} is {column[n]!r}, "
+                      f"--load gives {load[n]!r}")
+                sys.exit(1)
+        load = column
     reaction = [0.0] * len(rows) if args.free else values[f"reaction_force{s}"]
     G = [load[n] + reaction[n] + (sign * values["contact_force"][n] if c == component else 0.0)
          for n in range(len(rows))]

@@ -2,7 +2,8 @@
 # The step tables' reaction forces (reaction_force: the rows that the Dirichlet elimination drops)
 # and momentum (runs on one mesh) satisfy the momentum balance of the Newmark scheme in every step
 # (check_momentum_balance.py: momentum(n) - momentum(n-1) = k ((1 - alpha) G(n-1) + alpha G(n)),
-# G = applied loads + contact force + reaction), to the solves' tolerance:
+# G = applied_load + contact force + reaction), to the solves' tolerance, with the applied_load
+# columns equal to the loads' resultant computed by hand (to 1e-9):
 #  - the membrane through contact (clamped left, contact right), also with Alpha = 0.6;
 #  - the membrane under a body force varying in time and space and a traction on its top edge,
 #    both non-zero on the clamped edge (their shares there are the support's);
@@ -18,8 +19,10 @@
 #  - a block hanging from its clamped top under its weight (no contact): the mean reaction over 600
 #    steps is its weight, 27173.7 N/m^3 x 0.005 m^2 = 135.87 N/m upwards;
 #  - controls: the Alpha = 0.6 table checked as Alpha = 1/2, a zeroed reaction_force, a reaction_force
-#    one step late and a halved momentum fail the checker;
-#  - adaptive runs have reaction_force but no momentum column.
+#    one step late, a halved momentum and a halved applied_load (against --load, and in the balance)
+#    fail the checker;
+#  - adaptive runs have reaction_force but no momentum column; a problem without loads has no
+#    applied_load column.
 # Usage: momentum_balance.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
 # (MPIEXEC: the launcher of cmake/SignoriniTesting.cmake; run_helpers.sh reads the arguments.)
 source "$(dirname "$0")/run_helpers.sh" "$@"
@@ -79,6 +82,9 @@ if not abs(mean / 135.87 - 1) <= 0.01:
     fail(f"hanging block: mean reaction_force_y {mean:.6g} N/m over {len(hanging)} steps, its weight is 135.87 N/m")
 if any(c.startswith("reaction_force") for c in table(f"{work}/block/block-on-floor.steps.csv")[0]):
     fail("block: a reaction_force column without Dirichlet conditions")
+for f in (f"{work}/block/block-on-floor.steps.csv", f"{work}/membrane/good.steps.csv"):
+    if any(c.startswith("applied_load") for c in table(f)[0]):
+        fail(f"{f}: an applied_load column without loads")
 for f in (f"{work}/adaptive/good.steps.csv", f"{work}/adaptive/good.cycle0.steps.csv"):
     header = table(f)[0]
     if "reaction_force" not in header or "momentum" in header:
@@ -93,7 +99,8 @@ from step_tables import write_altered
 work = sys.argv[1]
 for source, column, factor, name in (("corner/good", "reaction_force", 0.0, "no_reaction"),
                                       ("membrane/good", "reaction_force", None, "late_reaction"),
-                                      ("bar/bar", "momentum_y", 0.5, "half_momentum")):
+                                      ("bar/bar", "momentum_y", 0.5, "half_momentum"),
+                                      ("bar/bar", "applied_load_y", 0.5, "half_load")):
     write_altered(f"{work}/{source}.steps.csv", column, factor, f"{work}/{name}.csv")  # factor None: one step late
 PY
 for control in "$work/membrane_alpha/good.steps.csv" "$work/no_reaction.csv" "$work/late_reaction.csv" \
@@ -104,4 +111,8 @@ for control in "$work/membrane_alpha/good.steps.csv" "$work/no_reaction.csv" "$w
   grep -q "changed by k ((1 - alpha) G(n-1) + alpha G(n))" "$work/control.log" ||
     { cat "$work/control.log"; fail "control $control: another failure"; }
 done
+$check "$work/half_load.csv" 1e-6 --load 0 "--load=-3.75e7*0.1" --contact 1:+1 > "$work/control.log" &&
+  fail "control: the checker passed a halved applied_load_y"
+grep -q "applied_load_y is .*, --load gives" "$work/control.log" || { cat "$work/control.log"; fail "control half_load: another failure"; }
+$check "$work/half_load.csv" 1e-6 --contact 1:+1 > "$work/control.log" && fail "control: the balance held with a halved applied_load_y"
 echo "PASS"
