@@ -388,6 +388,15 @@ for c in 2 -1; do
   refuses "steps_cycle_$c" "plot_steps.py: error: --cycle $c: $work/membrane.cycles.csv has cycles 0 to 1" \
     "$py" "$tools/plot_steps.py" "$work/membrane" --cycle "$c" --columns energy --out "$work/never.png"
 done
+# A time window: the bar's steps with 1e-5 <= t <= 3e-5 are three (k = 1e-5; its t are n k).
+"$py" "$tools/plot_steps.py" "$work/bar" --columns energy --tmin 1e-5 --tmax 3e-5 --out "$work/bar-window.png" \
+  > "$work/plot-window.log" 2>&1 &&
+  grep -qx "wrote $work/bar-window.png: 1 curve(s) in 1 panel(s), 3 step(s) of t in \[1e-05, 3e-05\] in bar" "$work/plot-window.log" ||
+  { cat "$work/plot-window.log"; fail "plot_steps.py --tmin --tmax"; }
+refuses steps_empty_window "plot_steps.py: error: $work/bar.steps.csv: no step with 5 <= t <= 6 (it has t = 0 to " \
+  "$py" "$tools/plot_steps.py" "$work/bar" --columns energy --tmin 5 --tmax 6 --out "$work/never.png"
+refuses steps_reversed_window "plot_steps.py: error: --tmin 2.0 is after --tmax 1.0" \
+  "$py" "$tools/plot_steps.py" "$work/bar" --columns energy --tmin 2 --tmax 1 --out "$work/never.png"
 [ ! -e "$work/never.png" ] || fail "plot_steps.py wrote a figure after an error"
 refuses mirror_nan "check_mirror_symmetry.py: error: argument axis: nan: not a line x2 = c inside" \
   "$py" "$tools/check_mirror_symmetry.py" "$work/membrane" nan
