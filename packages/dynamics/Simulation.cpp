@@ -1250,6 +1250,9 @@ std::vector<std::string> Simulation::stepColumns(const PassOptions& options) con
       else
         for (const char* c : {"_x", "_y"}) forces.push_back(force + c);
     }
+  // Elasticity: the largest von Mises stress at the cell centres and where it occurs.
+  if (nc == 2)
+    for (const char* c : {"max_von_mises", "max_von_mises_x", "max_von_mises_y"}) forces.push_back(c);
   columns.insert(std::find(columns.begin(), columns.end(), "contact_force") + 1, forces.begin(), forces.end());
   if (I.deck.sublist("Output").get<bool>("Measure Contact Overhead"))
     columns.push_back("unconstrained_iterations");  // the benchmark unit's iterations
@@ -1424,6 +1427,10 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     if (reportLoad) {
       const auto load = fem::loadResultant(*d->mesh, nc, *I.problem, t);
       forces.insert(forces.end(), load.begin(), load.end());
+    }
+    if (nc == 2) {
+      const auto peak = dynamic_cast<const fem::ElasticityAssembler&>(*d->assembler).largestVonMises(uOverlap);
+      forces.insert(forces.end(), peak.begin(), peak.end());
     }
     row.insert(row.begin() + static_cast<std::ptrdiff_t>(forceColumn), forces.begin(), forces.end());
     if (measureOverhead) row.push_back(freeIterations);

@@ -393,6 +393,27 @@ std::array<std::vector<double>, 5> ElasticityAssembler::cellCentreStresses(const
   return out;
 }
 
+std::array<double, 3> ElasticityAssembler::largestVonMises(const Vector& uOverlap) const {
+  // {value, -x, -y}: the lexicographic maximum is the largest value at the smallest x, then y.
+  auto better = [](const std::array<double, 3>& a, const std::array<double, 3>& b) { return a > b; };
+  std::array<double, 3> best = {-1.0, 0.0, 0.0};
+  for (LO e = 0; e < mesh_.numLocalCells(); ++e) {
+    const auto [sxx, syy, sxy] = stressAt(uOverlap, e, 0.5, 0.5);
+    double x = 0, y = 0;
+    for (int c = 0; c < 4; ++c) x += 0.25 * mesh_.cornerCoordsHost(e, c, 0), y += 0.25 * mesh_.cornerCoordsHost(e, c, 1);
+    const std::array<double, 3> candidate = {withOutOfPlaneAndVonMises(sxx, syy, sxy)[4], -x, -y};
+    if (better(candidate, best)) best = candidate;
+  }
+  const int size = mesh_.comm()->getSize();
+  std::vector<double> all(3 * static_cast<size_t>(size));
+  Teuchos::gatherAll(*mesh_.comm(), 3, best.data(), 3 * size, all.data());
+  for (int r = 0; r < size; ++r) {
+    const std::array<double, 3> candidate = {all[3 * r], all[3 * r + 1], all[3 * r + 2]};
+    if (better(candidate, best)) best = candidate;
+  }
+  return {best[0], -best[1], -best[2]};
+}
+
 std::array<double, 5> ElasticityAssembler::stressAtPoint(const Vector& uOverlap, double x, double y) const {
   std::vector<std::array<double, 3>> terms;
   for (const auto& at : mesh_.locateAll(x, y)) terms.push_back(stressAt(uOverlap, at.cell, at.s, at.r));

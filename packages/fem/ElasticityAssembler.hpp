@@ -76,6 +76,9 @@ class ElasticityAssembler : public Assembler {
   /// holds the point (one inside a cell; two or four on edges and corners, where the stress of Q1
   /// elements jumps), on all ranks; NaN outside the mesh. Collective; the bits do not depend on the partition.
   std::array<double, 5> stressAtPoint(const Vector& uOverlap, double x, double y) const;
+  /// The largest von Mises stress at the cell centres of all ranks (cellCentreStresses()) and the
+  /// centre where it occurs, {value, x, y} (of equal values the smallest x, then y). Collective.
+  std::array<double, 3> largestVonMises(const Vector& uOverlap) const;
 
  private:
   /// {sigma_xx, sigma_yy, sigma_xy} completed by sigma_zz (plane strain) and the von Mises stress.

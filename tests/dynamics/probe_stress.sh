@@ -8,7 +8,10 @@
 #    stress of that cell (the same quantity, two outputs) in every written step;
 #  - 2 ranks give the same probe stresses as 1 rank to 1e-9 in every step (the node probe lies on the
 #    ranks' boundary: its mean takes cells of both ranks);
-#  - the list may come in any order and spacing ("sigma,v , u" gives u, v and the stress).
+#  - the list may come in any order and spacing ("sigma,v , u" gives u, v and the stress);
+#  - the step tables' max_von_mises (every elasticity run) is the uniform strain's von Mises stress at
+#    step 0, the largest cell von_mises of the Exodus file in every written step, at that cell's centre
+#    (max_von_mises_x, _y), and the same on 2 ranks to 1e-9.
 # Usage: probe_stress.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
 # (MPIEXEC: the launcher of cmake/SignoriniTesting.cmake; run_helpers.sh reads the arguments.)
 source "$(dirname "$0")/run_helpers.sh" "$@"
@@ -73,6 +76,30 @@ with netCDF4.Dataset(files[0]) as d:
             if not abs(value - float(row[f"probe:centre:{q}"])) <= 1e-12 * abs(sxx):
                 fail(f"t = {t}: probe:centre:{q} = {row[f'probe:centre:{q}']}, the Exodus cell's {q} = {value!r}")
             checked += 1
+# max_von_mises: the uniform value at step 0, the Exodus cells' largest and its centre later, 2 ranks alike.
+if not abs(float(one[0]["max_von_mises"]) - vm) <= 1e-9 * vm:
+    fail(f"step 0: max_von_mises {one[0]['max_von_mises']}, the uniform strain's von Mises stress is {vm!r}")
+for a, b in zip(one, two):
+    if not abs(float(a["max_von_mises"]) - float(b["max_von_mises"])) <= 1e-9 * vm:
+        fail(f"step {a['step']}: max_von_mises {a['max_von_mises']} on 1 rank, {b['max_von_mises']} on 2")
+with netCDF4.Dataset(files[0]) as d:
+    vm_cells = d.variables[f"vals_elem_var{names.index('von_mises') + 1}eb1"]
+    located = 0
+    for i, t in enumerate(times):
+        row = next(r for r in one if abs(float(r["t"]) - t) <= 1e-12)
+        values = vm_cells[i][:]
+        top = max(range(len(values)), key=lambda e: values[e])
+        if not abs(float(row["max_von_mises"]) - values[top]) <= 1e-12 * vm:
+            fail(f"t = {t}: max_von_mises {row['max_von_mises']}, the Exodus cells' largest von_mises {values[top]!r}")
+        # Its place is the centre of a cell with the largest value (symmetric states tie, to rounding).
+        at = (float(row["max_von_mises_x"]), float(row["max_von_mises_y"]))
+        cell_at = [e for e, c in enumerate(centres) if abs(c[0] - at[0]) <= 1e-12 and abs(c[1] - at[1]) <= 1e-12]
+        if not (len(cell_at) == 1 and values[top] - values[cell_at[0]] <= 1e-9 * vm):
+            fail(f"t = {t}: max_von_mises at {at}, not the centre of a cell with the largest von_mises {values[top]!r}")
+        located += values[top] - min(values) > 1e-3 * vm  # not uniform: the place tells something
+    if located < len(times) // 2:
+        fail(f"the cell stresses are uniform in {len(times) - located} of {len(times)} steps: the place was hardly checked")
+print(f"max_von_mises: the Exodus cells' largest and a cell centre holding it in {len(times)} steps")
 print(f"step 0 exact at {len(probes)} probes; 1 and 2 ranks agree in {len(one)} steps; "
       f"the centre probe equals its cell's Exodus stress in {checked} values")
 PY
