@@ -22,6 +22,7 @@ it, before anything is written. Uses Debian's python3 with matplotlib.
 import argparse
 import csv
 import fnmatch
+import math
 import os
 import sys
 
@@ -80,6 +81,9 @@ def main():
     ap.add_argument("--tmax", type=float, default=float("inf"), help="draw the steps with t <= T1")
     ap.add_argument("--out", required=True, help="the PNG file to write")
     a = ap.parse_args()
+    for name in ("tmin", "tmax"):
+        if math.isnan(getattr(a, name)):
+            raise InputError(f"--{name} nan: not a time")
     if not a.tmin <= a.tmax:
         raise InputError(f"--tmin {a.tmin} is after --tmax {a.tmax}")
     suffix = ".steps.csv" if a.cycle is None else f".cycle{a.cycle}.steps.csv"

@@ -124,10 +124,19 @@ std::pair<std::vector<int>, bool> parseProbeFields(const std::string& text, bool
   static const char* const names[] = {"u", "v", "a", "sigma"};
   bool chosen[4] = {true, false, false, false};
   bool named[4] = {false, false, false, false};
-  std::istringstream items(text);
-  for (std::string item; std::getline(items, item, ',');) {
+  std::vector<std::string> items(1);
+  for (const char c : text) {
+    if (c == ',')
+      items.emplace_back();
+    else
+      items.back() += c;
+  }
+  for (const auto& item : items) {
     const auto first = item.find_first_not_of(" \t"), last = item.find_last_not_of(" \t");
     const std::string name = first == std::string::npos ? "" : item.substr(first, last - first + 1);
+    if (name.empty())
+      SIGNORINI_USER_ERROR("Output/Probe Fields: \"" << text << "\" has an empty item: list u, v, a or sigma, "
+                                                      "separated by commas");
     const auto at = std::find(std::begin(names), std::end(names), name) - std::begin(names);
     if (at == 4)
       SIGNORINI_USER_ERROR("Output/Probe Fields: \"" << name << "\" in \"" << text
@@ -966,20 +975,21 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     if (parts.size() != 2 || parts[0].find_first_not_of(" \t") == std::string::npos ||
         parts[1].find_first_not_of(" \t") == std::string::npos)
       SIGNORINI_USER_ERROR("Output/Probes/" << name << ": expected \"x, y\", got \"" << spec << "\"");
-    double x, y;
-    char extra;
-    if (std::sscanf(spec.c_str(), " %lf , %lf %c", &x, &y, &extra) != 2) {  // not two plain numbers
-      double xy[2];
-      for (int c = 0; c < 2; ++c) {
-        const core::Expression coordinate(parts[c], "Output/Probes/" + name + (c ? " (y)" : " (x)"));
-        if (!coordinate.isConstant())
-          SIGNORINI_USER_ERROR("Output/Probes/" << name << ": \"" << spec
-                                                << "\": a probe's coordinates are numbers or constant expressions, not "
-                                                   "functions of x, y or t");
-        xy[c] = coordinate(0, 0, 0);
-      }
-      x = xy[0], y = xy[1];
+    double xy[2];
+    for (int c = 0; c < 2; ++c) {
+      // A plain number (nan and inf too, refused below with the point) as the whole text, else an expression.
+      const char* text = parts[c].c_str();
+      char* end = nullptr;
+      xy[c] = std::strtod(text, &end);
+      if (end != text && std::string(end).find_first_not_of(" \t") == std::string::npos) continue;
+      const core::Expression coordinate(parts[c], "Output/Probes/" + name + (c ? " (y)" : " (x)"));
+      if (!coordinate.isConstant())
+        SIGNORINI_USER_ERROR("Output/Probes/" << name << ": \"" << spec
+                                              << "\": a probe's coordinates are numbers or constant expressions, not "
+                                                 "functions of x, y or t");
+      xy[c] = coordinate(0, 0, 0);
     }
+    const double x = xy[0], y = xy[1];
     if (!std::isfinite(x) || !std::isfinite(y))
       SIGNORINI_USER_ERROR("Output/Probes/" << name << ": \"" << spec << "\" is not a point (a coordinate is not a finite number)");
     I.probes.push_back({name, {x, y}});
@@ -1005,11 +1015,33 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   I.initialForest = std::make_shared<mesh::Forest>(I.coarse, core::rawMpiComm(*comm), meshParams.get<int>("Refinement Level"));
   // Set-up checks on the initial mesh, before any output exists.
   auto d = I.build(I.initialForest, 0);
-  for (const auto& [name, p] : I.probes) {
+  for (auto& [name, p] : I.probes) {
     double s, r;
-    int found = d->mesh->locate(p[0], p[1], s, r) >= 0 ? 1 : 0;
+    const LO cell = d->mesh->locate(p[0], p[1], s, r);
+    int found = cell >= 0 ? 1 : 0;
     int any = 0;
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, found, Teuchos::outArg(any));
+    // A point outside every cell by more than rounding but within the locator's tolerance (1e-10 of
+    // the cell) would be outside every cell of finer meshes: it moves onto the boundary of the first
+    // rank's cell. Points inside a cell (to rounding), the same on any partition, stay.
+    const double rounding = 1e-13;
+    int inside = found && s >= -rounding && s <= 1 + rounding && r >= -rounding && r <= 1 + rounding, anyInside = 0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, inside, Teuchos::outArg(anyInside));
+    double moved[3] = {0, p[0], p[1]};  // {moved?, x, y}
+    if (found && !anyInside) {
+      const double sc = std::clamp(s, 0.0, 1.0), rc = std::clamp(r, 0.0, 1.0);
+      moved[0] = 1, moved[1] = moved[2] = 0;
+      for (int c = 0; c < 4; ++c) {
+        const double N = ((c & 1) ? sc : 1 - sc) * ((c & 2) ? rc : 1 - rc);
+        moved[1] += N * d->mesh->cornerCoordsHost(cell, c, 0), moved[2] += N * d->mesh->cornerCoordsHost(cell, c, 1);
+      }
+    }
+    int mover = found && moved[0] ? comm->getRank() : comm->getSize(), first = 0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, mover, Teuchos::outArg(first));
+    if (first < comm->getSize()) {
+      Teuchos::broadcast(*comm, first, 3, moved);
+      p = {moved[1], moved[2]};
+    }
     if (!any) {  // name the mesh's extent (its corners' bounding box; an Exodus mesh need not fill it)
       double x0 = core::kInf, x1 = -core::kInf, y0 = core::kInf, y1 = -core::kInf;
       for (int t = 0; t < I.coarse->numTrees(); ++t)
@@ -1252,7 +1284,8 @@ std::vector<std::string> Simulation::stepColumns(const PassOptions& options) con
     }
   // Elasticity: the largest von Mises stress at the cell centres and where it occurs.
   if (nc == 2)
-    for (const char* c : {"max_von_mises", "max_von_mises_x", "max_von_mises_y"}) forces.push_back(c);
+    // (_at_: ParaView's IOSS reader takes globals x_x, x_y for a vector x, which the scalar would clash with)
+    for (const char* c : {"max_von_mises", "max_von_mises_at_x", "max_von_mises_at_y"}) forces.push_back(c);
   columns.insert(std::find(columns.begin(), columns.end(), "contact_force") + 1, forces.begin(), forces.end());
   if (I.deck.sublist("Output").get<bool>("Measure Contact Overhead"))
     columns.push_back("unconstrained_iterations");  // the benchmark unit's iterations

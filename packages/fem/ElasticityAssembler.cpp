@@ -1,6 +1,7 @@
 #include "signorini/fem/ElasticityAssembler.hpp"
 
 #include <cmath>
+#include <algorithm>
 #include <limits>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -394,24 +395,30 @@ std::array<std::vector<double>, 5> ElasticityAssembler::cellCentreStresses(const
 }
 
 std::array<double, 3> ElasticityAssembler::largestVonMises(const Vector& uOverlap) const {
-  // {value, -x, -y}: the lexicographic maximum is the largest value at the smallest x, then y.
-  auto better = [](const std::array<double, 3>& a, const std::array<double, 3>& b) { return a > b; };
-  std::array<double, 3> best = {-1.0, 0.0, 0.0};
-  for (LO e = 0; e < mesh_.numLocalCells(); ++e) {
+  const LO nc = mesh_.numLocalCells();
+  std::vector<double> vm(static_cast<size_t>(nc));
+  double largest = 0;
+  for (LO e = 0; e < nc; ++e) {
     const auto [sxx, syy, sxy] = stressAt(uOverlap, e, 0.5, 0.5);
+    vm[e] = withOutOfPlaneAndVonMises(sxx, syy, sxy)[4];
+    largest = std::max(largest, vm[e]);
+  }
+  double global = 0;
+  Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_MAX, largest, Teuchos::outArg(global));
+  // Values within 1e-6 of the largest are equal (mirror-symmetric states tie up to the solves'
+  // rounding, which depends on the ranks): of them the centre with the smallest x, then y.
+  std::array<double, 2> place = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+  for (LO e = 0; e < nc; ++e) {
+    if (!(vm[e] >= global * (1 - 1e-6))) continue;
     double x = 0, y = 0;
     for (int c = 0; c < 4; ++c) x += 0.25 * mesh_.cornerCoordsHost(e, c, 0), y += 0.25 * mesh_.cornerCoordsHost(e, c, 1);
-    const std::array<double, 3> candidate = {withOutOfPlaneAndVonMises(sxx, syy, sxy)[4], -x, -y};
-    if (better(candidate, best)) best = candidate;
+    place = std::min(place, std::array<double, 2>{x, y});
   }
   const int size = mesh_.comm()->getSize();
-  std::vector<double> all(3 * static_cast<size_t>(size));
-  Teuchos::gatherAll(*mesh_.comm(), 3, best.data(), 3 * size, all.data());
-  for (int r = 0; r < size; ++r) {
-    const std::array<double, 3> candidate = {all[3 * r], all[3 * r + 1], all[3 * r + 2]};
-    if (better(candidate, best)) best = candidate;
-  }
-  return {best[0], -best[1], -best[2]};
+  std::vector<double> all(2 * static_cast<size_t>(size));
+  Teuchos::gatherAll(*mesh_.comm(), 2, place.data(), 2 * size, all.data());
+  for (int r = 0; r < size; ++r) place = std::min(place, std::array<double, 2>{all[2 * r], all[2 * r + 1]});
+  return {global, place[0], place[1]};
 }
 
 std::array<double, 5> ElasticityAssembler::stressAtPoint(const Vector& uOverlap, double x, double y) const {

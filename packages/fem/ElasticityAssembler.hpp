@@ -73,11 +73,13 @@ class ElasticityAssembler : public Assembler {
   std::array<std::vector<double>, 5> cellCentreStresses(const Vector& uOverlap) const;
   /// The stress at the point (x, y): sigma_xx, sigma_yy, sigma_xy, sigma_zz and von Mises as in
   /// cellCentreStresses(), of the mean of sigma_xx, sigma_yy, sigma_xy over the cells whose closure
-  /// holds the point (one inside a cell; two or four on edges and corners, where the stress of Q1
-  /// elements jumps), on all ranks; NaN outside the mesh. Collective; the bits do not depend on the partition.
+  /// holds the point (one inside a cell; two, three or four on edges, hanging nodes and corners, where
+  /// the stress of Q1 elements jumps), on all ranks; NaN outside the mesh. Collective; the bits do not
+  /// depend on the partition.
   std::array<double, 5> stressAtPoint(const Vector& uOverlap, double x, double y) const;
   /// The largest von Mises stress at the cell centres of all ranks (cellCentreStresses()) and the
-  /// centre where it occurs, {value, x, y} (of equal values the smallest x, then y). Collective.
+  /// centre where it occurs, {value, x, y}: of the cells within 1e-6 of the largest value, the centre
+  /// with the smallest x, then y (so that rounding does not move it between mirror cells). Collective.
   std::array<double, 3> largestVonMises(const Vector& uOverlap) const;
 
  private:

@@ -19,7 +19,7 @@ bool isZero(const core::ExpressionList& f) {
 }  // namespace
 
 bool appliesLoads(const ProblemData& problem) {
-  return !isZero(problem.bodyForce) || problem.neumannMask != 0;
+  return !isZero(problem.bodyForce) || (problem.neumannMask != 0 && !isZero(problem.neumannData));
 }
 
 std::vector<double> loadResultant(const mesh::Q1Mesh& mesh, int components, const ProblemData& problem, double t) {
@@ -44,7 +44,7 @@ std::vector<double> loadResultant(const mesh::Q1Mesh& mesh, int components, cons
       terms.push_back(term);
     }
   }
-  if (problem.neumannMask)
+  if (problem.neumannMask && !isZero(problem.neumannData))
     for (const auto& be : mesh.boundaryEdges()) {
       if (!(be.segments & problem.neumannMask)) continue;
       std::array<double, 2> term = {0.0, 0.0};

@@ -8,7 +8,7 @@
 
 namespace signorini::fem {
 
-/// Whether \p problem applies loads: a body force other than the constant 0, or Neumann segments.
+/// Whether \p problem applies loads: a body force or Neumann data (on Neumann segments) other than the constant 0.
 bool appliesLoads(const ProblemData& problem);
 
 /// The resultant of the applied loads at time \p t, one entry per component [force, per unit

@@ -494,6 +494,13 @@ signorini_add_driver_test(bad_probe_name_too_long_for_stress EXIT 1
 signorini_add_driver_test(bad_probe_fields_unknown EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probe Fields=u, w" ${decks}/good.xml
   REGEX "Output/Probe Fields: \"w\" in \"u, w\" is not a field: list u, v, a or sigma, separated by commas")
+signorini_add_driver_test(bad_probe_fields_trailing_comma EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probe Fields=u," ${decks}/good.xml
+  REGEX "Output/Probe Fields: \"u,\" has an empty item: list u, v, a or sigma, separated by commas")
+# A number with a stray exponent is no number (strtod would read "0.5e" as 0.5): it goes to the expression parser.
+signorini_add_driver_test(bad_probe_number_typo EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Probes/p=0.5e, 0.5" ${decks}/good.xml
+  REGEX "Output/Probes/p [(]x[)]: cannot parse expression '0[.]5e'")
 signorini_add_driver_test(bad_probe_fields_twice EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probe Fields=u, v,v" ${decks}/good.xml
   REGEX "Output/Probe Fields: \"v\" is listed twice in \"u, v,v\"")

@@ -14,7 +14,7 @@ step and up to the solves' tolerance,
 Usage: check_momentum_balance.py STEPS_CSV TOL [--alpha A] [--load EXPR ...] [--contact C:S] [--free]
   --load EXPR: the applied loads' resultant of each component as a Python expression of t (math's
     names allowed), one per component: the table's applied_load columns must equal it (to 1e-9 of its
-    largest magnitude); without them it stands for them (default: the columns, or 0 without them);
+    largest magnitude), and a table without them fails (default: the columns, or 0 without them);
   --contact C:S: the contact force acts on component C (0 or 1) with sign S (+1 or -1; default 0:+1);
   --free: a body without Dirichlet conditions, whose table has no reaction_force columns (they are 0);
   TOL: relative to the largest |k G| of the run.
@@ -64,6 +64,9 @@ if len(loads) != nc:
     sys.exit(1)
 applied = [f"applied_load{s}" for s in suffixes]
 has_applied = all(n in header for n in applied)
+if args.load and not has_applied:
+    print(f"FAIL: {args.table}: --load given, but no column {', '.join(applied)}")
+    sys.exit(1)
 if has_applied:
     try:
         applied_values = {n: [float(r[n]) for r in rows] for n in applied}

@@ -115,4 +115,11 @@ $check "$work/half_load.csv" 1e-6 --load 0 "--load=-3.75e7*0.1" --contact 1:+1 >
   fail "control: the checker passed a halved applied_load_y"
 grep -q "applied_load_y is .*, --load gives" "$work/control.log" || { cat "$work/control.log"; fail "control half_load: another failure"; }
 $check "$work/half_load.csv" 1e-6 --contact 1:+1 > "$work/control.log" && fail "control: the balance held with a halved applied_load_y"
+$py -c "import csv, sys; r = list(csv.DictReader(open(sys.argv[1]))); f = [c for c in r[0] if not c.startswith('applied_load')]
+w = csv.DictWriter(open(sys.argv[2], 'w', newline=''), fieldnames=f, extrasaction='ignore'); w.writeheader(); w.writerows(r)" \
+  "$work/bar/bar.steps.csv" "$work/no_load_column.csv"
+$check "$work/no_load_column.csv" 1e-6 --load 0 "--load=-3.75e7*0.1" --contact 1:+1 > "$work/control.log" &&
+  fail "control: the checker passed --load on a table without applied_load"
+grep -q -- "--load given, but no column applied_load_x, applied_load_y" "$work/control.log" ||
+  { cat "$work/control.log"; fail "control no_load_column: another failure"; }
 echo "PASS"
