@@ -14,8 +14,10 @@ step differences (x^n - x^{n-1}) / k instead of the values: the motion of a prob
 contact differs from Newmark's own v^n (README, Outputs). --cycle L takes the tables of cycle L of
 adaptive runs (<base>.cycle<L>.steps.csv; the last cycle is <base>.steps.csv; a cycle the run does
 not have is refused). --tmin, --tmax draw the steps with T0 <= t <= T1 (a window without a step is
-refused; the bounds hold to 1e-9 of the run's duration, as a step's t is the double n k). A column keeps its colour in every run of a panel, and each run has its own line style
-(solid, dashed, dotted, dash-dotted); the legend stands beside the panel. A pattern that
+refused; the bounds hold to 1e-9 of the run's duration, as a step's t is the double n k). A column
+keeps its colour in every run of a panel, and each run has its own line style (solid, dashed,
+dotted, dash-dotted; from the fifth run on with markers); the legend stands beside the panel. A
+pattern that
 matches no column of a run, a missing or cut-short table stop the script with one line naming
 it, before anything is written. Uses Debian's python3 with matplotlib.
 """
@@ -123,7 +125,10 @@ def main():
             for name in columns[panel]:
                 colour = colours.setdefault(name, f"C{len(colours) % 10}")
                 x = table[name]
-                style = dict(lw=1, color=colour, ls=styles[r % len(styles)])
+                # a fifth run and later: the line styles again, with markers
+                marker = [None, "o", "s", "^", "v"][(r // len(styles)) % 5]
+                style = dict(lw=1, color=colour, ls=styles[r % len(styles)], marker=marker, markersize=3,
+                             markevery=max(1, len(t) // 12))
                 if a.rate:
                     y = [(x[n] - x[n - 1]) / (t[n] - t[n - 1]) for n in range(1, len(t))]
                     ax.plot(t[1:], y, label=f"{label}: d({name})/dt", **style)

@@ -263,12 +263,11 @@ std::string AdaptiveSimulation::plan() const {
      << ", contact stabilisation " << t.get<std::string>("Contact Stabilisation") << "\n";
   {
     const auto& out = deck_.sublist("Output");
-    const auto& probes = out.sublist("Probes");
-    if (probes.numParams() > 0) {
+    const auto& probes = sim_->probes();
+    if (!probes.empty()) {
       os << "probes (" << out.get<std::string>("Probe Fields") << ", points of the undeformed body):";
-      for (auto it = probes.begin(); it != probes.end(); ++it)
-        os << (it == probes.begin() ? " " : ", ") << probes.name(it) << " at ("
-           << Teuchos::getValue<std::string>(probes.entry(it)) << ")";
+      for (size_t i = 0; i < probes.size(); ++i)
+        os << (i ? ", " : " ") << probes[i].first << " at (" << probes[i].second[0] << ", " << probes[i].second[1] << ")";
       os << "\n";
     }
   }

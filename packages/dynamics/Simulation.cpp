@@ -1208,6 +1208,7 @@ int Simulation::currentStep() const { return impl_->currentStep; }
 double Simulation::timeStep() const { return impl_->newmark->timeStep; }
 RCP<const Comm> Simulation::comm() const { return impl_->comm; }
 const std::string& Simulation::outputBase() const { return impl_->outputBase; }
+const std::vector<std::pair<std::string, std::array<double, 2>>>& Simulation::probes() const { return impl_->probes; }
 const core::ParameterList& Simulation::deck() const { return impl_->deck; }
 
 namespace {

@@ -146,6 +146,9 @@ class Simulation {
   std::vector<std::string> stepColumns(const PassOptions& options) const;
   RCP<const Comm> comm() const;  ///< the constructor's communicator
   const std::string& outputBase() const;  ///< output folder + "/" + basename
+  /// The probes (Output/Probes) by name with their points as the run samples them (expressions
+  /// evaluated; a point outside the body by the locator's tolerance moved onto it).
+  const std::vector<std::pair<std::string, std::array<double, 2>>>& probes() const;
   /// The deck as the run uses it and its output files record it: validated, defaults filled in,
   /// a relative Mesh/File made absolute (--print-parameters DECK prints it).
   const core::ParameterList& deck() const;

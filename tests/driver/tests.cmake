@@ -514,6 +514,10 @@ signorini_add_driver_test(bad_probe_point EXIT 1
 signorini_add_driver_test(bad_probe_expression_outside_the_mesh EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/far=2*2.5, max(1, 2)/4" ${decks}/good.xml
   REGEX "Output/Probes/far: point [(]5, 0[.]5[)] is outside the mesh")
+# --check names each probe's point as the run samples it: the expressions evaluated.
+signorini_add_driver_test(check_names_probe_points EXIT 0
+  ARGS --check --output-dir {OUT} --set "Output/Probes/mid=max(1, 2)/4, 1/8" ${decks}/good.xml
+  REGEX "probes [(]u, points of the undeformed body[)]: mid at [(]0[.]5, 0[.]125[)]")
 signorini_add_driver_test(bad_probe_point_function EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/p=0.5, t" ${decks}/good.xml
   REGEX "Output/Probes/p: \"0[.]5, t\": a probe's coordinates are numbers or constant expressions, not functions of x, y or t")
