@@ -6,9 +6,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/core/Error.hpp"
-#include "signorini/core/MpiComm.hpp"
-#include "signorini/core/ReproducibleSum.hpp"
-#include "signorini/fem/Q1Kernels.hpp"
+#include "signorini/fem/LoadQuadrature.hpp"
 
 namespace signorini::fem {
 
@@ -26,9 +24,7 @@ std::vector<double> sumDirichletRows(const DirichletRowsInput& in, const Vector&
   const auto& X = mesh.cornerCoordsHost;
   const auto& dofs = mesh.cornerDofsHost;
   const auto& wts = mesh.cornerWeightsHost;
-  bool loaded = false;  // a body force that is not the constant 0
-  for (int c = 0; c < nc; ++c)
-    loaded |= !((*in.bodyForce)[c].isConstant() && (*in.bodyForce)[c](0, 0, 0) == 0.0);
+  const bool loaded = !isZeroField(*in.bodyForce);
   std::vector<std::array<double, 2>> terms;  // one per cell or edge with a Dirichlet unknown
   std::string bad;                           // the first load sample that is not a finite number
   for (LO e = 0; e < mesh.numLocalCells(); ++e) {
@@ -41,17 +37,13 @@ std::vector<double> sumDirichletRows(const DirichletRowsInput& in, const Vector&
     double Xe[4][2], Me[4][4], Ke[8][8], be[4][2] = {};
     for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
     in.element(Xe, Me, Ke);
-    if (loaded)  // as the assemblers' load kernels
-      for (int q = 0; q < 4; ++q) {
-        double N[4], gx[4], gy[4];
-        const double w = kGauss2Weight * kGauss2Weight * q1Gradients(Xe, gauss2Point(q & 1), gauss2Point(q >> 1), N, gx, gy);
-        double x = 0, y = 0;
-        for (int c = 0; c < 4; ++c) x += N[c] * Xe[c][0], y += N[c] * Xe[c][1];
-        for (int c = 0; c < nc; ++c) {
-          const double f = (*in.bodyForce)[c].sample(x, y, t, bad);
-          for (int a = 0; a < 4; ++a) be[a][c] += w * f * N[a];
-        }
-      }
+    if (loaded) {  // as the assemblers' load kernels
+      double w[4], N[4][4], fq[4][2];
+      cellLoadPoints(Xe, *in.bodyForce, nc, t, bad, w, N, fq);
+      for (int q = 0; q < 4; ++q)
+        for (int c = 0; c < nc; ++c)
+          for (int a = 0; a < 4; ++a) be[a][c] += w[q] * fq[q][c] * N[q][a];
+    }
     std::array<double, 2> term = {0.0, 0.0};
     for (int a = 0; a < 4; ++a)
       for (int ka = 0; ka < 2; ++ka) {
@@ -87,26 +79,16 @@ std::vector<double> sumDirichletRows(const DirichletRowsInput& in, const Vector&
         for (int i = 0; i < nc; ++i) touches |= held[nc * be.node[p] + i] != 0;
       if (!touches) continue;
       std::array<double, 2> term = {0.0, 0.0};
-      for (int g = 0; g < 2; ++g) {  // as the assemblers' traction kernels
-        const double s = gauss2Point(g);
+      double s[2], wq[2][2];  // as the assemblers' traction kernels
+      edgeLoadPoints(be, *in.neumann, nc, t, bad, s, wq);
+      for (int g = 0; g < 2; ++g)
         for (int c = 0; c < nc; ++c) {
-          const double q = (*in.neumann)[c].sample((1 - s) * be.x[0][0] + s * be.x[1][0],
-                                                   (1 - s) * be.x[0][1] + s * be.x[1][1], t, bad);
-          const double v = kGauss2Weight * be.length() * q;
-          if (held[nc * be.node[0] + c]) term[c] -= v * (1 - s);
-          if (held[nc * be.node[1] + c]) term[c] -= v * s;
+          if (held[nc * be.node[0] + c]) term[c] -= wq[g][c] * (1 - s[g]);
+          if (held[nc * be.node[1] + c]) term[c] -= wq[g][c] * s[g];
         }
-      }
       terms.push_back(term);
     }
-  core::throwFirstUserError(*mesh.comm(), bad);
-  std::vector<double> sums(nc, 0.0);
-  core::reproducibleSums(*mesh.comm(), nc, terms.size(),
-                         [&](std::size_t k, double* out) {
-                           for (int c = 0; c < nc; ++c) out[c] = terms[k][c];
-                         },
-                         sums.data());
-  return sums;
+  return sumTermsOverRanks(mesh, nc, terms, bad);
 }
 
 }  // namespace signorini::fem
