@@ -270,6 +270,8 @@ std::string AdaptiveSimulation::plan() const {
         os << (i ? ", " : " ") << probes[i].first << " at (" << probes[i].second[0] << ", " << probes[i].second[1] << ")";
       os << "\n";
     }
+    if (const auto* p = sim_->momentPoint())
+      os << "moments and angular momentum about (" << (*p)[0] << ", " << (*p)[1] << ") (Output/Moment Point)\n";
   }
   {
     const int finer = a.get<std::string>("Strategy") == "none"

@@ -105,7 +105,44 @@ core::ParameterList outputParameters() {
                   "(elasticity: each with :x and :y appended); sigma (elasticity) the stress probe:<name>:sigma_xx, "
                   ":sigma_yy, :sigma_xy, :sigma_zz and :von_mises [force / area], the mean over the cells that hold "
                   "the point");
+  core::addString(p, "Moment Point", "0, 0",
+                  "Elasticity: the point \"x, y\" (numbers or constant expressions) about which the step table's "
+                  "moments are taken: reaction_moment, applied_moment, contact_moment [force length / length], "
+                  "counterclockwise positive, and angular_momentum");
   return p;
+}
+
+/// A point "x, y" of the deck: numbers or constant expressions ("0.05/2, pi/8"; commas inside
+/// parentheses belong to calls), finite; \p key names the entry and \p whose the point in messages.
+std::array<double, 2> parsePoint(const std::string& spec, const std::string& key, const std::string& whose) {
+  std::vector<std::string> parts(1);
+  int depth = 0;
+  for (const char c : spec) {
+    depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+    if (c == ',' && depth == 0)
+      parts.emplace_back();
+    else
+      parts.back() += c;
+  }
+  if (parts.size() != 2 || parts[0].find_first_not_of(" \t") == std::string::npos ||
+      parts[1].find_first_not_of(" \t") == std::string::npos)
+    SIGNORINI_USER_ERROR(key << ": expected \"x, y\", got \"" << spec << "\"");
+  std::array<double, 2> xy;
+  for (int c = 0; c < 2; ++c) {
+    // A plain number (nan and inf too, refused below with the point) as the whole text, else an expression.
+    const char* text = parts[c].c_str();
+    char* end = nullptr;
+    xy[c] = std::strtod(text, &end);
+    if (end != text && std::string(end).find_first_not_of(" \t") == std::string::npos) continue;
+    const core::Expression coordinate(parts[c], key + (c ? " (y)" : " (x)"));
+    if (!coordinate.isConstant())
+      SIGNORINI_USER_ERROR(key << ": \"" << spec << "\": " << whose
+                               << " coordinates are numbers or constant expressions, not functions of x, y or t");
+    xy[c] = coordinate(0, 0, 0);
+  }
+  if (!std::isfinite(xy[0]) || !std::isfinite(xy[1]))
+    SIGNORINI_USER_ERROR(key << ": \"" << spec << "\" is not a point (a coordinate is not a finite number)");
+  return xy;
 }
 
 /// The suffix of a probe's column for field \p field (0 u, 1 v, 2 a) and component \p c of \p nc.
@@ -325,6 +362,8 @@ struct Discretisation {
   double courant = 0;
   bool lumpedMass = false;
   std::vector<char> lumpAt;  ///< the unknowns whose mass couplings M holds on its diagonal (empty: none)
+  /// Per support (Simulation::Impl::supports): flags on the overlap unknowns it holds (built at the first output).
+  std::vector<std::vector<char>> supportRows;
   long builtAtStep = 0;  ///< identifies the mesh in the Exodus series
   long id = 0;           ///< unique among all discretisations of the run (StepView::meshId)
 };
@@ -355,6 +394,32 @@ struct Simulation::Impl {
   std::vector<int> probeFields = {0};  ///< the fields sampled at each probe: 0 u, 1 v, 2 a (Output/Probe Fields)
   bool probeStress = false;            ///< and the stress (elasticity)
   std::vector<std::string> probeColumns;  ///< the steps table's probe columns, probe by probe, field by field
+  std::array<double, 2> momentPoint = {0, 0};  ///< Output/Moment Point (elasticity's moments)
+  /// The Dirichlet segments (Mesh/Boundary Segments index, name) whose reactions the step table
+  /// gives one by one, in the order of Mesh/Boundary Segments: empty unless two or more hold unknowns.
+  std::vector<std::pair<int, std::string>> supports;
+  /// Flags on d's overlap unknowns per support: each Dirichlet unknown belongs to the first support
+  /// in supports that holds it (a corner between two supports to the first).
+  const std::vector<std::vector<char>>& supportRows(Discretisation& d) const {
+    if (d.supportRows.empty() && !supports.empty()) {
+      const int nc = problem->components();
+      const auto& held = d.assembler->dirichletFlags();
+      std::vector<char> taken(held.size(), 0);
+      for (const auto& [segment, name] : supports) {
+        const unsigned bit = 1u << segment;
+        const auto on = d.mesh->nodesOnSegments(bit);
+        std::vector<char> rows(held.size(), 0);
+        for (size_t n = 0; n < on.size(); ++n)
+          for (int c = 0; c < nc; ++c) {
+            const size_t row = nc * n + c;
+            const bool holds = (problem->dirichletMask & bit) || (nc == 2 && (problem->componentDirichletMask[c] & bit));
+            if (on[n] && holds && held[row] && !taken[row]) rows[row] = taken[row] = 1;
+          }
+        d.supportRows.push_back(std::move(rows));
+      }
+    }
+    return d.supportRows;
+  }
   core::PhaseTimers timers;
   std::map<std::string, double> setupSeconds;  // the phases of the constructor's set-up
   std::unique_ptr<CoarseProblem> coarseProblem;
@@ -962,37 +1027,27 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
       SIGNORINI_USER_ERROR("Output/Probes/" << name.substr(0, 40) << "...: a probe's name has at most "
                                             << maxNameLength << " bytes (it has " << name.size()
                                             << "; the Exodus files name a variable after it)");
-    // "x, y": numbers or constant expressions ("0.05/2, pi/8"); commas inside parentheses belong to calls.
-    std::vector<std::string> parts(1);
-    int depth = 0;
-    for (const char c : spec) {
-      depth += c == '(' ? 1 : c == ')' ? -1 : 0;
-      if (c == ',' && depth == 0)
-        parts.emplace_back();
-      else
-        parts.back() += c;
-    }
-    if (parts.size() != 2 || parts[0].find_first_not_of(" \t") == std::string::npos ||
-        parts[1].find_first_not_of(" \t") == std::string::npos)
-      SIGNORINI_USER_ERROR("Output/Probes/" << name << ": expected \"x, y\", got \"" << spec << "\"");
-    double xy[2];
-    for (int c = 0; c < 2; ++c) {
-      // A plain number (nan and inf too, refused below with the point) as the whole text, else an expression.
-      const char* text = parts[c].c_str();
-      char* end = nullptr;
-      xy[c] = std::strtod(text, &end);
-      if (end != text && std::string(end).find_first_not_of(" \t") == std::string::npos) continue;
-      const core::Expression coordinate(parts[c], "Output/Probes/" + name + (c ? " (y)" : " (x)"));
-      if (!coordinate.isConstant())
-        SIGNORINI_USER_ERROR("Output/Probes/" << name << ": \"" << spec
-                                              << "\": a probe's coordinates are numbers or constant expressions, not "
-                                                 "functions of x, y or t");
-      xy[c] = coordinate(0, 0, 0);
-    }
-    const double x = xy[0], y = xy[1];
-    if (!std::isfinite(x) || !std::isfinite(y))
-      SIGNORINI_USER_ERROR("Output/Probes/" << name << ": \"" << spec << "\" is not a point (a coordinate is not a finite number)");
+    const auto [x, y] = parsePoint(spec, "Output/Probes/" + name, "a probe's");
     I.probes.push_back({name, {x, y}});
+  }
+  const std::string momentPoint = out.get<std::string>("Moment Point");
+  if (I.problem->components() == 1 && momentPoint != outputParameters().get<std::string>("Moment Point"))
+    SIGNORINI_USER_ERROR("Output/Moment Point: moments are reported for plane strain elasticity (Problem/Type); the "
+                         "scalar wave equation has none");
+  I.momentPoint = parsePoint(momentPoint, "Output/Moment Point", "the moment point's");
+  {  // supports reported one by one: two or more Dirichlet segments
+    const unsigned held = I.problem->dirichletMask | I.problem->componentDirichletMask[0] |
+                          (I.problem->components() == 2 ? I.problem->componentDirichletMask[1] : 0u);
+    for (int i = 0; i < I.segments->size(); ++i)
+      if (held >> i & 1u) {
+        const std::string& name = I.segments->name(i);
+        if (name.find_first_of("\"\n\r") != std::string::npos || name.size() > 240)
+          SIGNORINI_USER_ERROR("Mesh/Boundary Segments/" << name.substr(0, 40) << ": the name of a Dirichlet segment "
+                                                                                "names the step table's column reaction:"
+                                                         << name.substr(0, 40) << " when several are held; it must not hold a quote or a line break and has at most 240 bytes");
+        I.supports.emplace_back(i, name);
+      }
+    if (I.supports.size() < 2) I.supports.clear();
   }
   // Two probes must not name one column (a probe "p" with its velocity and a probe "p:v").
   std::map<std::string, std::string> probeOfColumn;
@@ -1209,6 +1264,9 @@ double Simulation::timeStep() const { return impl_->newmark->timeStep; }
 RCP<const Comm> Simulation::comm() const { return impl_->comm; }
 const std::string& Simulation::outputBase() const { return impl_->outputBase; }
 const std::vector<std::pair<std::string, std::array<double, 2>>>& Simulation::probes() const { return impl_->probes; }
+const std::array<double, 2>* Simulation::momentPoint() const {
+  return impl_->problem->components() == 2 ? &impl_->momentPoint : nullptr;
+}
 const core::ParameterList& Simulation::deck() const { return impl_->deck; }
 
 namespace {
@@ -1274,14 +1332,25 @@ std::vector<std::string> Simulation::stepColumns(const PassOptions& options) con
   const int nc = I.problem->components();
   // After contact_force: the supports' force on the body (the rows that the Dirichlet elimination
   // drops) and the applied loads' resultant.
+  // Elasticity: each with its moment about Output/Moment Point, the contact force's too.
   std::vector<std::string> forces;
-  for (const auto& [force, reported] : {std::pair<std::string, bool>{"reaction_force", I.problem->hasDirichletConditions()},
-                                        std::pair<std::string, bool>{"applied_load", fem::appliesLoads(*I.problem)}})
+  if (nc == 2 && I.problem->hasObstacle) forces.push_back("contact_moment");
+  for (const auto& [force, reported] : {std::pair<std::string, bool>{"reaction", I.problem->hasDirichletConditions()},
+                                        std::pair<std::string, bool>{"applied", fem::appliesLoads(*I.problem)}})
     if (reported) {
+      const std::string name = force + (force == "reaction" ? "_force" : "_load");
       if (nc == 1)
-        forces.push_back(force);
+        forces.push_back(name);
       else
-        for (const char* c : {"_x", "_y"}) forces.push_back(force + c);
+        for (const char* c : {"_x", "_y"}) forces.push_back(name + c);
+      if (nc == 2) forces.push_back(force + "_moment");
+      if (force == "reaction")  // each support's share: reaction:<segment>[:x, :y, :moment]
+        for (const auto& support : I.supports) {
+          if (nc == 1)
+            forces.push_back("reaction:" + support.second);
+          else
+            for (const char* c : {":x", ":y", ":moment"}) forces.push_back("reaction:" + support.second + c);
+        }
     }
   // Elasticity: the largest von Mises stress at the cell centres and where it occurs.
   if (nc == 2)
@@ -1300,7 +1369,7 @@ std::vector<std::string> Simulation::stepColumns(const PassOptions& options) con
     if (nc == 1)
       columns.push_back("momentum");
     else
-      for (const char* c : {"momentum_x", "momentum_y"}) columns.push_back(c);
+      for (const char* c : {"momentum_x", "momentum_y", "angular_momentum"}) columns.push_back(c);
   }
   if (options.reportTransferEnergy)
     for (const char* c : {"energy_transferred", "kinetic_energy_transferred"}) columns.push_back(c);
@@ -1392,7 +1461,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   double workExternal = 0, workContact = 0, largestEnergy = 0, initialEnergy = 0;
   std::unique_ptr<Vector> uPrevious, loadPrevious;
   std::vector<double> contactPrevious, lambdaPrevious;
-  // The momentum sum_j m_j v_j of each component, m_j = int rho phi_j (PassOptions::reportWork).
+  // The momentum sum_j m_j v_j of each component, m_j = int rho phi_j, and elasticity's angular
+  // momentum (PassOptions::reportWork).
   std::vector<std::unique_ptr<Vector>> momentumWeights;
   if (options.reportWork) {
     for (const auto& m : meshes)
@@ -1408,6 +1478,18 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       momentumWeights.push_back(std::make_unique<Vector>(d->assembler->ownedMap()));
       d->assembler->assembleLoad(core::ExpressionList(density.str(), "Problem/Density", nc), 0.0, 1.0,
                                  *momentumWeights.back());
+    }
+    if (nc == 2) {  // the angular momentum about Output/Moment Point: (M r) . v, r the rigid rotation about it
+      Vector rotation(d->assembler->overlapMap());
+      {
+        auto h = rotation.getLocalViewHost(Tpetra::Access::OverwriteAll);
+        const auto& X = d->mesh->nodeCoords();
+        for (size_t n = 0; n < X.size(); ++n)
+          for (int c = 0; c < 2; ++c)
+            h(2 * n + c, 0) = c == 0 ? -(X[n][1] - I.momentPoint[1]) : X[n][0] - I.momentPoint[0];
+      }
+      momentumWeights.push_back(std::make_unique<Vector>(d->assembler->ownedMap()));
+      d->assembler->massBeforeElimination(rotation, *I.problem, d->lumpAt, *momentumWeights.back());
     }
   }
 
@@ -1453,13 +1535,27 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                                lambdaToPhysical * qr.maxComplementarity, tAssembly,
                                tContact, 0.0, tFree, tRemesh, tEstimate, double(d->forest->numGlobalCells())};
     std::vector<double> forces;  // the columns after contact_force
-    if (reportReaction) {  // sum_d (M a + K u - f + B lambda)_d over the Dirichlet rows, per component
-      auto reaction = d->assembler->dirichletRowSums(uOverlap, *aOverlap, *I.problem, t, d->lumpAt);
-      if (d->coupling) reaction[nc == 1 ? 0 : I.problem->contactComponent] += lambdaToPhysical * d->coupling->heldShare(lambda);
+    const std::array<double, 2>* momentPoint = nc == 2 ? &I.momentPoint : nullptr;  // elasticity's moments
+    if (momentPoint && d->coupling)  // (+ 0.0: no -0 in the table)
+      forces.push_back(-lambdaToPhysical * d->coupling->moment(lambda, *momentPoint) + 0.0);
+    if (reportReaction) {  // sum_d (M a + K u - f + B lambda)_d over the Dirichlet rows, per component (and moment)
+      auto reaction = d->assembler->dirichletRowSums(uOverlap, *aOverlap, *I.problem, t, d->lumpAt, momentPoint);
+      if (d->coupling) {
+        reaction[nc == 1 ? 0 : I.problem->contactComponent] += lambdaToPhysical * d->coupling->heldShare(lambda);
+        if (momentPoint) reaction[2] += lambdaToPhysical * d->coupling->heldMoment(lambda, *momentPoint);
+      }
       forces.insert(forces.end(), reaction.begin(), reaction.end());
+      for (const auto& rows : I.supportRows(*d)) {  // the same, support by support
+        auto share = d->assembler->dirichletRowSums(uOverlap, *aOverlap, *I.problem, t, d->lumpAt, momentPoint, &rows);
+        if (d->coupling) {
+          share[nc == 1 ? 0 : I.problem->contactComponent] += lambdaToPhysical * d->coupling->heldShare(lambda, rows);
+          if (momentPoint) share[2] += lambdaToPhysical * d->coupling->heldMoment(lambda, *momentPoint, &rows);
+        }
+        forces.insert(forces.end(), share.begin(), share.end());
+      }
     }
     if (reportLoad) {
-      const auto load = fem::loadResultant(*d->mesh, nc, *I.problem, t);
+      const auto load = fem::loadResultant(*d->mesh, nc, *I.problem, t, momentPoint);
       forces.insert(forces.end(), load.begin(), load.end());
     }
     if (nc == 2) {

@@ -149,6 +149,9 @@ class Simulation {
   /// The probes (Output/Probes) by name with their points as the run samples them (expressions
   /// evaluated; a point outside the body by the locator's tolerance moved onto it).
   const std::vector<std::pair<std::string, std::array<double, 2>>>& probes() const;
+  /// The point (Output/Moment Point, evaluated) about which elasticity's step tables take the
+  /// moments and the angular momentum; null for the scalar wave equation.
+  const std::array<double, 2>* momentPoint() const;
   /// The deck as the run uses it and its output files record it: validated, defaults filled in,
   /// a relative Mesh/File made absolute (--print-parameters DECK prints it).
   const core::ParameterList& deck() const;

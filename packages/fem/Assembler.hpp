@@ -1,6 +1,7 @@
 #pragma once
 /// \file Assembler.hpp
 /// The discretisation interface of the time stepper (Assembler) and helpers for its vectors and matrices.
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -80,9 +81,19 @@ class Assembler {
   /// share of those rows added, it is the force that the supports exert on the body (the reaction);
   /// \p uOverlap and \p aOverlap are u and a on the overlap unknowns. Collective; the bits do not
   /// depend on the partition.
+  /// With \p momentPoint (two components only) a third entry: the rows' moment about that point,
+  /// sum_d r_d (M a + K u - f(t) - q(t))_d for the rigid rotation r(x) = (-(y - p_y), x - p_x)
+  /// [force length / length] (the supports' moment, with the contact's share added). \p rows (flags
+  /// on the overlap unknowns): only the rows of the Dirichlet unknowns flagged there (one support's).
   virtual std::vector<double> dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap,
-                                               const ProblemData& problem, double t,
-                                               const std::vector<char>& lumpAt) const = 0;
+                                               const ProblemData& problem, double t, const std::vector<char>& lumpAt,
+                                               const std::array<double, 2>* momentPoint = nullptr,
+                                       const std::vector<char>* rows = nullptr) const = 0;
+  /// \p out (owned) = M w with the mass matrix before the Dirichlet elimination (lumped at \p lumpAt
+  /// as in assembleSystem()) and \p wOverlap = w on all overlap unknowns, Dirichlet ones included:
+  /// for the rigid rotation w = r, (M r) . v is the angular momentum of a velocity v. Collective.
+  virtual void massBeforeElimination(const Vector& wOverlap, const ProblemData& problem,
+                                     const std::vector<char>& lumpAt, Vector& out) const = 0;
 
   /// M (lumped at \p lumpAt) and K of assembleSystem(1, 0, ...) and assembleSystem(0, 1, ...); an
   /// assembler may compute both in one pass over the cells.

@@ -14,6 +14,7 @@
 #include "signorini/core/Error.hpp"
 #include "signorini/core/ReproducibleSum.hpp"
 #include "signorini/core/MpiComm.hpp"
+#include "signorini/fem/LoadQuadrature.hpp"
 #include "signorini/fem/Q1Kernels.hpp"
 
 namespace signorini::fem {
@@ -280,7 +281,12 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
   for (size_t k = 0; k < localIds.size(); ++k) {
     const auto& be = bedges[localIds[k]];
     const int held = (dirichlet[row(be.node[0])] ? 1 : 0) + (dirichlet[row(be.node[1])] ? 1 : 0);
-    if (held) heldEdges_.push_back({localEdgeSegment_[localIds[k]], held * halfLength(be)});
+    const int seg = localEdgeSegment_[localIds[k]];
+    if (held) heldEdges_.push_back({seg, held * halfLength(be)});
+    const auto mid = be.at(0.5);
+    localEdges_.push_back({seg, 2 * halfLength(be), mid[0], mid[1]});
+    for (int p = 0; p < 2; ++p)
+      if (dirichlet[row(be.node[p])]) heldEnds_.push_back({seg, halfLength(be), be.x[p][0], be.x[p][1], row(be.node[p])});
   }
   if (comm_->getSize() == 1) {
     // B is summed into local CRS arrays (columns: the segments) and built from them.
@@ -459,6 +465,35 @@ double ContactCoupling::heldShare(const std::vector<double>& lambda) const {
                          [&](std::size_t k, double* out) { out[0] = heldEdges_[k].second * lambda[heldEdges_[k].first]; },
                          &sum);
   return sum;
+}
+
+double ContactCoupling::weightedSum(const std::vector<WeightedPoint>& points, const std::vector<double>& lambda,
+                                    const std::array<double, 2>* p, const std::vector<char>* rows) const {
+  const int c = unknowns_.component;
+  SIGNORINI_ASSERT(!p || unknowns_.components == 2, "a moment needs two components");
+  double sum = 0;
+  core::reproducibleSums(*comm_, 1, points.size(),
+                         [&](std::size_t k, double* out) {
+                           const auto& q = points[k];
+                           out[0] = rows && !(*rows)[q.row]
+                                        ? 0.0
+                                        : q.weight * lambda[q.segment] * (p ? momentAbout(*p, q.x, q.y, c == 0, c == 1) : 1.0);
+                         },
+                         &sum);
+  return sum;
+}
+
+double ContactCoupling::heldShare(const std::vector<double>& lambda, const std::vector<char>& rows) const {
+  return weightedSum(heldEnds_, lambda, nullptr, &rows);
+}
+
+double ContactCoupling::moment(const std::vector<double>& lambda, const std::array<double, 2>& p) const {
+  return weightedSum(localEdges_, lambda, &p, nullptr);
+}
+
+double ContactCoupling::heldMoment(const std::vector<double>& lambda, const std::array<double, 2>& p,
+                                   const std::vector<char>* rows) const {
+  return weightedSum(heldEnds_, lambda, &p, rows);
 }
 
 std::vector<double> ContactCoupling::applyTranspose(const Vector& u) const {

@@ -65,6 +65,17 @@ class ContactCoupling {
   /// contact edges that end at a Dirichlet unknown of sign |E| / 2 lambda_j (a contact edge next to a
   /// clamped corner). The supports carry it; it belongs to their reaction. Replicated; collective.
   double heldShare(const std::vector<double>& lambda) const;
+  /// heldShare() of the Dirichlet unknowns flagged in \p rows (flags on the overlap unknowns) only.
+  double heldShare(const std::vector<double>& lambda, const std::vector<char>& rows) const;
+  /// The moment about \p p of B lambda over all of Gamma_C, Dirichlet rows included: r^T B lambda =
+  /// sum_j lambda_j sign int_{E_j} r_c ds for the rigid rotation r(x) = (-(y - p_y), x - p_x) of a
+  /// two-component problem (c the constrained component); -moment() in physical units is the
+  /// contact force's moment. Replicated; collective; the bits do not depend on the partition.
+  double moment(const std::vector<double>& lambda, const std::array<double, 2>& p) const;
+  /// The part of moment() in the rows of the Dirichlet unknowns (heldShare() weighted by r_c at the
+  /// Dirichlet end points; with \p rows only those flagged there). Replicated; collective.
+  double heldMoment(const std::vector<double>& lambda, const std::array<double, 2>& p,
+                    const std::vector<char>* rows = nullptr) const;
   /// B^T u for an owned vector u; the result is replicated on every rank.
   std::vector<double> applyTranspose(const Vector& u) const;
   /// gbar_j = int_{E_j} g(., t) ds (3-point Gauss per fine edge), replicated.
@@ -105,6 +116,18 @@ class ContactCoupling {
   std::vector<int> edgeCount_;
   std::vector<int> localEdgeSegment_;
   std::vector<std::pair<int, double>> heldEdges_;  // (segment, sign |E| / 2 per Dirichlet end) of local contact edges
+  /// A local contact edge (or, in heldEnds_, one of its Dirichlet end points): its segment, weight
+  /// (sign |E|, or sign |E| / 2 at an end) and the point where r is taken (midpoint, or end).
+  struct WeightedPoint {
+    int segment;
+    double weight, x, y;
+    LO row = -1;  ///< heldEnds_: the Dirichlet unknown (overlap index)
+  };
+  std::vector<WeightedPoint> localEdges_, heldEnds_;
+  /// sum over \p points (those whose row \p rows flags, if given) of weight lambda_segment times
+  /// r_c(x, y) (\p p given) or 1, over all ranks
+  double weightedSum(const std::vector<WeightedPoint>& points, const std::vector<double>& lambda,
+                     const std::array<double, 2>* p, const std::vector<char>* rows) const;
   std::vector<std::array<double, 4>> edges_;  // all contact edges (x0, y0, x1, y1), replicated
   std::vector<int> edgeSegment_;              // segment of each replicated edge
   Kokkos::View<double* [4], DeviceType> edgeCoords_;  // the same, for kernels

@@ -69,9 +69,7 @@ KOKKOS_INLINE_FUNCTION void elasticElementMatrices(const double Xe[4][2], double
 
 }  // namespace
 
-std::vector<double> ElasticityAssembler::dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap,
-                                                          const ProblemData& problem, double t,
-                                                          const std::vector<char>& lumpAt) const {
+DirichletRowsInput ElasticityAssembler::rowsInput(const ProblemData& problem, const std::vector<char>& lumpAt) const {
   DirichletRowsInput in;
   in.mesh = &mesh_;
   in.components = 2;
@@ -84,7 +82,25 @@ std::vector<double> ElasticityAssembler::dirichletRowSums(const Vector& uOverlap
   in.bodyForce = &problem.bodyForce;
   in.neumann = &problem.neumannData;
   in.neumannMask = problem.neumannMask;
+  return in;
+}
+
+std::vector<double> ElasticityAssembler::dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap,
+                                                          const ProblemData& problem, double t,
+                                                          const std::vector<char>& lumpAt,
+                                                          const std::array<double, 2>* momentPoint,
+                                                          const std::vector<char>* rows) const {
+  auto in = rowsInput(problem, lumpAt);
+  in.momentPoint = momentPoint;
+  in.rows = rows;
   return sumDirichletRows(in, uOverlap, aOverlap, t);
+}
+
+void ElasticityAssembler::massBeforeElimination(const Vector& wOverlap, const ProblemData& problem,
+                                                const std::vector<char>& lumpAt, Vector& out) const {
+  Vector contributions(overlapMap_);
+  massTimesField(rowsInput(problem, lumpAt), wOverlap, contributions);
+  addExported(contributions, *exporter_, out, false);
 }
 
 std::vector<char> ElasticityAssembler::dirichletUnknowns(const mesh::Q1Mesh& mesh, const ProblemData& problem) {

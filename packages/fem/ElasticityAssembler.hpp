@@ -18,6 +18,8 @@
 
 namespace signorini::fem {
 
+struct DirichletRowsInput;
+
 class Q1Pattern;
 
 /// Plane strain elasticity's operators, loads and point values on one Q1Mesh (two interleaved
@@ -58,7 +60,11 @@ class ElasticityAssembler : public Assembler {
                                        double t) const override;
   double evaluateComponent(const Vector& uOverlap, double x, double y, int c) const override;
   std::vector<double> dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap, const ProblemData& problem,
-                                       double t, const std::vector<char>& lumpAt) const override;
+                                       double t, const std::vector<char>& lumpAt,
+                                       const std::array<double, 2>* momentPoint = nullptr,
+                                       const std::vector<char>* rows = nullptr) const override;
+  void massBeforeElimination(const Vector& wOverlap, const ProblemData& problem, const std::vector<char>& lumpAt,
+                             Vector& out) const override;
 
   /// The three rigid body modes (translations in x and y, rotation about the origin of the
   /// coordinates' centroid) as an owned multivector: MueLu's near-nullspace for elasticity.
@@ -83,6 +89,8 @@ class ElasticityAssembler : public Assembler {
   std::array<double, 3> largestVonMises(const Vector& uOverlap) const;
 
  private:
+  /// What sumDirichletRows() and massTimesField() read of this discretisation and \p problem.
+  DirichletRowsInput rowsInput(const ProblemData& problem, const std::vector<char>& lumpAt) const;
   /// {sigma_xx, sigma_yy, sigma_xy} completed by sigma_zz (plane strain) and the von Mises stress.
   std::array<double, 5> withOutOfPlaneAndVonMises(double sxx, double syy, double sxy) const;
   const mesh::Q1Mesh& mesh_;

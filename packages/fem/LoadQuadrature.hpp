@@ -1,8 +1,8 @@
 #pragma once
 /// \file LoadQuadrature.hpp
-/// The loads' quadrature as the assemblers' load kernels take it, on the host, and the sum of
-/// per-cell or per-edge terms over the ranks (internal to the fem package: sumDirichletRows and
-/// loadResultant).
+/// The loads' quadrature as the assemblers' load kernels take it, on the host, moments in the plane,
+/// and the sum of per-cell or per-edge terms over the ranks (internal to the fem package:
+/// sumDirichletRows, loadResultant and ContactCoupling's moments).
 #include <array>
 #include <string>
 #include <vector>
@@ -49,15 +49,22 @@ inline void edgeLoadPoints(const mesh::BoundaryEdge& be, const core::ExpressionL
   }
 }
 
-/// The first \p nc sums over all ranks of \p terms (one per cell or edge), after the first bad
-/// sample of any rank (\p bad) is thrown as a user error. Collective; partition-independent bits.
-inline std::vector<double> sumTermsOverRanks(const mesh::Q1Mesh& mesh, int nc,
-                                             const std::vector<std::array<double, 2>>& terms, const std::string& bad) {
+/// The moment about \p p of a force \p f [force] acting at \p x (plane: the z component of
+/// (x - p) x f), or equally the weight r_c(x) of the rigid rotation r(x) = (-(y - p_y), x - p_x)
+/// for component c of a force.
+inline double momentAbout(const std::array<double, 2>& p, double x, double y, double fx, double fy) {
+  return (x - p[0]) * fy - (y - p[1]) * fx;
+}
+
+/// The first \p count (at most 3) sums over all ranks of \p terms (one per cell or edge), after the
+/// first bad sample of any rank (\p bad) is thrown as a user error. Collective; partition-independent bits.
+inline std::vector<double> sumTermsOverRanks(const mesh::Q1Mesh& mesh, int count,
+                                             const std::vector<std::array<double, 3>>& terms, const std::string& bad) {
   core::throwFirstUserError(*mesh.comm(), bad);
-  std::vector<double> sums(nc, 0.0);
-  core::reproducibleSums(*mesh.comm(), nc, terms.size(),
+  std::vector<double> sums(count, 0.0);
+  core::reproducibleSums(*mesh.comm(), count, terms.size(),
                          [&](std::size_t k, double* out) {
-                           for (int c = 0; c < nc; ++c) out[c] = terms[k][c];
+                           for (int c = 0; c < count; ++c) out[c] = terms[k][c];
                          },
                          sums.data());
   return sums;

@@ -12,10 +12,13 @@ bool appliesLoads(const ProblemData& problem) {
   return !isZeroField(problem.bodyForce) || (problem.neumannMask != 0 && !isZeroField(problem.neumannData));
 }
 
-std::vector<double> loadResultant(const mesh::Q1Mesh& mesh, int components, const ProblemData& problem, double t) {
+std::vector<double> loadResultant(const mesh::Q1Mesh& mesh, int components, const ProblemData& problem, double t,
+                                  const std::array<double, 2>* momentPoint) {
   const int nc = components;
+  const auto* const p = momentPoint;
   SIGNORINI_ASSERT(nc == 1 || nc == 2, "one or two unknowns per node");
-  std::vector<std::array<double, 2>> terms;  // one per cell or Neumann edge
+  SIGNORINI_ASSERT(!p || nc == 2, "a moment needs two components");
+  std::vector<std::array<double, 3>> terms;  // one per cell or Neumann edge
   std::string bad;                           // the first load sample that is not a finite number
   if (!isZeroField(problem.bodyForce)) {
     const auto& X = mesh.cornerCoordsHost;
@@ -24,9 +27,15 @@ std::vector<double> loadResultant(const mesh::Q1Mesh& mesh, int components, cons
       double Xe[4][2], w[4], N[4][4], fq[4][2];
       for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
       cellLoadPoints(Xe, problem.bodyForce, nc, t, bad, w, N, fq);
-      std::array<double, 2> term = {0.0, 0.0};
-      for (int q = 0; q < 4; ++q)
+      std::array<double, 3> term = {0.0, 0.0, 0.0};
+      for (int q = 0; q < 4; ++q) {
         for (int c = 0; c < nc; ++c) term[c] += w[q] * fq[q][c];
+        if (p) {
+          double x = 0, y = 0;  // the point as cellLoadPoints places it
+          for (int a = 0; a < 4; ++a) x += N[q][a] * Xe[a][0], y += N[q][a] * Xe[a][1];
+          term[2] += w[q] * momentAbout(*p, x, y, fq[q][0], fq[q][1]);
+        }
+      }
       terms.push_back(term);
     }
   }
@@ -35,9 +44,15 @@ std::vector<double> loadResultant(const mesh::Q1Mesh& mesh, int components, cons
       if (!(be.segments & problem.neumannMask)) continue;
       double s[2], wq[2][2];
       edgeLoadPoints(be, problem.neumannData, nc, t, bad, s, wq);
-      terms.push_back({wq[0][0] + wq[1][0], nc == 2 ? wq[0][1] + wq[1][1] : 0.0});
+      double moment = 0;
+      if (p)
+        for (int g = 0; g < 2; ++g) {
+          const auto x = be.at(s[g]);
+          moment += momentAbout(*p, x[0], x[1], wq[g][0], wq[g][1]);
+        }
+      terms.push_back({wq[0][0] + wq[1][0], nc == 2 ? wq[0][1] + wq[1][1] : 0.0, moment});
     }
-  return sumTermsOverRanks(mesh, nc, terms, bad);
+  return sumTermsOverRanks(mesh, nc + (p ? 1 : 0), terms, bad);
 }
 
 }  // namespace signorini::fem

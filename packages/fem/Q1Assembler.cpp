@@ -336,9 +336,7 @@ void Q1Assembler::addBoundaryLoad(const core::Expression& q, double t, unsigned 
   addExported(overlap, *exporter_, out, true);
 }
 
-std::vector<double> Q1Assembler::dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap,
-                                                  const ProblemData& problem, double t,
-                                                  const std::vector<char>& lumpAt) const {
+DirichletRowsInput Q1Assembler::rowsInput(const ProblemData& problem, const std::vector<char>& lumpAt) const {
   DirichletRowsInput in;
   in.mesh = &mesh_;
   in.held = &dirichlet_;
@@ -353,7 +351,25 @@ std::vector<double> Q1Assembler::dirichletRowSums(const Vector& uOverlap, const 
   in.bodyForce = &problem.bodyForce;
   in.neumann = &problem.neumannData;
   in.neumannMask = problem.neumannMask;
+  return in;
+}
+
+std::vector<double> Q1Assembler::dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap,
+                                                  const ProblemData& problem, double t,
+                                                  const std::vector<char>& lumpAt,
+                                                  const std::array<double, 2>* momentPoint,
+                                                  const std::vector<char>* rows) const {
+  SIGNORINI_ASSERT(!momentPoint, "the scalar problem has no moments");
+  auto in = rowsInput(problem, lumpAt);
+  in.rows = rows;
   return sumDirichletRows(in, uOverlap, aOverlap, t);
+}
+
+void Q1Assembler::massBeforeElimination(const Vector& wOverlap, const ProblemData& problem,
+                                        const std::vector<char>& lumpAt, Vector& out) const {
+  Vector contributions(overlapMap());
+  massTimesField(rowsInput(problem, lumpAt), wOverlap, contributions);
+  addExported(contributions, *exporter_, out, false);
 }
 
 void Q1Assembler::zeroDirichlet(Vector& v) const {

@@ -14,6 +14,8 @@
 
 namespace signorini::fem {
 
+struct DirichletRowsInput;
+
 class Q1Pattern;
 class EntrySums;
 struct Contribution;
@@ -55,7 +57,11 @@ class Q1Assembler : public Assembler {
     return evaluate(uOverlap, x, y);
   }
   std::vector<double> dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap, const ProblemData& problem,
-                                       double t, const std::vector<char>& lumpAt) const override;
+                                       double t, const std::vector<char>& lumpAt,
+                                       const std::array<double, 2>* momentPoint = nullptr,
+                                       const std::vector<char>* rows = nullptr) const override;
+  void massBeforeElimination(const Vector& wOverlap, const ProblemData& problem, const std::vector<char>& lumpAt,
+                             Vector& out) const override;
   /// massCoeff * M_rho + stiffCoeff * K_kappa with M_ij = int rho phi_i phi_j and
   /// K_ij = int kappa grad phi_i . grad phi_j; Dirichlet rows/columns replaced by the identity.
   /// With \p lumpMassAt (overlap flags, optional), mass couplings of the flagged nodes are moved to
@@ -94,6 +100,8 @@ class Q1Assembler : public Assembler {
                     const std::vector<char>& lumpMassAt) const;
 
  private:
+  /// What sumDirichletRows() and massTimesField() read of this discretisation and \p problem.
+  DirichletRowsInput rowsInput(const ProblemData& problem, const std::vector<char>& lumpAt) const;
   const mesh::Q1Mesh& mesh_;
   std::vector<char> dirichlet_;
   Kokkos::View<int*, DeviceType> dirichletView_;

@@ -527,6 +527,19 @@ signorini_add_driver_test(bad_probe_not_a_number EXIT 1
 signorini_add_driver_test(bad_probe_outside_the_mesh EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/far=5, 0.5" ${decks}/good.xml
   REGEX "Output/Probes/far: point [(]5, 0[.]5[)] is outside the mesh, which lies in [[]0, 1[]] x [[]0, 1[]]")
+# Output/Moment Point: elasticity's moments are about it; a point as the probes take them.
+signorini_add_driver_test(bad_moment_point_of_membrane EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Moment Point=0.5, 0.5" ${decks}/good.xml
+  REGEX "Output/Moment Point: moments are reported for plane strain elasticity [(]Problem/Type[)]; the scalar wave equation has none")
+signorini_add_driver_test(bad_moment_point EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Moment Point=0.1" ${decks}/block-on-floor.xml
+  REGEX "Output/Moment Point: expected \"x, y\", got \"0[.]1\"")
+signorini_add_driver_test(bad_moment_point_function EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Moment Point=x, 0" ${decks}/block-on-floor.xml
+  REGEX "Output/Moment Point: \"x, 0\": the moment point's coordinates are numbers or constant expressions")
+signorini_add_driver_test(check_names_moment_point EXIT 0
+  ARGS --check --output-dir {OUT} --set "Output/Moment Point=0.1/2, 2*0.025" ${decks}/block-on-floor.xml
+  REGEX "moments and angular momentum about [(]0[.]05, 0[.]05[)] [(]Output/Moment Point[)]")
 # The Exodus file cannot take its final name when the run ends: the step table goes too.
 signorini_add_driver_test(output_exodus_not_renamable EXIT 1
   ARGS --output-dir {OUT} ${decks}/good.xml

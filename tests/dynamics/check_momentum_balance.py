@@ -10,14 +10,22 @@ the contact force's resultant (contact_force along the contact direction) and F 
 resultant (applied_load, in a table of a problem with loads). Newmark's (3.2), v^n = v^{n-1} + k ((1 - alpha) a^{n-1} + alpha a^n), then gives, step by
 step and up to the solves' tolerance,
     momentum(n) - momentum(n-1) = k ((1 - alpha) G(n-1) + alpha G(n)),  G = F + contact + reaction.
+Elasticity's tables also balance the angular momentum about Output/Moment Point: the rigid rotation
+r(x) = (-(y - p_y), x - p_x) lies in the Q1 space and in the kernel of K, so r^T (M a + K u) = (M r) . a
+and, with angular_momentum = (M r) . v,
+    angular_momentum(n) - angular_momentum(n-1) = k ((1 - alpha) G_M(n-1) + alpha G_M(n)),
+    G_M = applied_moment + contact_moment + reaction_moment (each 0 where the table has no column).
 
-Usage: check_momentum_balance.py STEPS_CSV TOL [--alpha A] [--load EXPR ...] [--contact C:S] [--free]
+Usage: check_momentum_balance.py STEPS_CSV TOL [--alpha A] [--load EXPR ...] [--applied-moment EXPR]
+                                 [--contact C:S] [--free]
   --load EXPR: the applied loads' resultant of each component as a Python expression of t (math's
     names allowed), one per component: the table's applied_load columns must equal it (to 1e-9 of its
     largest magnitude), and a table without them fails (default: the columns, or 0 without them);
+  --applied-moment EXPR: the loads' moment about the moment point as a Python expression of t: the
+    table's applied_moment column must equal it (to 1e-9 of its largest magnitude);
   --contact C:S: the contact force acts on component C (0 or 1) with sign S (+1 or -1; default 0:+1);
   --free: a body without Dirichlet conditions, whose table has no reaction_force columns (they are 0);
-  TOL: relative to the largest |k G| of the run.
+  TOL: relative to the largest |k G| of the run (for the angular momentum, |k G_M|).
 Exit 0 when every step balances to TOL, 1 otherwise (also without the columns, with fewer than two
 steps, or with a value that is not a finite number)."""
 import argparse
@@ -30,6 +38,7 @@ parser.add_argument("table")
 parser.add_argument("tol", type=float)
 parser.add_argument("--alpha", type=float, default=0.5)
 parser.add_argument("--load", action="append", default=[])
+parser.add_argument("--applied-moment")
 parser.add_argument("--contact", default="0:+1")
 parser.add_argument("--free", action="store_true")
 args = parser.parse_args()
@@ -43,6 +52,12 @@ suffixes = ["_x", "_y"] if "momentum_x" in header else [""]
 nc = len(suffixes)
 reactions = [f"reaction_force{s}" for s in suffixes]
 needed = ["t", "contact_force"] + [f"momentum{s}" for s in suffixes] + ([] if args.free else reactions)
+if nc == 2:  # the angular momentum balance; the moments of the contact and of the loads where they act
+    needed += ["angular_momentum"] + ([] if args.free else ["reaction_moment"])
+    needed += [n for n in ("contact_moment", "applied_moment") if n in header]
+    if args.applied_moment is not None and "applied_moment" not in header:
+        print(f"FAIL: {args.table}: --applied-moment given, but no column applied_moment")
+        sys.exit(1)
 missing = [n for n in needed if n not in header]
 if missing:
     print(f"FAIL: {args.table}: no column {', '.join(missing)}")
@@ -100,12 +115,31 @@ for c, s in enumerate(suffixes):
     P = values[f"momentum{s}"]
     for n in range(1, len(rows)):
         residuals.append((P[n] - P[n - 1] - k * ((1 - alpha) * G[n - 1] + alpha * G[n]), rows[n]["step"], f"momentum{s}"))
-scale = scale or 1.0
-r, step, name = max(residuals, key=lambda x: abs(x[0]))
-if not abs(r) / scale <= args.tol:
-    print(f"FAIL: {args.table}: step {step}: {name} changed by k ((1 - alpha) G(n-1) + alpha G(n)) "
-          f"{'+' if r >= 0 else '-'} {abs(r):.3g}, {abs(r) / scale:.3g} of the largest |k G| {scale:.6g} "
-          f"(tolerance {args.tol:g})")
-    sys.exit(1)
-print(f"{args.table}: largest momentum imbalance {abs(r) / scale:.2g} of the largest |k G| {scale:.6g} "
-      f"(step {step}, {name})")
+balances = [(residuals, scale or 1.0, "G")]
+if nc == 2:
+    column = lambda name: values[name] if name in values else [0.0] * len(rows)
+    if args.applied_moment is not None:
+        moment = [eval(args.applied_moment, vars(math), {"t": tn}) for tn in t]
+        size = max(abs(x) for x in moment) or 1.0
+        n = max(range(len(rows)), key=lambda n: abs(values["applied_moment"][n] - moment[n]))
+        if not abs(values["applied_moment"][n] - moment[n]) <= 1e-9 * size:
+            print(f"FAIL: {args.table}: step {rows[n]['step']}: applied_moment is {values['applied_moment'][n]!r}, "
+                  f"--applied-moment gives {moment[n]!r}")
+            sys.exit(1)
+    GM = [a + c + r for a, c, r in zip(column("applied_moment"), column("contact_moment"), column("reaction_moment"))]
+    L = values["angular_momentum"]
+    angular = [(L[n] - L[n - 1] - k * ((1 - alpha) * GM[n - 1] + alpha * GM[n]), rows[n]["step"], "angular_momentum")
+               for n in range(1, len(rows))]
+    balances.append((angular, max(abs(k * g) for g in GM) or 1.0, "G_M"))
+failed = False
+for residuals, scale, force in balances:
+    r, step, name = max(residuals, key=lambda x: abs(x[0]))
+    if not abs(r) / scale <= args.tol:
+        print(f"FAIL: {args.table}: step {step}: {name} changed by k ((1 - alpha) {force}(n-1) + alpha {force}(n)) "
+              f"{'+' if r >= 0 else '-'} {abs(r):.3g}, {abs(r) / scale:.3g} of the largest |k {force}| {scale:.6g} "
+              f"(tolerance {args.tol:g})")
+        failed = True
+    else:
+        print(f"{args.table}: largest {name.split('_')[0]} imbalance {abs(r) / scale:.2g} of the largest "
+              f"|k {force}| {scale:.6g} (step {step}, {name})")
+sys.exit(1 if failed else 0)

@@ -16,11 +16,19 @@
 #    varies in time and along x, both components non-zero at the roller's corner, on 2 ranks;
 #  - the contact stabilisation's projected predictor (the clamped corner run);
 #  - the block dropped onto the floor: no Dirichlet conditions, no reaction_force column;
+#  - elasticity's angular momentum about Output/Moment Point in every elastic run (the default origin,
+#    and other points), with applied_moment equal to the loads' moment computed by hand: a block
+#    clamped along its left side pressed onto the floor under a body force varying in time, with lumped
+#    boundary mass, on 2 ranks (every contact segment pressed, the first ending at the clamped corner:
+#    without the contact's share of the held rows the angular balance misses by 7.5%, without the
+#    lumping in M r by 3e-4);
 #  - a block hanging from its clamped top under its weight (no contact): the mean reaction over 600
-#    steps is its weight, 27173.7 N/m^3 x 0.005 m^2 = 135.87 N/m upwards;
+#    steps is its weight, 27173.7 N/m^3 x 0.005 m^2 = 135.87 N/m upwards, and the mean reaction
+#    moment about the origin that of the weight, 135.87 N/m x 0.05 m = 6.7934 N m/m counterclockwise;
 #  - controls: the Alpha = 0.6 table checked as Alpha = 1/2, a zeroed reaction_force, a reaction_force
-#    one step late, a halved momentum and a halved applied_load (against --load, and in the balance)
-#    fail the checker;
+#    one step late, a halved momentum and a halved applied_load (against --load, and in the balance),
+#    a halved angular_momentum, a zeroed reaction_moment and a halved applied_moment (against
+#    --applied-moment) fail the checker;
 #  - adaptive runs have reaction_force but no momentum column; a problem without loads has no
 #    applied_load column.
 # Usage: momentum_balance.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
@@ -41,11 +49,14 @@ run bar 2 --set "Adaptivity/Strategy=none" --set "Time Integration/Final Time=1e
   "$src/inputs/bar.xml"
 run block 1 "$decks/block-on-floor.xml"
 run roller 2 --set "Mesh/Boundary Segments/left=left" --set "Mesh/Boundary Segments/top=top" \
-  --set "Problem/Dirichlet X Segments=left" --set "Problem/Neumann Segments=top" \
+  --set "Problem/Dirichlet X Segments=left" --set "Problem/Neumann Segments=top" --set "Output/Moment Point=0.05, 0.1" \
   --set "Problem/Neumann Data=-1e5*(1 + 1000*t), 2e5*(x - 0.2)" "$decks/block-on-floor.xml"
 run hanging 1 --set "Problem/Initial Velocity=0, 0" --set "Problem/Contact Segments=" --set "Problem/Obstacle=" \
   --set "Mesh/Boundary Segments/floor=top" --set "Problem/Dirichlet Segments=floor" \
   --set "Problem/Body Force=0, -27173.7" --set "Time Integration/Final Time=6e-3" "$decks/block-on-floor.xml"
+run clamped 2 --set "Mesh/Boundary Segments/left=left" --set "Problem/Dirichlet Segments=left" \
+  --set "Contact/Boundary Mass=lumped" --set "Problem/Initial Velocity=0, 0" --set "Problem/Obstacle=0" \
+  --set "Problem/Body Force=0, -3e6*(1 + sin(2e4*t))" --set "Output/Moment Point=0.1, 0.05" "$decks/block-on-floor.xml"
 run adaptive 1 --set "Adaptivity/Strategy=fixed fraction" --set "Adaptivity/Cycles=2" "${membrane[@]}"
 
 $check "$work/membrane/good.steps.csv" 1e-6 || fail "membrane: momentum balance"
@@ -55,11 +66,19 @@ $check "$work/membrane_loaded/good.steps.csv" 1e-6 "--load=1 - sin(3*t) + 2*(1 +
 $check "$work/corner/good.steps.csv" 1e-6 || fail "membrane clamped at the contact's end: momentum balance"
 $check "$work/corner_lumped/good.steps.csv" 1e-6 || fail "the same with lumped boundary mass: momentum balance"
 $check "$work/corner_projected/good.steps.csv" 1e-6 || fail "the same with the predictor projection: momentum balance"
-$check "$work/roller/block-on-floor.steps.csv" 1e-7 "--load=-1e5*(1 + 1000*t)*0.1" "--load=2e5*(0.005 - 0.02)" --contact 1:+1 ||
+# the traction's moment about (0.05, 0.1): int_0^0.1 (x - 0.05) q_y dx - (0.05 - 0.1) int_0^0.1 q_x dx
+$check "$work/roller/block-on-floor.steps.csv" 1e-7 "--load=-1e5*(1 + 1000*t)*0.1" "--load=2e5*(0.005 - 0.02)" --contact 1:+1 \
+  "--applied-moment=2e5*(0.1**3/3 - 0.25*0.1**2/2 + 0.01*0.1) - 500*(1 + 1000*t)" ||
   fail "block on a roller under a traction on 2 ranks: momentum balance"
-$check "$work/bar/bar.steps.csv" 1e-7 --load 0 "--load=-3.75e7*0.1" --contact 1:+1 || fail "bar on 2 ranks: momentum balance"
+# the traction -3.75e7 N/m^2 on x in [0.1, 0.2]: moment -3.75e7 (0.2^2 - 0.1^2) / 2 about the origin
+$check "$work/bar/bar.steps.csv" 1e-7 --load 0 "--load=-3.75e7*0.1" --contact 1:+1 --applied-moment=-562500 ||
+  fail "bar on 2 ranks: momentum balance"
+# the body force -3e6 (1 + sin(2e4 t)) N/m^3 on [0, 0.1] x [0, 0.05], its moment about (0.1, 0.05)
+$check "$work/clamped/block-on-floor.steps.csv" 1e-7 --load 0 "--load=-3e6*(1 + sin(2e4*t))*0.005" --contact 1:+1 \
+  "--applied-moment=3e6*(1 + sin(2e4*t))*0.05*0.1**2/2" || fail "block clamped at its side on the floor: momentum balance"
 $check "$work/block/block-on-floor.steps.csv" 1e-7 --free --contact 1:+1 || fail "block: momentum balance"
-$check "$work/hanging/block-on-floor.steps.csv" 1e-7 --load 0 "--load=-27173.7*0.1*0.05" || fail "hanging block: momentum balance"
+$check "$work/hanging/block-on-floor.steps.csv" 1e-7 --load 0 "--load=-27173.7*0.1*0.05" \
+  "--applied-moment=-27173.7*0.05*0.1**2/2" || fail "hanging block: momentum balance"
 
 $py - "$work" <<'PY' || exit 1
 import sys
@@ -76,10 +95,17 @@ if not (any(int(r["active"]) > 0 for r in roller) and max(abs(float(r["reaction_
 bar = table(f"{work}/bar/bar.steps.csv")
 if not (any(int(r["active"]) > 0 for r in bar) and max(abs(float(r["reaction_force_x"])) for r in bar) > 1e4):
     fail("bar: no contact or no horizontal reaction")
-hanging = [float(r["reaction_force_y"]) for r in table(f"{work}/hanging/block-on-floor.steps.csv")[1:]]
+clamped = table(f"{work}/clamped/block-on-floor.steps.csv")
+if not (max(int(r["active"]) for r in clamped) == 8 and max(abs(float(r["contact_moment"])) for r in clamped) > 100):
+    fail("clamped block: not every contact segment pressed, or no contact moment")
+hanging_rows = table(f"{work}/hanging/block-on-floor.steps.csv")[1:]
+hanging = [float(r["reaction_force_y"]) for r in hanging_rows]
 mean = sum(hanging) / len(hanging)
 if not abs(mean / 135.87 - 1) <= 0.01:
     fail(f"hanging block: mean reaction_force_y {mean:.6g} N/m over {len(hanging)} steps, its weight is 135.87 N/m")
+moment = sum(float(r["reaction_moment"]) for r in hanging_rows) / len(hanging_rows)
+if not abs(moment / 6.793425 - 1) <= 0.01:
+    fail(f"hanging block: mean reaction_moment {moment:.6g} N m/m, the weight's moment is 6.7934 N m/m")
 if any(c.startswith("reaction_force") for c in table(f"{work}/block/block-on-floor.steps.csv")[0]):
     fail("block: a reaction_force column without Dirichlet conditions")
 for f in (f"{work}/block/block-on-floor.steps.csv", f"{work}/membrane/good.steps.csv"):
@@ -89,7 +115,7 @@ for f in (f"{work}/adaptive/good.steps.csv", f"{work}/adaptive/good.cycle0.steps
     header = table(f)[0]
     if "reaction_force" not in header or "momentum" in header:
         fail(f"{f}: an adaptive run's table has {'no reaction_force' if 'reaction_force' not in header else 'momentum'}")
-print(f"hanging block: mean reaction {mean:.6g} N/m (weight 135.87 N/m)")
+print(f"hanging block: mean reaction {mean:.6g} N/m (weight 135.87 N/m), moment {moment:.6g} N m/m (6.7934)")
 PY
 
 # Controls: the balance of Alpha = 0.6 is not that of 1/2; a zeroed, late or halved column breaks it.
@@ -100,7 +126,10 @@ work = sys.argv[1]
 for source, column, factor, name in (("corner/good", "reaction_force", 0.0, "no_reaction"),
                                       ("membrane/good", "reaction_force", None, "late_reaction"),
                                       ("bar/bar", "momentum_y", 0.5, "half_momentum"),
-                                      ("bar/bar", "applied_load_y", 0.5, "half_load")):
+                                      ("bar/bar", "applied_load_y", 0.5, "half_load"),
+                                      ("bar/bar", "angular_momentum", 0.5, "half_angular"),
+                                      ("clamped/block-on-floor", "reaction_moment", 0.0, "no_reaction_moment"),
+                                      ("bar/bar", "applied_moment", 0.5, "half_moment")):
     write_altered(f"{work}/{source}.steps.csv", column, factor, f"{work}/{name}.csv")  # factor None: one step late
 PY
 for control in "$work/membrane_alpha/good.steps.csv" "$work/no_reaction.csv" "$work/late_reaction.csv" \
@@ -122,4 +151,13 @@ $check "$work/no_load_column.csv" 1e-6 --load 0 "--load=-3.75e7*0.1" --contact 1
   fail "control: the checker passed --load on a table without applied_load"
 grep -q -- "--load given, but no column applied_load_x, applied_load_y" "$work/control.log" ||
   { cat "$work/control.log"; fail "control no_load_column: another failure"; }
+for control in half_angular no_reaction_moment; do
+  $check "$work/$control.csv" 1e-6 --contact 1:+1 > "$work/control.log" && fail "control: the checker passed $control"
+  grep -q "angular_momentum changed by k ((1 - alpha) G_M(n-1) + alpha G_M(n))" "$work/control.log" ||
+    { cat "$work/control.log"; fail "control $control: another failure"; }
+done
+$check "$work/half_moment.csv" 1e-6 --contact 1:+1 --applied-moment=-562500 > "$work/control.log" &&
+  fail "control: the checker passed a halved applied_moment"
+grep -q "applied_moment is .*, --applied-moment gives" "$work/control.log" ||
+  { cat "$work/control.log"; fail "control half_moment: another failure"; }
 echo "PASS"
