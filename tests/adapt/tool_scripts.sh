@@ -398,6 +398,72 @@ refuses steps_empty_window "plot_steps.py: error: $work/bar.steps.csv: no step w
 refuses steps_reversed_window "plot_steps.py: error: --tmin 2.0 is after --tmax 1.0" \
   "$py" "$tools/plot_steps.py" "$work/bar" --columns energy --tmin 2 --tmax 1 --out "$work/never.png"
 [ ! -e "$work/never.png" ] || fail "plot_steps.py wrote a figure after an error"
+# plot_steps.py --scale, --hline: a column times a factor, reference lines in chosen panels.
+"$py" "$tools/plot_steps.py" "$work/bar" --columns 'contact_force' 'probe:*' --scale 'probe:*=1000' \
+  --hline 1:0 --hline 2:-5:obstacle --out "$work/bar-scaled.png" > "$work/plot-scaled.log" 2>&1 &&
+  grep -q "^wrote $work/bar-scaled.png: .* in 2 panel(s), 2 reference line(s)$" "$work/plot-scaled.log" ||
+  { cat "$work/plot-scaled.log"; fail "plot_steps.py --scale --hline"; }
+refuses steps_hline_panel "plot_steps.py: error: --hline 3:1: expected PANEL:VALUE\[:LABEL\] with PANEL 1 to 2" \
+  "$py" "$tools/plot_steps.py" "$work/bar" --columns energy contact_force --hline 3:1 --out "$work/never.png"
+refuses steps_scale_zero "plot_steps.py: error: --scale probe:\*=0: expected PATTERN=FACTOR with a finite factor other than 0" \
+  "$py" "$tools/plot_steps.py" "$work/bar" --columns 'probe:*' --scale 'probe:*=0' --out "$work/never.png"
+refuses steps_scale_unmatched "plot_steps.py: error: --scale stress\*: matches no column drawn from $work/bar.steps.csv" \
+  "$py" "$tools/plot_steps.py" "$work/bar" --columns energy --scale 'stress*=2' --out "$work/never.png"
+[ ! -e "$work/never.png" ] || fail "plot_steps.py wrote a figure after an error"
+# summarize_steps.py: window summaries. (1) A table written here, x = 2 t + 1 and a contact in three
+# intervals: the trapezoidal mean and integral are exact for linear data. (2) The bar on one mesh
+# with the paper's scheme: the momentum's change over the run is exactly the trapezoidal integral
+# of the force resultant, and the angular momentum's that of the moments (to the solves' tolerance).
+"$py" - "$work/synthetic.steps.csv" <<'PY'
+import sys
+active = [0, 1, 1, 0, 0, 2, 0, 0, 1, 1, 1]
+with open(sys.argv[1], "w") as f:
+    f.write("step,t,active,contact_force,x\n")
+    for n in range(11):
+        f.write(f"{n},{n / 10!r},{active[n]},{-3.0 * active[n]!r},{2 * n / 10 + 1!r}\n")
+PY
+"$py" "$tools/summarize_steps.py" "$work/synthetic" --columns x --tmin 0.2 --tmax 0.5 --csv > "$work/summary-window.csv" &&
+  "$py" "$tools/summarize_steps.py" "$work/synthetic" --columns x > "$work/summary.log" 2>&1 &&
+  "$py" - "$work" <<'PY' || { cat "$work/summary-window.csv" "$work/summary.log"; fail "summarize_steps.py on a table written here"; }
+import csv, sys
+work = sys.argv[1]
+row = next(csv.DictReader(open(f"{work}/summary-window.csv")))
+expected = {"steps": 4, "t_first": 0.2, "t_last": 0.5, "mean": 1.7, "integral": 0.51, "min": 1.4, "t_min": 0.2,
+            "max": 2.0, "t_max": 0.5, "last": 2.0}
+bad = [f"{k} {row[k]} (expected {v})" for k, v in expected.items() if abs(float(row[k]) - v) > 1e-12]
+text = open(f"{work}/summary.log").read()
+for line in ("contact: 6 of 11 steps with an active segment, from t = 0.1 to t = 1 in 3 interval(s); at most 2 active",
+             "contact_force: largest |value| -6 at t = 0.5; impulse -1.95"):
+    if line not in text:
+        bad.append(f"no line '{line}'")
+if bad:
+    sys.exit("; ".join(bad))
+PY
+"$signorini" --output-dir "$work/bar-one-mesh" --set 'Adaptivity/Strategy=none' --set 'Time Integration/Final Time=3e-4' \
+  --set 'Output/Write Exodus=false' "$src/inputs/bar.xml" > "$work/bar-one-mesh.log" 2>&1 ||
+  { cat "$work/bar-one-mesh.log"; fail "the bar on one mesh"; }
+"$py" "$tools/summarize_steps.py" "$work/bar-one-mesh/bar" --csv --columns 'momentum_y,angular_momentum' \
+  'applied_load_y,reaction_force_y,contact_force' 'applied_moment,reaction_moment,contact_moment' > "$work/summary-bar.csv" &&
+  "$py" - "$work/summary-bar.csv" <<'PY' || { cat "$work/summary-bar.csv"; fail "summarize_steps.py: the bar's impulses"; }
+import csv, sys
+s = {r["column"]: r for r in csv.DictReader(open(sys.argv[1]))}
+def change(c):  # the bar starts at rest: both momenta are 0 at t = 0
+    return float(s[c]["last"])
+for quantity, forces in (("momentum_y", ("applied_load_y", "reaction_force_y", "contact_force")),
+                         ("angular_momentum", ("applied_moment", "reaction_moment", "contact_moment"))):
+    impulse = sum(float(s[f]["integral"]) for f in forces)
+    scale = max(abs(float(s[f]["integral"])) for f in forces)
+    if not abs(change(quantity) - impulse) <= 1e-8 * scale:
+        sys.exit(f"{quantity} changes by {change(quantity)!r}, the forces' impulse is {impulse!r}")
+if float(s["contact_force"]["max"]) <= 0:
+    sys.exit("no contact in the window")
+PY
+refuses summary_no_match "summarize_steps.py: error: $work/bar.steps.csv: no column matches 'nowhere'" \
+  "$py" "$tools/summarize_steps.py" "$work/bar" --columns nowhere
+refuses summary_empty_window "summarize_steps.py: error: $work/bar.steps.csv: no step with 5 <= t <= 6" \
+  "$py" "$tools/summarize_steps.py" "$work/bar" --tmin 5 --tmax 6
+refuses summary_missing "summarize_steps.py: error: $work/nothing.steps.csv: no such file" \
+  "$py" "$tools/summarize_steps.py" "$work/nothing"
 refuses mirror_nan "check_mirror_symmetry.py: error: argument axis: nan: not a line x2 = c inside" \
   "$py" "$tools/check_mirror_symmetry.py" "$work/membrane" nan
 refuses mirror_outside "check_mirror_symmetry.py: error: argument axis: 1.5: not a line x2 = c inside" \
@@ -590,7 +656,7 @@ import ast, glob, os, re, subprocess, sys
 bad = []
 for path in sorted(glob.glob(os.path.join(sys.argv[1], "*.py"))):
     name = os.path.basename(path)
-    if name in ("tool_errors.py", "exodus_text.py"):  # modules, not scripts
+    if name in ("tool_errors.py", "exodus_text.py", "step_selection.py"):  # modules, not scripts
         continue
     doc = ast.get_docstring(ast.parse(open(path).read()), clean=False)
     p = subprocess.run(["/usr/bin/python3", path, "--help"], capture_output=True, text=True)

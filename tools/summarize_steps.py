@@ -1,0 +1,121 @@
+#!/usr/bin/python3
+"""Summarises columns of signorini step tables (<base>.steps.csv) over a time window: for engineers'
+reports (a support's mean reaction, a peak stress and when it occurs, an impact's impulse) and for
+checks of a run against hand calculations.
+
+  tools/summarize_steps.py BASE [BASE ...] [--columns PATTERN ...] [--cycle L] [--tmin T0] [--tmax T1]
+                           [--csv]
+
+For every BASE and every column that a PATTERN matches (shell-style as in plot_steps.py: 'reaction*',
+'probe:tip:*y'; ',' joins patterns; default: the force, moment, stress and energy columns the table
+has), over the steps with T0 <= t <= T1 (the bounds hold to 1e-9 of the run's duration, as a step's t
+is the double n k):
+  mean      the time mean, integral / (t_last - t_first) (the value itself for a window of one step)
+  integral  int x dt by the trapezoidal rule over the window's steps: for a force its impulse
+            [N s/m]; with the paper's scheme (Alpha 1/2) the momentum changes by exactly the
+            trapezoidal integral of the force resultant (applied_load + contact + reaction)
+  min, max  the smallest and the largest value and the (first) time of each
+  last      the value at the window's last step
+and, where the table has the contact columns, a contact summary: the steps with an active contact
+segment, the first and the last of them (first contact, last release), the number of separate
+contact intervals, the most active segments, the largest |contact_force| and its time, and the
+contact force's impulse. --csv prints one CSV row per run and column (run, column, steps, t_first,
+t_last, mean, integral, min, t_min, max, t_max, last) instead, and no contact summary. --cycle L
+takes cycle L's tables of adaptive runs. A pattern that matches no column, a window without a step,
+a missing or cut-short table stop the script with one line naming it.
+Uses Debian's python3 (no extra modules).
+"""
+import argparse
+import csv
+import fnmatch
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from step_selection import matching, read_steps, table_path, window  # noqa: E402
+from tool_errors import ArgumentParser, InputError, reporting  # noqa: E402
+
+# The default columns: the physical quantities an engineer reads first (those the table has).
+DEFAULT_PATTERNS = ["energy", "contact_force", "contact_moment", "reaction*", "applied*", "max_von_mises"]
+
+
+def summary(t, x):
+    """{mean, integral, min, t_min, max, t_max, last} of the values x at the times t."""
+    integral = sum(0.5 * (t[n] - t[n - 1]) * (x[n] + x[n - 1]) for n in range(1, len(t)))
+    span = t[-1] - t[0]
+    low = min(range(len(x)), key=lambda n: (x[n], n))
+    high = min(range(len(x)), key=lambda n: (-x[n], n))
+    return {"mean": integral / span if span > 0 else x[0], "integral": integral, "min": x[low], "t_min": t[low],
+            "max": x[high], "t_max": t[high], "last": x[-1]}
+
+
+def contact_summary(table):
+    """Lines on the contact of a table with the columns active and contact_force (empty without them)."""
+    if "active" not in table or "contact_force" not in table:
+        return []
+    t, active, force = table["t"], table["active"], table["contact_force"]
+    touching = [n for n in range(len(t)) if active[n] > 0]
+    if not touching:
+        return [f"  contact: none in the window ({len(t)} steps, no active segment)"]
+    intervals = 1 + sum(1 for a, b in zip(touching, touching[1:]) if b != a + 1)
+    peak = min(range(len(t)), key=lambda n: (-abs(force[n]), n))
+    impulse = summary(t, force)["integral"]
+    return [f"  contact: {len(touching)} of {len(t)} steps with an active segment, from t = {t[touching[0]]:.6g} "
+            f"to t = {t[touching[-1]]:.6g} in {intervals} interval(s); at most {max(active):.0f} active segments",
+            f"  contact_force: largest |value| {force[peak]:.6g} at t = {t[peak]:.6g}; impulse {impulse:.6g}"]
+
+
+def main():
+    ap = ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("bases", nargs="+", metavar="BASE", help="output base of a run (folder/basename)")
+    ap.add_argument("--columns", nargs="+", metavar="PATTERN",
+                    help="the columns to summarise (shell-style; ',' joins patterns; default: forces, moments, "
+                         "stress, energy)")
+    ap.add_argument("--cycle", type=int, help="cycle L of adaptive runs (<base>.cycle<L>.steps.csv)")
+    ap.add_argument("--tmin", type=float, default=-float("inf"), help="the steps with t >= T0")
+    ap.add_argument("--tmax", type=float, default=float("inf"), help="the steps with t <= T1")
+    ap.add_argument("--csv", action="store_true", help="one CSV row per run and column, no contact summary")
+    a = ap.parse_args()
+    for name in ("tmin", "tmax"):
+        if math.isnan(getattr(a, name)):
+            raise InputError(f"--{name} nan: not a time")
+    if not a.tmin <= a.tmax:
+        raise InputError(f"--tmin {a.tmin} is after --tmax {a.tmax}")
+    runs = []  # (base, table, columns): every input read and checked before anything is printed
+    for base in a.bases:
+        path = table_path(base, a.cycle)
+        table = window(read_steps(path), a.tmin, a.tmax, path)
+        if a.columns:
+            columns = [c for p in a.columns for c in matching(table, p, path)]
+        else:
+            columns = [c for p in DEFAULT_PATTERNS for c in table if fnmatch.fnmatchcase(c, p)]
+        columns = list(dict.fromkeys(columns))
+        runs.append((base, table, columns))
+    if a.csv:
+        w = csv.writer(sys.stdout, lineterminator="\n")
+        w.writerow(["run", "column", "steps", "t_first", "t_last", "mean", "integral", "min", "t_min", "max", "t_max",
+                    "last"])
+        for base, table, columns in runs:
+            t = table["t"]
+            for c in columns:
+                s = summary(t, table[c])
+                w.writerow([base, c, len(t), repr(t[0]), repr(t[-1])] +
+                           [repr(s[k]) for k in ("mean", "integral", "min", "t_min", "max", "t_max", "last")])
+        return
+    for base, table, columns in runs:
+        t = table["t"]
+        print(f"{base}: {len(t)} step(s), t = {t[0]:.6g} to {t[-1]:.6g}")
+        width = max([len(c) for c in columns] + [6])
+        print(f"  {'column':<{width}} {'mean':>13} {'integral':>13} {'min':>13} {'at t':>10} {'max':>13} "
+              f"{'at t':>10} {'last':>13}")
+        for c in columns:
+            s = summary(t, table[c])
+            print(f"  {c:<{width}} {s['mean']:>13.6g} {s['integral']:>13.6g} {s['min']:>13.6g} {s['t_min']:>10.4g} "
+                  f"{s['max']:>13.6g} {s['t_max']:>10.4g} {s['last']:>13.6g}")
+        for line in contact_summary(table):
+            print(line)
+
+
+if __name__ == "__main__":
+    reporting(main)
