@@ -13,7 +13,7 @@ step table:
     and its cells are the table's `cells`;
   - the nodal variables (u, v, a; elasticity's u_x, u_y, ... as the vectors u, v, a), the cell
     variables (level; indicator in adaptive runs; the stresses sigma_xx, sigma_yy, sigma_xy,
-    sigma_zz and von_mises for elasticity) and, on the side set `contact`, lambda and gap
+    sigma_zz, von_mises and the strains eps_xx, eps_yy, eps_xy for elasticity) and, on the side set `contact`, lambda and gap
     equal the file's values bit for bit; the side set's edges are boundary edges of the mesh;
     min/max lambda and min gap are the table's, and -sum lambda |E| its contact_force;
   - every column of the table but step, t and the timings is a global variable whose value at
@@ -276,6 +276,25 @@ def vector_groups(names):
     return groups
 
 
+def tensor_groups(names):
+    """File cell variables e_xx, e_yy, e_xy (exactly these three of a base e, the 2D symmetric tensor
+    the IOSS reader shows as one array e) -> {'e': ['e_xx', 'e_yy', 'e_xy']}; others alone."""
+    bases = {}
+    for n in names:
+        m = re.match(r"^(.*)_(xx|yy|zz|xy|yz|xz)$", n)
+        if m:
+            bases.setdefault(m.group(1), []).append(n)
+    groups = {}
+    for n in names:
+        m = re.match(r"^(.*)_(xx|yy|zz|xy|yz|xz)$", n)
+        base = m.group(1) if m else None
+        if base is not None and [x.rsplit("_", 1)[1] for x in bases[base]] == ["xx", "yy", "xy"]:
+            groups.setdefault(base, []).append(n)
+        else:
+            groups[n] = [n]
+    return groups
+
+
 def find_array(found, key, members, where):
     """The reader's array for a file variable (or group of components): (array, component names)."""
     candidates = [key] if len(members) == 1 else [key, key + "_"]
@@ -335,7 +354,7 @@ for want in ("u", "v", "a"):
 if "level" not in file_steps[0].cell:
     fail("%s: no cell variable level" % file_steps[0].path)
 elastic = any(len(members) > 1 for members in nodal_groups.values())
-for name in ("sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz", "von_mises") if elastic else ():
+for name in ("sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz", "von_mises", "eps_xx", "eps_yy", "eps_xy") if elastic else ():
     if name not in file_steps[0].cell:
         fail("%s: no cell variable %s in an elasticity run" % (file_steps[0].path, name))
 if adaptive != ("indicator" in file_steps[0].cell):
@@ -375,9 +394,17 @@ for i, (t, s, row) in enumerate(zip(pv_times, file_steps, out_rows)):
                 fail("%s: vector '%s' has non-zero extra components" % (where, shown))
             if i == 0:
                 vector_names.append("%s(%d)" % (shown, values.shape[1]))
-    for name, expected in s.cell.items():
-        a, _ = find_array(cd, name, [name], where)
-        compare("%s: cell %s" % (where, name), vtk_to_numpy(a).astype(float), expected[cell_ids])
+    for key, members in tensor_groups(list(s.cell)).items():
+        if len(members) > 1 and key in cd:  # the IOSS reader's symmetric tensor (eps: xx, yy, xy)
+            a, _ = find_array(cd, key, members, where)
+            values = vtk_to_numpy(a).astype(float).reshape(len(cell_ids), -1)
+            for c, name in enumerate(members):
+                compare("%s: cell %s (ParaView '%s' component %d)" % (where, name, key, c), values[:, c],
+                        s.cell[name][cell_ids])
+            continue
+        for name in members:
+            a, _ = find_array(cd, name, [name], where)
+            compare("%s: cell %s" % (where, name), vtk_to_numpy(a).astype(float), s.cell[name][cell_ids])
     for name in table_globals:
         shown = global_value(field, name, where, s)
         if not same(shown, s.globals[name]) or not same(shown, float(row[name])):

@@ -1404,9 +1404,10 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   std::unique_ptr<ResultWriter> exodus;
   std::vector<std::string> cellNames = {"level"};
   if (!options.cellFieldName.empty()) cellNames.push_back(options.cellFieldName);
-  // Elasticity: the stress at the cell centres (ElasticityAssembler::cellCentreStresses).
+  // Elasticity: the stress and the strain at the cell centres (ElasticityAssembler::cellCentreStresses, cellCentreStrains).
   if (nc == 2)
-    for (const char* name : {"sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz", "von_mises"}) cellNames.push_back(name);
+    for (const char* name : {"sigma_xx", "sigma_yy", "sigma_xy", "sigma_zz", "von_mises", "eps_xx", "eps_yy", "eps_xy"})
+      cellNames.push_back(name);
   // The step table's columns but the step, the time and the timings are the Exodus files' global variables.
   std::vector<size_t> globalColumns;
   for (size_t c = 0; c < columns.size(); ++c)
@@ -1604,6 +1605,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       if (nc == 2) {
         const auto& elastic = dynamic_cast<const fem::ElasticityAssembler&>(*d->assembler);
         for (auto& quantity : elastic.cellCentreStresses(uOverlap)) cell.push_back(std::move(quantity));
+        for (auto& quantity : elastic.cellCentreStrains(uOverlap)) cell.push_back(std::move(quantity));
       }
       std::vector<int> contactEdges;
       std::vector<std::vector<double>> contact(2);

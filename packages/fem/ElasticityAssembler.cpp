@@ -377,7 +377,7 @@ RCP<MultiVector> ElasticityAssembler::rigidBodyModes() const {
   return modes;
 }
 
-std::array<double, 3> ElasticityAssembler::stressAt(const Vector& uOverlap, LO e, double s, double r) const {
+std::array<double, 3> ElasticityAssembler::strainAt(const Vector& uOverlap, LO e, double s, double r) const {
   auto uh = uOverlap.getLocalViewHost(Tpetra::Access::ReadOnly);
   double Xe[4][2], ue[2][4], N[4], gx[4], gy[4];
   for (int c = 0; c < 4; ++c) Xe[c][0] = mesh_.cornerCoordsHost(e, c, 0), Xe[c][1] = mesh_.cornerCoordsHost(e, c, 1);
@@ -386,8 +386,24 @@ std::array<double, 3> ElasticityAssembler::stressAt(const Vector& uOverlap, LO e
   double du[2][2] = {};  // du[i][j] = d u_i / d x_j
   for (int a = 0; a < 4; ++a)
     for (int i = 0; i < 2; ++i) du[i][0] += gx[a] * ue[i][a], du[i][1] += gy[a] * ue[i][a];
-  const double tr = du[0][0] + du[1][1];
-  return {lambda_ * tr + 2 * mu_ * du[0][0], lambda_ * tr + 2 * mu_ * du[1][1], mu_ * (du[0][1] + du[1][0])};
+  return {du[0][0], du[1][1], 0.5 * (du[0][1] + du[1][0])};
+}
+
+std::array<double, 3> ElasticityAssembler::stressAt(const Vector& uOverlap, LO e, double s, double r) const {
+  const auto [exx, eyy, exy] = strainAt(uOverlap, e, s, r);
+  const double tr = exx + eyy;
+  return {lambda_ * tr + 2 * mu_ * exx, lambda_ * tr + 2 * mu_ * eyy, 2 * mu_ * exy};
+}
+
+std::array<std::vector<double>, 3> ElasticityAssembler::cellCentreStrains(const Vector& uOverlap) const {
+  const LO nc = mesh_.numLocalCells();
+  std::array<std::vector<double>, 3> out;
+  for (auto& v : out) v.resize(nc);
+  for (LO e = 0; e < nc; ++e) {
+    const auto strain = strainAt(uOverlap, e, 0.5, 0.5);
+    for (int q = 0; q < 3; ++q) out[q][e] = strain[q];
+  }
+  return out;
 }
 
 std::array<double, 5> ElasticityAssembler::withOutOfPlaneAndVonMises(double sxx, double syy, double sxy) const {

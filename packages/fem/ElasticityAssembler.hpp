@@ -72,6 +72,12 @@ class ElasticityAssembler : public Assembler {
   /// Nodal stress sigma_xx, sigma_yy, sigma_xy at a point of a local cell (reference
   /// coordinates s, r) for overlap values \p uOverlap; for tests and output.
   std::array<double, 3> stressAt(const Vector& uOverlap, LO cell, double s, double r) const;
+  /// The strain eps_xx, eps_yy, eps_xy (the tensor's components: eps_xy = (d_y u_x + d_x u_y) / 2,
+  /// half the engineering shear strain) at a point of a local cell, as stressAt() [dimensionless].
+  std::array<double, 3> strainAt(const Vector& uOverlap, LO cell, double s, double r) const;
+  /// The strain at the centre of every local cell, one vector per component (eps_xx, eps_yy,
+  /// eps_xy as strainAt()), for output.
+  std::array<std::vector<double>, 3> cellCentreStrains(const Vector& uOverlap) const;
   /// The stress at the centre of every local cell, in the unit of the Lame parameters, one vector
   /// per quantity (for output): sigma_xx, sigma_yy, sigma_xy, sigma_zz = lambda (eps_xx + eps_yy) (plane
   /// strain: eps_zz = 0) and the von Mises stress

@@ -6,6 +6,8 @@
 #    lambda tr(eps) and von Mises, to 1e-9;
 #  - after the block has started to vibrate, a probe at a cell's centre reads the Exodus file's cell
 #    stress of that cell (the same quantity, two outputs) in every written step;
+#  - the Exodus cell strains eps_xx, eps_yy, eps_xy are the uniform strain at t = 0 in every cell, and
+#    cell by cell the cell stresses in every written step (Hooke's law, to 1e-9);
 #  - 2 ranks give the same probe stresses as 1 rank to 1e-9 in every step (the node probe lies on the
 #    ranks' boundary: its mean takes cells of both ranks);
 #  - the list may come in any order and spacing ("sigma,v , u" gives u, v and the stress);
@@ -116,6 +118,20 @@ with netCDF4.Dataset(files[0]) as d:
         located += values[top] - min(values) > 1e-3 * vm  # not uniform: the place tells something
     if located < len(times) // 2:
         fail(f"the cell stresses are uniform in {len(times) - located} of {len(times)} steps: the place was hardly checked")
+# The Exodus cell strains: the uniform strain (eps_xy the tensor's, half of gamma_xy) in every cell at
+# t = 0, and Hooke's law sigma = lambda tr(eps) I + 2 mu eps cell by cell in every written step.
+with netCDF4.Dataset(files[0]) as d:
+    cells = {q: d.variables[f"vals_elem_var{names.index(q) + 1}eb1"][:] for q in
+             ("eps_xx", "eps_yy", "eps_xy", "sigma_xx", "sigma_yy", "sigma_xy")}
+for q, want in (("eps_xx", exx), ("eps_yy", eyy), ("eps_xy", exy)):
+    if not abs(cells[q][0] - want).max() <= 1e-9 * exx:
+        fail(f"t = 0: the Exodus cells' {q} is not the uniform strain's {want}")
+tr = cells["eps_xx"] + cells["eps_yy"]
+hooke = max(abs(cells["sigma_xx"] - lam * tr - 2 * mu * cells["eps_xx"]).max(),
+            abs(cells["sigma_yy"] - lam * tr - 2 * mu * cells["eps_yy"]).max(),
+            abs(cells["sigma_xy"] - 2 * mu * cells["eps_xy"]).max())
+if not hooke <= 1e-9 * abs(sxx):
+    fail(f"the Exodus cells' stress and strain break Hooke's law by {hooke:.3g} Pa")
 if checked == 0:
     fail("no Exodus value was compared with the centre probe")
 print(f"max_von_mises: the Exodus cells' largest and its place in {len(times)} steps")
