@@ -271,7 +271,8 @@ std::string AdaptiveSimulation::plan() const {
       os << "\n";
     }
     if (const auto* p = sim_->momentPoint())
-      os << "moments and angular momentum about (" << (*p)[0] << ", " << (*p)[1] << ") (Output/Moment Point)\n";
+      os << (a.get<std::string>("Strategy") == "none" ? "moments and angular momentum" : "moments") << " about ("
+         << (*p)[0] << ", " << (*p)[1] << ") (Output/Moment Point)\n";
   }
   {
     const int finer = a.get<std::string>("Strategy") == "none"

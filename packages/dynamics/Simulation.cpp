@@ -399,7 +399,7 @@ struct Simulation::Impl {
   /// gives one by one, in the order of Mesh/Boundary Segments: empty unless two or more hold unknowns.
   std::vector<std::pair<int, std::string>> supports;
   /// Flags on d's overlap unknowns per support: each Dirichlet unknown belongs to the first support
-  /// in supports that holds it (a corner between two supports to the first).
+  /// in supports that holds it (that component of it: a roller and a clamp may share a node's two).
   const std::vector<std::vector<char>>& supportRows(Discretisation& d) const {
     if (d.supportRows.empty() && !supports.empty()) {
       const int nc = problem->components();
@@ -1030,24 +1030,21 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     const auto [x, y] = parsePoint(spec, "Output/Probes/" + name, "a probe's");
     I.probes.push_back({name, {x, y}});
   }
-  const std::string momentPoint = out.get<std::string>("Moment Point");
-  if (I.problem->components() == 1 && momentPoint != outputParameters().get<std::string>("Moment Point"))
+  I.momentPoint = parsePoint(out.get<std::string>("Moment Point"), "Output/Moment Point", "the moment point's");
+  if (I.problem->components() == 1 && (I.momentPoint[0] != 0 || I.momentPoint[1] != 0))
     SIGNORINI_USER_ERROR("Output/Moment Point: moments are reported for plane strain elasticity (Problem/Type); the "
                          "scalar wave equation has none");
-  I.momentPoint = parsePoint(momentPoint, "Output/Moment Point", "the moment point's");
   {  // supports reported one by one: two or more Dirichlet segments
     const unsigned held = I.problem->dirichletMask | I.problem->componentDirichletMask[0] |
                           (I.problem->components() == 2 ? I.problem->componentDirichletMask[1] : 0u);
     for (int i = 0; i < I.segments->size(); ++i)
-      if (held >> i & 1u) {
-        const std::string& name = I.segments->name(i);
-        if (name.find_first_of("\"\n\r") != std::string::npos || name.size() > 240)
-          SIGNORINI_USER_ERROR("Mesh/Boundary Segments/" << name.substr(0, 40) << ": the name of a Dirichlet segment "
-                                                                                "names the step table's column reaction:"
-                                                         << name.substr(0, 40) << " when several are held; it must not hold a quote or a line break and has at most 240 bytes");
-        I.supports.emplace_back(i, name);
-      }
+      if (held >> i & 1u) I.supports.emplace_back(i, I.segments->name(i));
     if (I.supports.size() < 2) I.supports.clear();
+    for (const auto& [segment, name] : I.supports)  // a CSV header and an Exodus variable name
+      if (name.find_first_of("\"\n\r") != std::string::npos || name.size() > 240)
+        SIGNORINI_USER_ERROR("Mesh/Boundary Segments/" << name.substr(0, 40) << ": with several Dirichlet segments "
+                             "each names the step table's columns reaction:<segment>; a name must not hold a quote "
+                             "or a line break and has at most 240 bytes");
   }
   // Two probes must not name one column (a probe "p" with its velocity and a probe "p:v").
   std::map<std::string, std::string> probeOfColumn;

@@ -540,6 +540,24 @@ signorini_add_driver_test(bad_moment_point_function EXIT 1
 signorini_add_driver_test(check_names_moment_point EXIT 0
   ARGS --check --output-dir {OUT} --set "Output/Moment Point=0.1/2, 2*0.025" ${decks}/block-on-floor.xml
   REGEX "moments and angular momentum about [(]0[.]05, 0[.]05[)] [(]Output/Moment Point[)]")
+# An adaptive run has no angular_momentum column: --check names the moments only.
+signorini_add_driver_test(check_names_moment_point_adaptive EXIT 0
+  ARGS --check --output-dir {OUT} --set "Adaptivity/Cycles=2" ${PROJECT_SOURCE_DIR}/inputs/bar.xml
+  REGEX "moments about [(]0, 0[)] [(]Output/Moment Point[)]"
+  ABSENT "angular momentum")
+# The scalar problem takes the origin however it is written.
+signorini_add_driver_test(moment_point_origin_of_membrane EXIT 0
+  ARGS --check --output-dir {OUT} --set "Output/Moment Point=0,0.0" ${decks}/good.xml)
+# A Dirichlet segment's name becomes a column only where there are several: one with a long name is fine.
+string(REPEAT "a" 250 long_segment)
+signorini_add_driver_test(long_name_of_the_only_support EXIT 0
+  ARGS --check --output-dir {OUT} --set "Mesh/Boundary Segments/${long_segment}=left"
+       --set "Problem/Dirichlet Segments=${long_segment}" ${PROJECT_SOURCE_DIR}/inputs/bar.xml)
+signorini_add_driver_test(bad_long_name_of_a_support EXIT 1
+  ARGS --check --output-dir {OUT} --set "Mesh/Boundary Segments/${long_segment}=left"
+       --set "Mesh/Boundary Segments/top=top" --set "Problem/Dirichlet Segments=${long_segment}, top"
+       ${PROJECT_SOURCE_DIR}/inputs/bar.xml
+  REGEX "with several Dirichlet segments each names the step table's columns reaction:<segment>; a name must not hold")
 # The Exodus file cannot take its final name when the run ends: the step table goes too.
 signorini_add_driver_test(output_exodus_not_renamable EXIT 1
   ARGS --output-dir {OUT} ${decks}/good.xml

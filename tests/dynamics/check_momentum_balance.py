@@ -15,6 +15,7 @@ r(x) = (-(y - p_y), x - p_x) lies in the Q1 space and in the kernel of K, so r^T
 and, with angular_momentum = (M r) . v,
     angular_momentum(n) - angular_momentum(n-1) = k ((1 - alpha) G_M(n-1) + alpha G_M(n)),
     G_M = applied_moment + contact_moment + reaction_moment (each 0 where the table has no column).
+(Both hold step by step with the paper's contact force; with Contact Force = implicit over a contact only.)
 
 Usage: check_momentum_balance.py STEPS_CSV TOL [--alpha A] [--load EXPR ...] [--applied-moment EXPR]
                                  [--contact C:S] [--free]

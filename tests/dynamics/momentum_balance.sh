@@ -24,7 +24,7 @@
 #    lumping in M r by 3e-4);
 #  - a block hanging from its clamped top under its weight (no contact): the mean reaction over 600
 #    steps is its weight, 27173.7 N/m^3 x 0.005 m^2 = 135.87 N/m upwards, and the mean reaction
-#    moment about the origin that of the weight, 135.87 N/m x 0.05 m = 6.7934 N m/m counterclockwise;
+#    moment about the origin balances the weight's, 135.87 N/m x 0.05 m = 6.7934 N m/m clockwise;
 #  - controls: the Alpha = 0.6 table checked as Alpha = 1/2, a zeroed reaction_force, a reaction_force
 #    one step late, a halved momentum and a halved applied_load (against --load, and in the balance),
 #    a halved angular_momentum, a zeroed reaction_moment and a halved applied_moment (against
@@ -105,7 +105,7 @@ if not abs(mean / 135.87 - 1) <= 0.01:
     fail(f"hanging block: mean reaction_force_y {mean:.6g} N/m over {len(hanging)} steps, its weight is 135.87 N/m")
 moment = sum(float(r["reaction_moment"]) for r in hanging_rows) / len(hanging_rows)
 if not abs(moment / 6.793425 - 1) <= 0.01:
-    fail(f"hanging block: mean reaction_moment {moment:.6g} N m/m, the weight's moment is 6.7934 N m/m")
+    fail(f"hanging block: mean reaction_moment {moment:.6g} N m/m, the weight's moment is -6.7934 N m/m")
 if any(c.startswith("reaction_force") for c in table(f"{work}/block/block-on-floor.steps.csv")[0]):
     fail("block: a reaction_force column without Dirichlet conditions")
 for f in (f"{work}/block/block-on-floor.steps.csv", f"{work}/membrane/good.steps.csv"):

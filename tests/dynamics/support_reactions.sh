@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # With two or more Dirichlet segments the step table gives each support's reaction,
 # reaction:<segment> (elasticity reaction:<segment>:x, :y, :moment): the rows of the Dirichlet
-# unknowns it holds, a corner between two supports counted with the first in Mesh/Boundary Segments.
+# unknowns it holds, an unknown held by two supports (a corner) counted with the first of them in
+# Mesh/Boundary Segments.
 #  - the supports' columns add up to the total reaction (reaction_force, reaction_moment) in every step,
 #    to rounding: a block clamped at both sides pressed onto the floor under a body force varying in
 #    time, with lumped boundary mass, on 2 ranks (both end contact segments end at clamped corners, whose
