@@ -1556,8 +1556,11 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       const auto load = fem::loadResultant(*d->mesh, nc, *I.problem, t, momentPoint);
       forces.insert(forces.end(), load.begin(), load.end());
     }
+    std::array<std::vector<double>, 5> cellStresses;  // elasticity, in a step written to Exodus
     if (nc == 2) {
-      const auto peak = dynamic_cast<const fem::ElasticityAssembler&>(*d->assembler).largestVonMises(uOverlap);
+      const auto& elastic = dynamic_cast<const fem::ElasticityAssembler&>(*d->assembler);
+      if (writeExodus) cellStresses = elastic.cellCentreStresses(uOverlap);
+      const auto peak = writeExodus ? elastic.largestVonMises(cellStresses[4]) : elastic.largestVonMises(uOverlap);
       forces.insert(forces.end(), peak.begin(), peak.end());
     }
     row.insert(row.begin() + static_cast<std::ptrdiff_t>(forceColumn), forces.begin(), forces.end());
@@ -1601,7 +1604,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         cell.push_back(extras.cellField.empty() ? std::vector<double>(d->mesh->numLocalCells(), 0.0) : extras.cellField);
       if (nc == 2) {
         const auto& elastic = dynamic_cast<const fem::ElasticityAssembler&>(*d->assembler);
-        for (auto& quantity : elastic.cellCentreStresses(uOverlap)) cell.push_back(std::move(quantity));
+        for (auto& quantity : cellStresses) cell.push_back(std::move(quantity));
         for (auto& quantity : elastic.cellCentreStrains(uOverlap)) cell.push_back(std::move(quantity));
       }
       std::vector<int> contactEdges;

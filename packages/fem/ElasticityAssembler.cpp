@@ -429,12 +429,18 @@ std::array<std::vector<double>, 5> ElasticityAssembler::cellCentreStresses(const
 std::array<double, 3> ElasticityAssembler::largestVonMises(const Vector& uOverlap) const {
   const LO nc = mesh_.numLocalCells();
   std::vector<double> vm(static_cast<size_t>(nc));
-  double largest = 0;
   for (LO e = 0; e < nc; ++e) {
     const auto [sxx, syy, sxy] = stressAt(uOverlap, e, 0.5, 0.5);
     vm[e] = withOutOfPlaneAndVonMises(sxx, syy, sxy)[4];
-    largest = std::max(largest, vm[e]);
   }
+  return largestVonMises(vm);
+}
+
+std::array<double, 3> ElasticityAssembler::largestVonMises(const std::vector<double>& vm) const {
+  const LO nc = mesh_.numLocalCells();
+  SIGNORINI_ASSERT(vm.size() == static_cast<size_t>(nc), "one von Mises stress per local cell");
+  double largest = 0;
+  for (LO e = 0; e < nc; ++e) largest = std::max(largest, vm[e]);
   double global = 0;
   Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_MAX, largest, Teuchos::outArg(global));
   // Values within 1e-6 of the largest are equal (mirror-symmetric states tie up to the solves'

@@ -93,6 +93,8 @@ class ElasticityAssembler : public Assembler {
   /// centre where it occurs, {value, x, y}: of the cells within 1e-6 of the largest value, the centre
   /// with the smallest x, then y (so that rounding does not move it between mirror cells). Collective.
   std::array<double, 3> largestVonMises(const Vector& uOverlap) const;
+  /// The same from the cells' von Mises stresses \p vonMises (cellCentreStresses()[4]). Collective.
+  std::array<double, 3> largestVonMises(const std::vector<double>& vonMises) const;
 
  private:
   /// What sumDirichletRows() and massTimesField() read of this discretisation and \p problem.
