@@ -16,6 +16,9 @@
 #    varies in time and along x, both components non-zero at the roller's corner, on 2 ranks;
 #  - the contact stabilisation's projected predictor (the clamped corner run);
 #  - the block dropped onto the floor: no Dirichlet conditions, no reaction_force column;
+#  - the block spinning freely about its centre at 100 rad/s (no force at all): its angular momentum
+#    is rho I_p omega = 2770 x 0.1 x 0.05 x (0.1^2 + 0.05^2) / 12 x 100 = 1.4427 N m s/m at t = 0 (Q1
+#    holds the rigid rotation exactly) and stays so (to 1e-9), its momentum 0;
 #  - elasticity's angular momentum about Output/Moment Point in every elastic run (the default origin,
 #    and other points), with applied_moment equal to the loads' moment computed by hand: a block
 #    clamped along its left side pressed onto the floor under a body force varying in time, with lumped
@@ -48,6 +51,8 @@ run corner_projected 1 "${corner[@]}" --set "Time Integration/Contact Stabilisat
 run bar 2 --set "Adaptivity/Strategy=none" --set "Time Integration/Final Time=1e-3" --set "Output/Write Exodus=false" \
   "$src/inputs/bar.xml"
 run block 1 "$decks/block-on-floor.xml"
+run spin 1 --set "Problem/Contact Segments=" --set "Problem/Obstacle=" --set "Time Integration/Final Time=2e-4" \
+  --set "Problem/Initial Velocity=-100*(y - 0.025), 100*(x - 0.05)" "$decks/block-on-floor.xml"
 run roller 2 --set "Mesh/Boundary Segments/left=left" --set "Mesh/Boundary Segments/top=top" \
   --set "Problem/Dirichlet X Segments=left" --set "Problem/Neumann Segments=top" --set "Output/Moment Point=0.05, 0.1" \
   --set "Problem/Neumann Data=-1e5*(1 + 1000*t), 2e5*(x - 0.2)" "$decks/block-on-floor.xml"
@@ -98,6 +103,15 @@ if not (any(int(r["active"]) > 0 for r in bar) and max(abs(float(r["reaction_for
 clamped = table(f"{work}/clamped/block-on-floor.steps.csv")
 if not (max(int(r["active"]) for r in clamped) == 8 and max(abs(float(r["contact_moment"])) for r in clamped) > 100):
     fail("clamped block: not every contact segment pressed, or no contact moment")
+spin = table(f"{work}/spin/block-on-floor.steps.csv")
+L0 = 2770 * 0.1 * 0.05 * (0.1 ** 2 + 0.05 ** 2) / 12 * 100
+if not (abs(float(spin[0]["angular_momentum"]) / L0 - 1) <= 1e-9 and
+        all(abs(float(r["angular_momentum"]) / L0 - 1) <= 1e-9 for r in spin)):
+    fail(f"spinning block: angular_momentum {spin[0]['angular_momentum']} .. {spin[-1]['angular_momentum']}, "
+         f"rho I_p omega = {L0!r}")
+# its linear momentum is 0: against the mass times the mean speed, 2770 x 0.005 x 2.79 = 38.6 N s/m
+if not all(abs(float(r[c])) <= 1e-9 * 38.6 for r in spin for c in ("momentum_x", "momentum_y")):
+    fail("spinning block: a linear momentum")
 hanging_rows = table(f"{work}/hanging/block-on-floor.steps.csv")[1:]
 hanging = [float(r["reaction_force_y"]) for r in hanging_rows]
 mean = sum(hanging) / len(hanging)
