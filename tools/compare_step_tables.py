@@ -8,8 +8,10 @@ runs has (a version that added a column) are named and left out instead. With --
 compare equal within R times the largest magnitude of their column in the two tables (runs that
 need not agree bit for bit: ordinary arithmetic on other numbers of ranks, elasticity), and the
 largest difference of every column is printed; the counts too (dofs, active, iterations) compare
-within R of their largest value.
-Usage: compare_step_tables.py BASE_A BASE_B [--common-columns] [--rtol R]"""
+within R of their largest value. With --atol A too, values also compare equal within A (in the
+column's unit): a column that is rounding noise around 0 in both runs (a symmetric body's horizontal
+reaction, 1e-5 N/m beside vertical reactions of 1e7) then does not count as a difference.
+Usage: compare_step_tables.py BASE_A BASE_B [--common-columns] [--rtol R [--atol A]]"""
 import argparse
 import glob
 import math
@@ -25,10 +27,15 @@ ap.add_argument("base_b", help="output base of the other run")
 ap.add_argument("--common-columns", action="store_true", help="leave out columns that only one run has")
 ap.add_argument("--rtol", type=float, help="compare within this fraction of each column's largest magnitude "
                 "(default: bit for bit)")
+ap.add_argument("--atol", type=float, default=0.0, help="with --rtol: also equal within this absolute difference")
 args = ap.parse_args()
-a, b, common, rtol = args.base_a, args.base_b, args.common_columns, args.rtol
+a, b, common, rtol, atol = args.base_a, args.base_b, args.common_columns, args.rtol, args.atol
 if rtol is not None and not rtol >= 0:
     fail(f"--rtol {rtol}: not a number >= 0")
+if not (atol >= 0 and math.isfinite(atol)):
+    fail(f"--atol {atol}: not a finite number >= 0")
+if atol > 0 and rtol is None:
+    fail("--atol needs --rtol (without it the tables compare bit for bit)")
 
 
 def suffixes(base):
@@ -91,7 +98,7 @@ for suffix in names:
         xa = [float(ta[row][c]) for row in range(1, len(ta))]
         xb = [float(tb[row][cb]) for row in range(1, len(tb))]
         scale = max([abs(x) for x in xa + xb if math.isfinite(x)], default=0.0)
-        same = [x == y or (math.isfinite(x) and math.isfinite(y) and abs(x - y) <= rtol * scale)
+        same = [x == y or (math.isfinite(x) and math.isfinite(y) and abs(x - y) <= max(rtol * scale, atol))
                 or (math.isnan(x) and math.isnan(y)) for x, y in zip(xa, xb)]
         gaps = [abs(x - y) for x, y in zip(xa, xb) if math.isfinite(x) and math.isfinite(y)]
         largest = max(gaps, default=0.0) / scale if scale > 0 else 0.0
@@ -102,6 +109,7 @@ for suffix in names:
             differs = True
         elif largest > 0:
             print(f"{suffix}: {name}: largest difference {largest:.3g} of the column's largest magnitude {scale:.6g}")
-within = "" if rtol is None else f" within {rtol:g} of each column's largest magnitude"
+within = "" if rtol is None else f" within {rtol:g} of each column's largest magnitude" + (
+    f" or {atol:g}" if atol > 0 else "")
 print(f"{len(names)} step tables, {compared} values compared{within}: {'differences' if differs else 'all equal'}")
 sys.exit(1 if differs else 0)

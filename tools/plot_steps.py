@@ -21,7 +21,8 @@ dotted, dash-dotted; from the fifth run on with markers); the legend stands besi
 --scale 'probe:*=1000' draws the columns the pattern matches times the factor (m as mm; the legend
 says "x 1000"; the first --scale that matches a column applies). --hline 2:135.87:weight draws a
 reference line at 135.87 in the second panel (panels are numbered from 1 in the order of
---columns), named in the legend by its label or its value. A
+--columns; the value in the units drawn, after --scale), named in the legend by its label or its
+value. A
 pattern that
 matches no column of a run, a missing or cut-short table stop the script with one line naming
 it, before anything is written. Uses Debian's python3 with matplotlib.
@@ -31,6 +32,7 @@ import fnmatch
 import math
 import os
 import sys
+import textwrap
 
 import matplotlib
 
@@ -126,7 +128,8 @@ def main():
         for index, value, text in lines:
             if index == panel:
                 ax.axhline(value, color="0.4", lw=0.8, ls=(0, (6, 3)), label=text)
-        ax.set_ylabel(("rate of " if a.rate else "") + pattern, fontsize=8)
+        # a long pattern wraps (the figure's height per panel holds about three lines of 30 characters)
+        ax.set_ylabel(textwrap.fill(("rate of " if a.rate else "") + pattern.replace(",", ", "), 30), fontsize=8)
         ax.grid(True, alpha=0.3)
         ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0)
     axes[-1][0].set_xlabel("t")

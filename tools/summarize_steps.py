@@ -14,13 +14,19 @@ is the double n k):
   integral  int x dt by the trapezoidal rule over the window's steps: for a force its impulse
             [N s/m]; with the paper's scheme (Alpha 1/2) the momentum changes by exactly the
             trapezoidal integral of the force resultant (applied_load + contact + reaction)
-  min, max  the smallest and the largest value and the (first) time of each
+  min, max  the smallest and the largest value and the (first) time of each; for a column with
+            place columns (max_von_mises with max_von_mises_at_x, _at_y) also the place of the max
   last      the value at the window's last step
-and, where the table has the contact columns, a contact summary: the steps with an active contact
-segment, the first and the last of them (first contact, last release), the number of separate
-contact intervals, the most active segments, the largest |contact_force| and its time, and the
-contact force's impulse. --csv prints one CSV row per run and column (run, column, steps, t_first,
-t_last, mean, integral, min, t_min, max, t_max, last) instead, and no contact summary. --cycle L
+(place columns are not summarised themselves) and, where the table has the contact columns, a
+contact summary: the steps with an active contact segment, the first and the last of them (first
+contact, last release), the number of separate contact intervals, the most active segments, the
+largest |contact_force| and its time, and the contact force's impulse. Peaks are those of the
+discrete run: with the paper's contact force the contact chatters, and its peak force and time
+change with the time step and the mesh (by 20% and several milliseconds on a clamped beam) where
+the mean and the impulse hardly do; a peak stress at a clamped corner grows with refinement
+(singular). --csv prints one CSV row per run and column (run, column, steps, t_first, t_last, mean,
+integral, min, t_min, max, t_max, x_at_max, y_at_max (empty without place columns), last) instead,
+and no contact summary. --cycle L
 takes cycle L's tables of adaptive runs. A pattern that matches no column, a window without a step,
 a missing or cut-short table stop the script with one line naming it.
 Uses Debian's python3 (no extra modules).
@@ -40,6 +46,21 @@ from tool_errors import ArgumentParser, InputError, reporting  # noqa: E402
 DEFAULT_PATTERNS = ["energy", "contact_force", "contact_moment", "reaction*", "applied*", "max_von_mises"]
 
 
+def is_place(column, table):
+    """Whether column is the x or y place column of another column of the table (max_von_mises_at_x)."""
+    for suffix in ("_at_x", "_at_y"):
+        if column.endswith(suffix) and column[:-len(suffix)] in table:
+            return True
+    return False
+
+
+def place_of_max(table, column, n):
+    """The place (x, y) the table gives for column's value at step n, or None."""
+    if column + "_at_x" in table and column + "_at_y" in table:
+        return table[column + "_at_x"][n], table[column + "_at_y"][n]
+    return None
+
+
 def summary(t, x):
     """{mean, integral, min, t_min, max, t_max, last} of the values x at the times t."""
     integral = sum(0.5 * (t[n] - t[n - 1]) * (x[n] + x[n - 1]) for n in range(1, len(t)))
@@ -47,7 +68,7 @@ def summary(t, x):
     low = min(range(len(x)), key=lambda n: (x[n], n))
     high = min(range(len(x)), key=lambda n: (-x[n], n))
     return {"mean": integral / span if span > 0 else x[0], "integral": integral, "min": x[low], "t_min": t[low],
-            "max": x[high], "t_max": t[high], "last": x[-1]}
+            "max": x[high], "t_max": t[high], "n_max": high, "last": x[-1]}
 
 
 def contact_summary(table):
@@ -90,18 +111,21 @@ def main():
             columns = [c for p in a.columns for c in matching(table, p, path)]
         else:
             columns = [c for p in DEFAULT_PATTERNS for c in table if fnmatch.fnmatchcase(c, p)]
-        columns = list(dict.fromkeys(columns))
+        # a place column (x_at_x, x_at_y) belongs to its quantity x: its max's place, not summarised
+        columns = [c for c in dict.fromkeys(columns) if not is_place(c, table)]
         runs.append((base, table, columns))
     if a.csv:
         w = csv.writer(sys.stdout, lineterminator="\n")
         w.writerow(["run", "column", "steps", "t_first", "t_last", "mean", "integral", "min", "t_min", "max", "t_max",
-                    "last"])
+                    "x_at_max", "y_at_max", "last"])
         for base, table, columns in runs:
             t = table["t"]
             for c in columns:
                 s = summary(t, table[c])
+                place = place_of_max(table, c, s["n_max"])
                 w.writerow([base, c, len(t), repr(t[0]), repr(t[-1])] +
-                           [repr(s[k]) for k in ("mean", "integral", "min", "t_min", "max", "t_max", "last")])
+                           [repr(s[k]) for k in ("mean", "integral", "min", "t_min", "max", "t_max")] +
+                           ([repr(place[0]), repr(place[1])] if place else ["", ""]) + [repr(s["last"])])
         return
     for base, table, columns in runs:
         t = table["t"]
@@ -113,6 +137,11 @@ def main():
             s = summary(t, table[c])
             print(f"  {c:<{width}} {s['mean']:>13.6g} {s['integral']:>13.6g} {s['min']:>13.6g} {s['t_min']:>10.4g} "
                   f"{s['max']:>13.6g} {s['t_max']:>10.4g} {s['last']:>13.6g}")
+        for c in columns:  # where the largest value of a column with place columns was
+            s = summary(t, table[c])
+            place = place_of_max(table, c, s["n_max"])
+            if place:
+                print(f"  {c}: the largest, {s['max']:.6g} at t = {s['t_max']:.6g}, at ({place[0]:.6g}, {place[1]:.6g})")
         for line in contact_summary(table):
             print(line)
 

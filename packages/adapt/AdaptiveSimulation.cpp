@@ -273,6 +273,15 @@ std::string AdaptiveSimulation::plan() const {
     if (const auto* p = sim_->momentPoint())
       os << (a.get<std::string>("Strategy") == "none" ? "moments and angular momentum" : "moments") << " about ("
          << (*p)[0] << ", " << (*p)[1] << ") (Output/Moment Point)\n";
+    if (const auto supports = sim_->supports(); !supports.empty()) {
+      const bool moments = sim_->momentPoint() != nullptr;
+      os << "supports (reaction:<segment>" << (moments ? "; each moment about the support's centre" : "") << "):";
+      for (size_t i = 0; i < supports.size(); ++i) {
+        os << (i ? ", " : " ") << supports[i].first;
+        if (moments) os << " at (" << supports[i].second[0] << ", " << supports[i].second[1] << ")";
+      }
+      os << "\n";
+    }
   }
   {
     const int finer = a.get<std::string>("Strategy") == "none"

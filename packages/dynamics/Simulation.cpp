@@ -398,6 +398,9 @@ struct Simulation::Impl {
   /// The Dirichlet segments (Mesh/Boundary Segments index, name) whose reactions the step table
   /// gives one by one, in the order of Mesh/Boundary Segments: empty unless two or more hold unknowns.
   std::vector<std::pair<int, std::string>> supports;
+  /// The centre of each support (the mean of its boundary edges' points, the centre of a straight
+  /// clamped section), about which its reaction:<segment>:moment is taken (elasticity).
+  std::vector<std::array<double, 2>> supportCentres;
   /// Flags on d's overlap unknowns per support: each Dirichlet unknown belongs to the first support
   /// in supports that holds it (that component of it: a roller and a clamp may share a node's two).
   const std::vector<std::vector<char>>& supportRows(Discretisation& d) const {
@@ -1067,6 +1070,20 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   I.initialForest = std::make_shared<mesh::Forest>(I.coarse, core::rawMpiComm(*comm), meshParams.get<int>("Refinement Level"));
   // Set-up checks on the initial mesh, before any output exists.
   auto d = I.build(I.initialForest, 0);
+  for (const auto& [segment, name] : I.supports) {  // each support's centre: the mean of its edges' points
+    double sums[3];
+    const auto& edges = d->mesh->boundaryEdges();
+    core::reproducibleSums(*comm, 3, edges.size(),
+                           [&](std::size_t k, double* out) {
+                             const auto& be = edges[k];
+                             const bool on = be.segments >> segment & 1u;
+                             const double length = on ? be.length() : 0.0;
+                             const auto mid = be.at(0.5);
+                             out[0] = length * mid[0], out[1] = length * mid[1], out[2] = length;
+                           },
+                           sums);
+    I.supportCentres.push_back({sums[0] / sums[2], sums[1] / sums[2]});
+  }
   for (auto& [name, p] : I.probes) {
     double s, r;
     const LO cell = d->mesh->locate(p[0], p[1], s, r);
@@ -1263,6 +1280,11 @@ const std::string& Simulation::outputBase() const { return impl_->outputBase; }
 const std::vector<std::pair<std::string, std::array<double, 2>>>& Simulation::probes() const { return impl_->probes; }
 const std::array<double, 2>* Simulation::momentPoint() const {
   return impl_->problem->components() == 2 ? &impl_->momentPoint : nullptr;
+}
+std::vector<std::pair<std::string, std::array<double, 2>>> Simulation::supports() const {
+  std::vector<std::pair<std::string, std::array<double, 2>>> out;
+  for (size_t g = 0; g < impl_->supports.size(); ++g) out.emplace_back(impl_->supports[g].second, impl_->supportCentres[g]);
+  return out;
 }
 const core::ParameterList& Simulation::deck() const { return impl_->deck; }
 
@@ -1543,11 +1565,14 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         if (momentPoint) reaction[2] += lambdaToPhysical * d->coupling->heldMoment(lambda, *momentPoint);
       }
       forces.insert(forces.end(), reaction.begin(), reaction.end());
-      for (const auto& rows : I.supportRows(*d)) {  // the same, support by support
-        auto share = d->assembler->dirichletRowSums(uOverlap, *aOverlap, *I.problem, t, d->lumpAt, momentPoint, &rows);
+      const auto& supportRows = I.supportRows(*d);
+      for (size_t g = 0; g < supportRows.size(); ++g) {  // the same, support by support, each about its centre
+        const auto& rows = supportRows[g];
+        const std::array<double, 2>* centre = nc == 2 ? &I.supportCentres[g] : nullptr;
+        auto share = d->assembler->dirichletRowSums(uOverlap, *aOverlap, *I.problem, t, d->lumpAt, centre, &rows);
         if (d->coupling) {
           share[nc == 1 ? 0 : I.problem->contactComponent] += lambdaToPhysical * d->coupling->heldShare(lambda, rows);
-          if (momentPoint) share[2] += lambdaToPhysical * d->coupling->heldMoment(lambda, *momentPoint, &rows);
+          if (centre) share[2] += lambdaToPhysical * d->coupling->heldMoment(lambda, *centre, &rows);
         }
         forces.insert(forces.end(), share.begin(), share.end());
       }

@@ -152,6 +152,10 @@ class Simulation {
   /// The point (Output/Moment Point, evaluated) about which elasticity's step tables take the
   /// moments and the angular momentum; null for the scalar wave equation.
   const std::array<double, 2>* momentPoint() const;
+  /// The supports whose reactions the step table gives one by one (two or more Dirichlet segments;
+  /// else empty): each segment's name and its centre, about which elasticity's
+  /// reaction:<segment>:moment is taken.
+  std::vector<std::pair<std::string, std::array<double, 2>>> supports() const;
   /// The deck as the run uses it and its output files record it: validated, defaults filled in,
   /// a relative Mesh/File made absolute (--print-parameters DECK prints it).
   const core::ParameterList& deck() const;

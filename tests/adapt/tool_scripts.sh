@@ -189,6 +189,23 @@ refuses transfer_not_every_step "transfer_vs_coarsening.py: error: $work/membran
 # compare_step_tables.py
 refuses tables_missing "compare_step_tables.py: error: $work/nothing.steps.csv: no such file" \
   "$py" "$tools/compare_step_tables.py" "$work/nothing" "$work/membrane"
+# --atol: a column of rounding noise around 0 (1e-5 against 1e7 in the other) differs relative to
+# itself but not within an absolute floor; without --rtol the floor is refused.
+"$py" - "$work" <<'PY'
+import math, sys
+for name, sign in (("noise-a", 1.0), ("noise-b", -1.0)):
+    with open(f"{sys.argv[1]}/{name}.steps.csv", "w") as f:
+        f.write("step,t,reaction_force_y,reaction_force_x\n")
+        for n in range(5):
+            f.write(f"{n},{n / 10!r},{1e7 * (1 + n / 10) * (1 + sign * 1e-12)!r},{sign * 1e-5 * math.sin(n)!r}\n")
+PY
+"$py" "$tools/compare_step_tables.py" "$work/noise-a" "$work/noise-b" --rtol 1e-6 > "$work/noise.log" &&
+  fail "compare_step_tables.py --rtol passed the noise column"
+"$py" "$tools/compare_step_tables.py" "$work/noise-a" "$work/noise-b" --rtol 1e-6 --atol 1e-4 > "$work/noise.log" &&
+  grep -q "within 1e-06 of each column's largest magnitude or 0.0001: all equal" "$work/noise.log" ||
+  { cat "$work/noise.log"; fail "compare_step_tables.py --atol"; }
+refuses tables_atol_alone "compare_step_tables.py: error: --atol needs --rtol" \
+  "$py" "$tools/compare_step_tables.py" "$work/noise-a" "$work/noise-b" --atol 1e-4
 refuses tables_cut_number "compare_step_tables.py: error: $work/cut-number.steps.csv: $cut_number" \
   "$py" "$tools/compare_step_tables.py" "$work/membrane" "$work/cut-number"
 refuses tables_no_argument "compare_step_tables.py: error: the following arguments are required: base_b" \
@@ -457,6 +474,22 @@ for quantity, forces in (("momentum_y", ("applied_load_y", "reaction_force_y", "
         sys.exit(f"{quantity} changes by {change(quantity)!r}, the forces' impulse is {impulse!r}")
 if float(s["contact_force"]["max"]) <= 0:
     sys.exit("no contact in the window")
+PY
+# The peak stress's place: the table's max_von_mises_at_x, _at_y in the step of the largest value;
+# the place columns are not summarised themselves.
+"$py" "$tools/summarize_steps.py" "$work/bar-one-mesh/bar" --csv --columns 'max_von_mises*' > "$work/summary-peak.csv" &&
+  "$py" - "$work" <<'PY' || { cat "$work/summary-peak.csv"; fail "summarize_steps.py: the peak stress's place"; }
+import csv, sys
+work = sys.argv[1]
+rows = list(csv.DictReader(open(f"{work}/summary-peak.csv")))
+table = list(csv.DictReader(open(f"{work}/bar-one-mesh/bar.steps.csv")))
+peak = max(table, key=lambda r: float(r["max_von_mises"]))
+if [r["column"] for r in rows] != ["max_von_mises"]:
+    sys.exit(f"summarised {[r['column'] for r in rows]}, expected max_von_mises alone")
+if (float(rows[0]["x_at_max"]), float(rows[0]["y_at_max"])) != (float(peak["max_von_mises_at_x"]),
+                                                               float(peak["max_von_mises_at_y"])):
+    sys.exit(f"place {rows[0]['x_at_max']}, {rows[0]['y_at_max']}; the table's at step {peak['step']}: "
+             f"{peak['max_von_mises_at_x']}, {peak['max_von_mises_at_y']}")
 PY
 refuses summary_no_match "summarize_steps.py: error: $work/bar.steps.csv: no column matches 'nowhere'" \
   "$py" "$tools/summarize_steps.py" "$work/bar" --columns nowhere

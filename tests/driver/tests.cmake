@@ -107,6 +107,9 @@ signorini_add_driver_test(adaptive_stop_on_tolerance EXIT 0
 # Reading the deck.
 signorini_add_bad_deck_test(malformed_xml ${decks}/malformed.xml
   "malformed[.]xml: malformed XML deck: XML parse error at line 19")
+# A segment condition with < inside a value: the message says how XML writes it.
+signorini_add_bad_deck_test(less_than_in_value ${decks}/less-than-in-value.xml
+  "less-than-in-value[.]xml: malformed XML deck: XML parse error at line 18: invalid character in attribute value [(]inside a value write < as &lt. and & as &amp.")
 signorini_add_bad_deck_test(missing_deck ${decks}/does-not-exist.xml
   "does-not-exist[.]xml: cannot open the deck"
   "missing or unreadable file")
