@@ -105,6 +105,10 @@ core::ParameterList outputParameters() {
                   "(elasticity: each with :x and :y appended); sigma (elasticity) the stress probe:<name>:sigma_xx, "
                   ":sigma_yy, :sigma_xy, :sigma_zz and :von_mises [force / area], the mean over the cells that hold "
                   "the point");
+  core::addString(p, "Stress Region", "1",
+                  "Elasticity: where the step table's max_von_mises looks, an expression of x and y that is not 0 "
+                  "at the centres of the cells that count (e.g. \"(x > 0.05) * (0.95 > x)\" leaves out the "
+                  "clamped ends' singular corners; \"1\": every cell)");
   core::addString(p, "Moment Point", "0, 0",
                   "Elasticity: the point \"x, y\" (numbers or constant expressions) about which the step table's "
                   "moments are taken: reaction_moment, applied_moment, contact_moment [force length / length], "
@@ -364,6 +368,8 @@ struct Discretisation {
   std::vector<char> lumpAt;  ///< the unknowns whose mass couplings M holds on its diagonal (empty: none)
   /// Per support (Simulation::Impl::supports): flags on the overlap unknowns it holds (built at the first output).
   std::vector<std::vector<char>> supportRows;
+  /// Output/Stress Region: flags of the local cells whose centre lies in it (built at the first output).
+  std::vector<char> stressCells;
   long builtAtStep = 0;  ///< identifies the mesh in the Exodus series
   long id = 0;           ///< unique among all discretisations of the run (StepView::meshId)
 };
@@ -395,6 +401,22 @@ struct Simulation::Impl {
   bool probeStress = false;            ///< and the stress (elasticity)
   std::vector<std::string> probeColumns;  ///< the steps table's probe columns, probe by probe, field by field
   std::array<double, 2> momentPoint = {0, 0};  ///< Output/Moment Point (elasticity's moments)
+  /// Output/Stress Region (elasticity), null for every cell: where max_von_mises looks.
+  std::unique_ptr<core::Expression> stressRegion;
+  /// The flags of d's local cells whose centre lies in stressRegion (null without one; built once per mesh).
+  const std::vector<char>* stressCells(Discretisation& d) const {
+    if (!stressRegion) return nullptr;
+    if (d.stressCells.empty()) {
+      const auto& X = d.mesh->cornerCoordsHost;
+      d.stressCells.resize(static_cast<size_t>(d.mesh->numLocalCells()));
+      for (LO e = 0; e < d.mesh->numLocalCells(); ++e) {
+        double x = 0, y = 0;
+        for (int c = 0; c < 4; ++c) x += 0.25 * X(e, c, 0), y += 0.25 * X(e, c, 1);
+        d.stressCells[e] = (*stressRegion)(x, y, 0.0) != 0;
+      }
+    }
+    return &d.stressCells;
+  }
   /// The Dirichlet segments (Mesh/Boundary Segments index, name) whose reactions the step table
   /// gives one by one, in the order of Mesh/Boundary Segments: empty unless two or more hold unknowns.
   std::vector<std::pair<int, std::string>> supports;
@@ -1034,6 +1056,14 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     I.probes.push_back({name, {x, y}});
   }
   I.momentPoint = parsePoint(out.get<std::string>("Moment Point"), "Output/Moment Point", "the moment point's");
+  if (const std::string region = out.get<std::string>("Stress Region"); core::trim(region) != "1") {
+    if (I.problem->components() == 1)
+      SIGNORINI_USER_ERROR("Output/Stress Region: stresses are those of plane strain elasticity (Problem/Type); the "
+                           "scalar wave equation has none");
+    I.stressRegion = std::make_unique<core::Expression>(region, "Output/Stress Region");
+    if (!I.stressRegion->isTimeIndependent())
+      SIGNORINI_USER_ERROR("Output/Stress Region: \"" << region << "\" depends on t; the region is one of the body (x, y)");
+  }
   if (I.problem->components() == 1 && (I.momentPoint[0] != 0 || I.momentPoint[1] != 0))
     SIGNORINI_USER_ERROR("Output/Moment Point: moments are reported for plane strain elasticity (Problem/Type); the "
                          "scalar wave equation has none");
@@ -1070,6 +1100,14 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
   I.initialForest = std::make_shared<mesh::Forest>(I.coarse, core::rawMpiComm(*comm), meshParams.get<int>("Refinement Level"));
   // Set-up checks on the initial mesh, before any output exists.
   auto d = I.build(I.initialForest, 0);
+  if (const auto* cells = I.stressCells(*d)) {  // a region that holds no cell centre of the deck's mesh
+    int mine = std::count(cells->begin(), cells->end(), 1) > 0 ? 1 : 0, any = 0;
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_MAX, mine, Teuchos::outArg(any));
+    if (!any)
+      SIGNORINI_USER_ERROR("Output/Stress Region: \"" << I.stressRegion->text()
+                                                      << "\" is 0 at every cell centre of the deck's mesh: max_von_mises "
+                                                         "would look nowhere");
+  }
   for (const auto& [segment, name] : I.supports) {  // each support's centre: the mean of its edges' points
     double sums[3];
     const auto& edges = d->mesh->boundaryEdges();
@@ -1585,7 +1623,9 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     if (nc == 2) {
       const auto& elastic = dynamic_cast<const fem::ElasticityAssembler&>(*d->assembler);
       if (writeExodus) cellStresses = elastic.cellCentreStresses(uOverlap);
-      const auto peak = writeExodus ? elastic.largestVonMises(cellStresses[4]) : elastic.largestVonMises(uOverlap);
+      const auto* region = I.stressCells(*d);
+      const auto peak =
+          writeExodus ? elastic.largestVonMises(cellStresses[4], region) : elastic.largestVonMises(uOverlap, region);
       forces.insert(forces.end(), peak.begin(), peak.end());
     }
     row.insert(row.begin() + static_cast<std::ptrdiff_t>(forceColumn), forces.begin(), forces.end());

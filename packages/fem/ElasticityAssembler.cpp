@@ -426,28 +426,37 @@ std::array<std::vector<double>, 5> ElasticityAssembler::cellCentreStresses(const
   return out;
 }
 
-std::array<double, 3> ElasticityAssembler::largestVonMises(const Vector& uOverlap) const {
+std::array<double, 3> ElasticityAssembler::largestVonMises(const Vector& uOverlap,
+                                                           const std::vector<char>* region) const {
   const LO nc = mesh_.numLocalCells();
   std::vector<double> vm(static_cast<size_t>(nc));
   for (LO e = 0; e < nc; ++e) {
     const auto [sxx, syy, sxy] = stressAt(uOverlap, e, 0.5, 0.5);
     vm[e] = withOutOfPlaneAndVonMises(sxx, syy, sxy)[4];
   }
-  return largestVonMises(vm);
+  return largestVonMises(vm, region);
 }
 
-std::array<double, 3> ElasticityAssembler::largestVonMises(const std::vector<double>& vm) const {
+std::array<double, 3> ElasticityAssembler::largestVonMises(const std::vector<double>& vm,
+                                                           const std::vector<char>* region) const {
   const LO nc = mesh_.numLocalCells();
   SIGNORINI_ASSERT(vm.size() == static_cast<size_t>(nc), "one von Mises stress per local cell");
-  double largest = 0;
-  for (LO e = 0; e < nc; ++e) largest = std::max(largest, vm[e]);
+  SIGNORINI_ASSERT(!region || region->size() == static_cast<size_t>(nc), "one region flag per local cell");
+  const auto counts = [&](LO e) { return !region || (*region)[e]; };
+  double largest = -1;  // von Mises stresses are >= 0: -1 where no cell counts
+  for (LO e = 0; e < nc; ++e)
+    if (counts(e)) largest = std::max(largest, vm[e]);
   double global = 0;
   Teuchos::reduceAll(*mesh_.comm(), Teuchos::REDUCE_MAX, largest, Teuchos::outArg(global));
+  if (global < 0) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {nan, nan, nan};
+  }
   // Values within 1e-6 of the largest are equal (mirror-symmetric states tie up to the solves'
   // rounding, which depends on the ranks): of them the centre with the smallest x, then y.
   std::array<double, 2> place = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
   for (LO e = 0; e < nc; ++e) {
-    if (!(vm[e] >= global * (1 - 1e-6))) continue;
+    if (!counts(e) || !(vm[e] >= global * (1 - 1e-6))) continue;
     double x = 0, y = 0;
     for (int c = 0; c < 4; ++c) x += 0.25 * mesh_.cornerCoordsHost(e, c, 0), y += 0.25 * mesh_.cornerCoordsHost(e, c, 1);
     place = std::min(place, std::array<double, 2>{x, y});

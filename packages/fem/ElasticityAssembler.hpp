@@ -92,9 +92,12 @@ class ElasticityAssembler : public Assembler {
   /// The largest von Mises stress at the cell centres of all ranks (cellCentreStresses()) and the
   /// centre where it occurs, {value, x, y}: of the cells within 1e-6 of the largest value, the centre
   /// with the smallest x, then y (so that rounding does not move it between mirror cells). Collective.
-  std::array<double, 3> largestVonMises(const Vector& uOverlap) const;
+  /// With \p region (one flag per local cell), only the flagged cells count; NaN for all three
+  /// where no cell of any rank is flagged.
+  std::array<double, 3> largestVonMises(const Vector& uOverlap, const std::vector<char>* region = nullptr) const;
   /// The same from the cells' von Mises stresses \p vonMises (cellCentreStresses()[4]). Collective.
-  std::array<double, 3> largestVonMises(const std::vector<double>& vonMises) const;
+  std::array<double, 3> largestVonMises(const std::vector<double>& vonMises,
+                                        const std::vector<char>* region = nullptr) const;
 
  private:
   /// What sumDirichletRows() and massTimesField() read of this discretisation and \p problem.

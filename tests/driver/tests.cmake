@@ -561,6 +561,16 @@ signorini_add_driver_test(bad_long_name_of_a_support EXIT 1
        --set "Mesh/Boundary Segments/top=top" --set "Problem/Dirichlet Segments=${long_segment}, top"
        ${PROJECT_SOURCE_DIR}/inputs/bar.xml
   REGEX "with several Dirichlet segments each names the step table's columns reaction:<segment>; a name must not hold")
+# Output/Stress Region: an expression of x and y that holds a cell centre; elasticity's.
+signorini_add_driver_test(bad_stress_region_nowhere EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Stress Region=x > 5" ${decks}/block-on-floor.xml
+  REGEX "Output/Stress Region: \"x > 5\" is 0 at every cell centre of the deck's mesh")
+signorini_add_driver_test(bad_stress_region_in_time EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Stress Region=t < 1" ${decks}/block-on-floor.xml
+  REGEX "Output/Stress Region: \"t < 1\" depends on t")
+signorini_add_driver_test(bad_stress_region_of_membrane EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Stress Region=x > 0.5" ${decks}/good.xml
+  REGEX "Output/Stress Region: stresses are those of plane strain elasticity")
 # The Exodus file cannot take its final name when the run ends: the step table goes too.
 signorini_add_driver_test(output_exodus_not_renamable EXIT 1
   ARGS --output-dir {OUT} ${decks}/good.xml

@@ -8,6 +8,8 @@
 #    stress of that cell (the same quantity, two outputs) in every written step;
 #  - the Exodus cell strains eps_xx, eps_yy, eps_xy are the uniform strain at t = 0 in every cell, and
 #    cell by cell the cell stresses in every written step (Hooke's law, to 1e-9);
+#  - with Output/Stress Region, max_von_mises is the largest cell stress among the cells whose centre
+#    lies in the region, with the same place rule (2 ranks), and differs from the whole body's;
 #  - 2 ranks give the same probe stresses as 1 rank to 1e-9 in every step (the node probe lies on the
 #    ranks' boundary: its mean takes cells of both ranks);
 #  - the list may come in any order and spacing ("sigma,v , u" gives u, v and the stress);
@@ -28,6 +30,8 @@ block=(--set "Problem/Initial Displacement=1e-4*x + 2e-5*y, -3e-5*y" --set "Prob
        --set "Output/Probes/corner=0, 0" --set "Output/Probes/far=0.1, 0.05" "$decks/block-on-floor.xml")
 run one 1 --set "Output/Probe Fields=sigma,v , u" "${block[@]}"
 run two 2 --set "Output/Probe Fields=u, sigma" "${block[@]}"
+# max_von_mises looks only where Output/Stress Region is not 0 (here away from the block's sides), on 2 ranks.
+run region 2 --set "Output/Stress Region=(x > 0.02) * (0.08 > x) * (y > 0.01)" "${block[@]}"
 # A probe outside the block by 5e-13 m, within the locator's tolerance on the deck's mesh but not on
 # finer ones: it is moved onto the boundary at set-up, so uniformly refined cycles still find it.
 run edge 1 --set "Time Integration/Final Time=3e-5" --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=3" \
@@ -132,6 +136,34 @@ hooke = max(abs(cells["sigma_xx"] - lam * tr - 2 * mu * cells["eps_xx"]).max(),
             abs(cells["sigma_xy"] - 2 * mu * cells["eps_xy"]).max())
 if not hooke <= 1e-9 * abs(sxx):
     fail(f"the Exodus cells' stress and strain break Hooke's law by {hooke:.3g} Pa")
+# Output/Stress Region: the largest cell von Mises stress among the cells whose centre lies in it,
+# and its place by the same rule; in some step it differs from the unrestricted one.
+region_rows = table(f"{work}/region/block-on-floor.steps.csv")
+region_files = sorted(glob.glob(f"{work}/region/block-on-floor.e*"))
+inside = lambda c: c[0] > 0.02 and 0.08 > c[0] and c[1] > 0.01
+differs = 0
+for path in region_files:  # the series (one file: one mesh)
+    with netCDF4.Dataset(path) as d:
+        rx, ry = d.variables["coordx"][:], d.variables["coordy"][:]
+        rconnect = d.variables["connect1"][:] - 1
+        rcentres = [(rx[c].mean(), ry[c].mean()) for c in rconnect]
+        rnames = [bytes(r).rstrip(b"\0").decode() for r in d.variables["name_elem_var"][:].data]
+        rvm = d.variables[f"vals_elem_var{rnames.index('von_mises') + 1}eb1"]
+        for i, t in enumerate(d.variables["time_whole"][:]):
+            row = next(r for r in region_rows if abs(float(r["t"]) - t) <= 1e-12)
+            values = rvm[i][:]
+            cells = [e for e in range(len(values)) if inside(rcentres[e])]
+            top = max(values[e] for e in cells)
+            if not abs(float(row["max_von_mises"]) - top) <= 1e-9 * vm:
+                fail(f"region, t = {t}: max_von_mises {row['max_von_mises']}, the region's cells' largest {top!r}")
+            want = min(tuple(rcentres[e]) for e in cells if values[e] >= top * (1 - 1e-6))
+            at = (float(row["max_von_mises_at_x"]), float(row["max_von_mises_at_y"]))
+            if not (abs(at[0] - want[0]) <= 1e-12 and abs(at[1] - want[1]) <= 1e-12):
+                fail(f"region, t = {t}: max_von_mises at {at}, the region's cells put it at {want}")
+            differs += max(values) > top * (1 + 1e-6)
+if not differs:
+    fail("region: the largest stress lies in the region in every step: the restriction was not checked")
+print(f"Stress Region: the region's largest cell stress in every written step ({differs} differ from the whole body's)")
 if checked == 0:
     fail("no Exodus value was compared with the centre probe")
 print(f"max_von_mises: the Exodus cells' largest and its place in {len(times)} steps")
