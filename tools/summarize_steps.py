@@ -17,16 +17,17 @@ is the double n k):
   min, max  the smallest and the largest value and the (first) time of each; for a column with
             place columns (max_von_mises with max_von_mises_at_x, _at_y) also the place of the max
   last      the value at the window's last step
-(place columns are not summarised themselves) and, where the table has the contact columns, a
-contact summary: the steps with an active contact segment, the first and the last of them (first
-contact, last release), the number of separate contact intervals, the most active segments, the
+(place columns are not summarised themselves; steps without a value, nan, are left out and
+counted: the integral takes the intervals between two steps with values) and, where the table has
+the contact columns, a contact summary: the steps with an active contact segment, the first and the
+last of them (first contact, last step in contact), the number of separate contact intervals, the most active segments, the
 largest |contact_force| and its time, and the contact force's impulse. Peaks are those of the
 discrete run: with the paper's contact force the contact chatters, and its peak force and time
 change with the time step and the mesh (by 20% and several milliseconds on a clamped beam) where
 the mean and the impulse hardly do; a peak stress at a clamped corner grows with refinement
 (singular). --csv prints one CSV row per run and column (run, column, steps, t_first, t_last, mean,
-integral, min, t_min, max, t_max, x_at_max, y_at_max (empty without place columns), last) instead,
-and no contact summary. --cycle L
+integral, min, t_min, max, t_max, x_at_max, y_at_max (empty without place columns), last, missing)
+instead, and no contact summary. --cycle L
 takes cycle L's tables of adaptive runs. A pattern that matches no column, a window without a step,
 a missing or cut-short table stop the script with one line naming it.
 Uses Debian's python3 (no extra modules).
@@ -56,19 +57,29 @@ def is_place(column, table):
 
 def place_of_max(table, column, n):
     """The place (x, y) the table gives for column's value at step n, or None."""
-    if column + "_at_x" in table and column + "_at_y" in table:
+    if n is not None and column + "_at_x" in table and column + "_at_y" in table:
         return table[column + "_at_x"][n], table[column + "_at_y"][n]
     return None
 
 
 def summary(t, x):
-    """{mean, integral, min, t_min, max, t_max, last} of the values x at the times t."""
-    integral = sum(0.5 * (t[n] - t[n - 1]) * (x[n] + x[n - 1]) for n in range(1, len(t)))
-    span = t[-1] - t[0]
-    low = min(range(len(x)), key=lambda n: (x[n], n))
-    high = min(range(len(x)), key=lambda n: (-x[n], n))
-    return {"mean": integral / span if span > 0 else x[0], "integral": integral, "min": x[low], "t_min": t[low],
-            "max": x[high], "t_max": t[high], "n_max": high, "last": x[-1]}
+    """{mean, integral, min, t_min, max, t_max, n_max, last, missing} of the values x at the times t;
+    steps without a value (NaN) are left out: the integral takes the intervals between two steps
+    with values, the mean divides it by their length, min and max the steps with values, and
+    missing counts the others (all NaN where no step has a value)."""
+    nan = float("nan")
+    finite = [n for n in range(len(x)) if math.isfinite(x[n])]
+    pairs = [n for n in range(1, len(t)) if math.isfinite(x[n]) and math.isfinite(x[n - 1])]
+    integral = sum(0.5 * (t[n] - t[n - 1]) * (x[n] + x[n - 1]) for n in pairs)
+    span = sum(t[n] - t[n - 1] for n in pairs)
+    if not finite:
+        return {"mean": nan, "integral": nan, "min": nan, "t_min": nan, "max": nan, "t_max": nan, "n_max": None,
+                "last": x[-1], "missing": len(x)}
+    low = min(finite, key=lambda n: (x[n], n))
+    high = min(finite, key=lambda n: (-x[n], n))
+    return {"mean": integral / span if span > 0 else x[finite[0]], "integral": integral, "min": x[low],
+            "t_min": t[low], "max": x[high], "t_max": t[high], "n_max": high, "last": x[-1],
+            "missing": len(x) - len(finite)}
 
 
 def contact_summary(table):
@@ -108,7 +119,13 @@ def main():
         path = table_path(base, a.cycle)
         table = window(read_steps(path), a.tmin, a.tmax, path)
         if a.columns:
-            columns = [c for p in a.columns for c in matching(table, p, path)]
+            columns = []
+            for p in a.columns:
+                found = matching(table, p, path)
+                if all(is_place(c, table) for c in found):
+                    raise InputError(f"{path}: '{p}' matches only place columns ({', '.join(found)}): their "
+                                     f"quantity's summary gives the place of its largest value")
+                columns += found
         else:
             columns = [c for p in DEFAULT_PATTERNS for c in table if fnmatch.fnmatchcase(c, p)]
         # a place column (x_at_x, x_at_y) belongs to its quantity x: its max's place, not summarised
@@ -117,7 +134,7 @@ def main():
     if a.csv:
         w = csv.writer(sys.stdout, lineterminator="\n")
         w.writerow(["run", "column", "steps", "t_first", "t_last", "mean", "integral", "min", "t_min", "max", "t_max",
-                    "x_at_max", "y_at_max", "last"])
+                    "x_at_max", "y_at_max", "last", "missing"])
         for base, table, columns in runs:
             t = table["t"]
             for c in columns:
@@ -125,7 +142,7 @@ def main():
                 place = place_of_max(table, c, s["n_max"])
                 w.writerow([base, c, len(t), repr(t[0]), repr(t[-1])] +
                            [repr(s[k]) for k in ("mean", "integral", "min", "t_min", "max", "t_max")] +
-                           ([repr(place[0]), repr(place[1])] if place else ["", ""]) + [repr(s["last"])])
+                           ([repr(place[0]), repr(place[1])] if place else ["", ""]) + [repr(s["last"]), s["missing"]])
         return
     for base, table, columns in runs:
         t = table["t"]
@@ -137,6 +154,10 @@ def main():
             s = summary(t, table[c])
             print(f"  {c:<{width}} {s['mean']:>13.6g} {s['integral']:>13.6g} {s['min']:>13.6g} {s['t_min']:>10.4g} "
                   f"{s['max']:>13.6g} {s['t_max']:>10.4g} {s['last']:>13.6g}")
+        for c in columns:  # steps without a value (a Stress Region that holds no cell of a later mesh)
+            missing = summary(t, table[c])["missing"]
+            if missing:
+                print(f"  {c}: no value (nan) in {missing} of {len(t)} steps, left out")
         for c in columns:  # where the largest value of a column with place columns was
             s = summary(t, table[c])
             place = place_of_max(table, c, s["n_max"])

@@ -20,6 +20,7 @@
 #include "signorini/core/StringTools.hpp"
 #include "signorini/core/Interrupt.hpp"
 #include "signorini/core/MpiComm.hpp"
+#include "signorini/core/ParameterTools.hpp"
 #include "signorini/io/OutputStaging.hpp"
 #include "signorini/solvers/JacobiCG.hpp"
 #include "signorini/adapt/Marking.hpp"
@@ -267,12 +268,13 @@ std::string AdaptiveSimulation::plan() const {
     if (!probes.empty()) {
       os << "probes (" << out.get<std::string>("Probe Fields") << ", points of the undeformed body):";
       for (size_t i = 0; i < probes.size(); ++i)
-        os << (i ? ", " : " ") << probes[i].first << " at (" << probes[i].second[0] << ", " << probes[i].second[1] << ")";
+        os << (i ? ", " : " ") << probes[i].first << " at (" << core::shortestText(probes[i].second[0]) << ", "
+           << core::shortestText(probes[i].second[1]) << ")";
       os << "\n";
     }
     if (const auto* p = sim_->momentPoint())
       os << (a.get<std::string>("Strategy") == "none" ? "moments and angular momentum" : "moments") << " about ("
-         << (*p)[0] << ", " << (*p)[1] << ") (Output/Moment Point)\n";
+         << core::shortestText((*p)[0]) << ", " << core::shortestText((*p)[1]) << ") (Output/Moment Point)\n";
     if (sim_->momentPoint() && core::trim(out.get<std::string>("Stress Region")) != "1")
       os << "max_von_mises over the cells whose centre lies in " << out.get<std::string>("Stress Region")
          << " (Output/Stress Region)\n";
@@ -281,7 +283,9 @@ std::string AdaptiveSimulation::plan() const {
       os << "supports (reaction:<segment>" << (moments ? "; each moment about the support's centre" : "") << "):";
       for (size_t i = 0; i < supports.size(); ++i) {
         os << (i ? ", " : " ") << supports[i].first;
-        if (moments) os << " at (" << supports[i].second[0] << ", " << supports[i].second[1] << ")";
+        if (moments)
+          os << " at (" << core::shortestText(supports[i].second[0]) << ", " << core::shortestText(supports[i].second[1])
+             << ")";
       }
       os << "\n";
     }

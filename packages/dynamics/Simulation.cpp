@@ -406,14 +406,16 @@ struct Simulation::Impl {
   /// The flags of d's local cells whose centre lies in stressRegion (null without one; built once per mesh).
   const std::vector<char>* stressCells(Discretisation& d) const {
     if (!stressRegion) return nullptr;
-    if (d.stressCells.empty()) {
+    if (d.stressCells.empty()) {  // collective: a value that is no number (nan) is a user error on every rank
       const auto& X = d.mesh->cornerCoordsHost;
       d.stressCells.resize(static_cast<size_t>(d.mesh->numLocalCells()));
+      std::string bad;
       for (LO e = 0; e < d.mesh->numLocalCells(); ++e) {
         double x = 0, y = 0;
         for (int c = 0; c < 4; ++c) x += 0.25 * X(e, c, 0), y += 0.25 * X(e, c, 1);
-        d.stressCells[e] = (*stressRegion)(x, y, 0.0) != 0;
+        d.stressCells[e] = stressRegion->sample(x, y, 0.0, bad) != 0;
       }
+      core::throwFirstUserError(*comm, bad);
     }
     return &d.stressCells;
   }

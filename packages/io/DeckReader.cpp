@@ -125,7 +125,7 @@ Teuchos::ParameterList parseDeck(const std::string& text, const std::string& pat
     const auto pos = what.find_last_of('\n', what.size() > 1 ? what.size() - 2 : 0);
     if (what.size() > 300 && pos != std::string::npos) what = what.substr(pos + 1);
     // A segment condition "x < 0.5" or an expression "a && b" inside a value: XML wants &lt; and &amp;.
-    const bool inValue = what.find("attribute value") != std::string::npos;
+    const bool inValue = what.find("attribute value") != std::string::npos || what.find("reference") != std::string::npos;
     SIGNORINI_USER_ERROR(path << ": malformed XML deck: " << what
                               << (inValue ? " (inside a value write < as &lt; and & as &amp;, e.g. \"bottom, x &lt;= "
                                             "0.5\")"

@@ -491,6 +491,34 @@ if (float(rows[0]["x_at_max"]), float(rows[0]["y_at_max"])) != (float(peak["max_
     sys.exit(f"place {rows[0]['x_at_max']}, {rows[0]['y_at_max']}; the table's at step {peak['step']}: "
              f"{peak['max_von_mises_at_x']}, {peak['max_von_mises_at_y']}")
 PY
+# Steps without a value (nan: a Stress Region without a cell on a later mesh) are left out and counted:
+# y = 2 t + 1 with nan at t = 0 and 0.5 has its min at t = 0.1, its integral over the intervals between
+# two values (0.1..0.4, 0.6..1: 0.96 + 1.36 = ... by hand below).
+"$py" - "$work/gaps.steps.csv" <<'PY'
+import sys
+with open(sys.argv[1], "w") as f:
+    f.write("step,t,y\n")
+    for n in range(11):
+        f.write(f"{n},{n / 10!r},{'nan' if n in (0, 5) else repr(2 * n / 10 + 1)}\n")
+PY
+"$py" "$tools/summarize_steps.py" "$work/gaps" --columns y --csv > "$work/summary-gaps.csv" &&
+  "$py" "$tools/summarize_steps.py" "$work/gaps" --columns y > "$work/summary-gaps.log" &&
+  "$py" - "$work" <<'PY' || { cat "$work/summary-gaps.csv" "$work/summary-gaps.log"; fail "summarize_steps.py: steps without a value"; }
+import csv, sys
+work = sys.argv[1]
+row = next(csv.DictReader(open(f"{work}/summary-gaps.csv")))
+# intervals [0.1, 0.4] and [0.6, 1.0] of y = 2 t + 1: integrals 0.3 * 1.5 * 2 = 0.9... computed exactly:
+integral = (0.4 - 0.1) * (1 + (0.1 + 0.4)) + (1.0 - 0.6) * (1 + (0.6 + 1.0))
+expected = {"integral": integral, "mean": integral / 0.7, "min": 1.2, "t_min": 0.1, "max": 3.0, "t_max": 1.0,
+            "missing": 2}
+bad = [f"{k} {row[k]} (expected {v})" for k, v in expected.items() if abs(float(row[k]) - v) > 1e-12]
+if "y: no value (nan) in 2 of 11 steps, left out" not in open(f"{work}/summary-gaps.log").read():
+    bad.append("no line on the 2 steps without a value")
+if bad:
+    sys.exit("; ".join(bad))
+PY
+refuses summary_places_only "summarize_steps.py: error: $work/bar-one-mesh/bar.steps.csv: 'max_von_mises_at\*' matches only place columns" \
+  "$py" "$tools/summarize_steps.py" "$work/bar-one-mesh/bar" --columns 'max_von_mises_at*'
 refuses summary_no_match "summarize_steps.py: error: $work/bar.steps.csv: no column matches 'nowhere'" \
   "$py" "$tools/summarize_steps.py" "$work/bar" --columns nowhere
 refuses summary_empty_window "summarize_steps.py: error: $work/bar.steps.csv: no step with 5 <= t <= 6" \

@@ -568,6 +568,9 @@ signorini_add_driver_test(bad_stress_region_nowhere EXIT 1
 signorini_add_driver_test(bad_stress_region_in_time EXIT 1
   ARGS --output-dir {OUT} --set "Output/Stress Region=t < 1" ${decks}/block-on-floor.xml
   REGEX "Output/Stress Region: \"t < 1\" depends on t")
+signorini_add_driver_test(bad_stress_region_not_a_number EXIT 1
+  ARGS --output-dir {OUT} --set "Output/Stress Region=sqrt(x - 0.05)" ${decks}/block-on-floor.xml
+  REGEX "Output/Stress Region: 'sqrt[(]x - 0[.]05[)]' evaluates to nan at [(]0[.]003125, 0[.]003125[)]")
 signorini_add_driver_test(bad_stress_region_of_membrane EXIT 1
   ARGS --output-dir {OUT} --set "Output/Stress Region=x > 0.5" ${decks}/good.xml
   REGEX "Output/Stress Region: stresses are those of plane strain elasticity")

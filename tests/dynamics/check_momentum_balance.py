@@ -26,8 +26,8 @@ Usage: check_momentum_balance.py STEPS_CSV TOL [--alpha A] [--load EXPR ...] [--
     table's applied_moment column must equal it (to 1e-9 of its largest magnitude);
   --contact C:S: the contact force acts on component C (0 or 1) with sign S (+1 or -1; default 0:+1);
   --free: a body without Dirichlet conditions, whose table has no reaction_force columns (they are 0);
-  TOL: relative to the largest |k G| of the run (for the angular momentum, |k G_M|; where every force
-    or moment is 0, to the largest momentum, or 1 if that is 0 too).
+  TOL: relative to the largest |k G| of the run (for the angular momentum, |k G_M|); absolute where
+    every force (moment) is 0, as for a free body, whose momentum may be rounding noise alone.
 Exit 0 when every step balances to TOL, 1 otherwise (also without the columns, with fewer than two
 steps, or with a value that is not a finite number)."""
 import argparse
@@ -117,9 +117,9 @@ for c, s in enumerate(suffixes):
     P = values[f"momentum{s}"]
     for n in range(1, len(rows)):
         residuals.append((P[n] - P[n - 1] - k * ((1 - alpha) * G[n - 1] + alpha * G[n]), rows[n]["step"], f"momentum{s}"))
-# Without any force (a free body at rest or in uniform motion) the momentum's own size is the scale.
-largest_momentum = max(abs(x) for s in suffixes for x in values[f"momentum{s}"])
-balances = [(residuals, scale or largest_momentum or 1.0, "G", "|k G|" if scale else "momentum")]
+# Without any force (a free body) the momentum is constant: then TOL is absolute (its noise may be
+# all the momentum a body at rest has, no scale).
+balances = [(residuals, scale or 1.0, "G", "|k G|" if scale else "(absolute: every force is 0)")]
 if nc == 2:
     column = lambda name: values[name] if name in values else [0.0] * len(rows)
     if args.applied_moment is not None:
@@ -135,16 +135,16 @@ if nc == 2:
     angular = [(L[n] - L[n - 1] - k * ((1 - alpha) * GM[n - 1] + alpha * GM[n]), rows[n]["step"], "angular_momentum")
                for n in range(1, len(rows))]
     scale_M = max(abs(k * g) for g in GM)
-    balances.append((angular, scale_M or max(abs(x) for x in L) or 1.0, "G_M", "|k G_M|" if scale_M else "angular momentum"))
+    balances.append((angular, scale_M or 1.0, "G_M", "|k G_M|" if scale_M else "(absolute: every moment is 0)"))
 failed = False
 for residuals, scale, force, unit in balances:
     r, step, name = max(residuals, key=lambda x: abs(x[0]))
     if not abs(r) / scale <= args.tol:
         print(f"FAIL: {args.table}: step {step}: {name} changed by k ((1 - alpha) {force}(n-1) + alpha {force}(n)) "
-              f"{'+' if r >= 0 else '-'} {abs(r):.3g}, {abs(r) / scale:.3g} of the largest {unit} {scale:.6g} "
+              f"{'+' if r >= 0 else '-'} {abs(r):.3g}, {abs(r) / scale:.3g} {f'of the largest {unit} {scale:.6g}' if unit[0] == '|' else unit} "
               f"(tolerance {args.tol:g})")
         failed = True
     else:
-        print(f"{args.table}: largest {name.split('_')[0]} imbalance {abs(r) / scale:.2g} of the largest "
-              f"{unit} {scale:.6g} (step {step}, {name})")
+        print(f"{args.table}: largest {name.split('_')[0]} imbalance {abs(r) / scale:.2g} "
+              f"{f'of the largest {unit} {scale:.6g}' if unit[0] == '|' else unit} (step {step}, {name})")
 sys.exit(1 if failed else 0)
