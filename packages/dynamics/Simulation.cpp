@@ -370,6 +370,7 @@ struct Discretisation {
   std::vector<std::vector<char>> supportRows;
   /// Output/Stress Region: flags of the local cells whose centre lies in it (built at the first output).
   std::vector<char> stressCells;
+  bool stressCellsBuilt = false;
   long builtAtStep = 0;  ///< identifies the mesh in the Exodus series
   long id = 0;           ///< unique among all discretisations of the run (StepView::meshId)
 };
@@ -406,7 +407,8 @@ struct Simulation::Impl {
   /// The flags of d's local cells whose centre lies in stressRegion (null without one; built once per mesh).
   const std::vector<char>* stressCells(Discretisation& d) const {
     if (!stressRegion) return nullptr;
-    if (d.stressCells.empty()) {  // collective: a value that is no number (nan) is a user error on every rank
+    if (!d.stressCellsBuilt) {  // collective: a value that is no number (nan) is a user error on every rank
+      d.stressCellsBuilt = true;  // (a flag: a rank without cells has an empty list)
       const auto& X = d.mesh->cornerCoordsHost;
       d.stressCells.resize(static_cast<size_t>(d.mesh->numLocalCells()));
       std::string bad;
