@@ -150,16 +150,14 @@ def main():
         width = max([len(c) for c in columns] + [6])
         print(f"  {'column':<{width}} {'mean':>13} {'integral':>13} {'min':>13} {'at t':>10} {'max':>13} "
               f"{'at t':>10} {'last':>13}")
-        for c in columns:
-            s = summary(t, table[c])
+        summaries = {c: summary(t, table[c]) for c in columns}
+        for c, s in summaries.items():
             print(f"  {c:<{width}} {s['mean']:>13.6g} {s['integral']:>13.6g} {s['min']:>13.6g} {s['t_min']:>10.4g} "
                   f"{s['max']:>13.6g} {s['t_max']:>10.4g} {s['last']:>13.6g}")
-        for c in columns:  # steps without a value (a Stress Region that holds no cell of a later mesh)
-            missing = summary(t, table[c])["missing"]
-            if missing:
-                print(f"  {c}: no value (nan) in {missing} of {len(t)} steps, left out")
-        for c in columns:  # where the largest value of a column with place columns was
-            s = summary(t, table[c])
+        for c, s in summaries.items():  # steps without a value (a Stress Region that holds no cell of a later mesh)
+            if s["missing"]:
+                print(f"  {c}: no value (nan) in {s['missing']} of {len(t)} steps, left out")
+        for c, s in summaries.items():  # where the largest value of a column with place columns was
             place = place_of_max(table, c, s["n_max"])
             if place:
                 print(f"  {c}: the largest, {s['max']:.6g} at t = {s['t_max']:.6g}, at ({place[0]:.6g}, {place[1]:.6g})")

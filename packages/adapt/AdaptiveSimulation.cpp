@@ -275,9 +275,8 @@ std::string AdaptiveSimulation::plan() const {
     if (const auto* p = sim_->momentPoint())
       os << (a.get<std::string>("Strategy") == "none" ? "moments and angular momentum" : "moments") << " about ("
          << core::shortestText((*p)[0]) << ", " << core::shortestText((*p)[1]) << ") (Output/Moment Point)\n";
-    if (sim_->momentPoint() && core::trim(out.get<std::string>("Stress Region")) != "1")
-      os << "max_von_mises over the cells whose centre lies in " << out.get<std::string>("Stress Region")
-         << " (Output/Stress Region)\n";
+    if (const auto* region = sim_->stressRegion())
+      os << "max_von_mises over the cells whose centre lies in " << region->text() << " (Output/Stress Region)\n";
     if (const auto supports = sim_->supports(); !supports.empty()) {
       const bool moments = sim_->momentPoint() != nullptr;
       os << "supports (reaction:<segment>" << (moments ? "; each moment about the support's centre" : "") << "):";

@@ -1328,6 +1328,7 @@ std::vector<std::pair<std::string, std::array<double, 2>>> Simulation::supports(
   for (size_t g = 0; g < impl_->supports.size(); ++g) out.emplace_back(impl_->supports[g].second, impl_->supportCentres[g]);
   return out;
 }
+const core::Expression* Simulation::stressRegion() const { return impl_->stressRegion.get(); }
 const core::ParameterList& Simulation::deck() const { return impl_->deck; }
 
 namespace {
@@ -1396,16 +1397,21 @@ std::vector<std::string> Simulation::stepColumns(const PassOptions& options) con
   // Elasticity: each with its moment about Output/Moment Point, the contact force's too.
   std::vector<std::string> forces;
   if (nc == 2 && I.problem->hasObstacle) forces.push_back("contact_moment");
-  for (const auto& [force, reported] : {std::pair<std::string, bool>{"reaction", I.problem->hasDirichletConditions()},
-                                        std::pair<std::string, bool>{"applied", fem::appliesLoads(*I.problem)}})
+  struct Resultant {
+    std::string force, moment;
+    bool reported;
+  };
+  for (const auto& [force, moment, reported] :
+       {Resultant{"reaction_force", "reaction_moment", I.problem->hasDirichletConditions()},
+        Resultant{"applied_load", "applied_moment", fem::appliesLoads(*I.problem)}})
     if (reported) {
-      const std::string name = force + (force == "reaction" ? "_force" : "_load");
-      if (nc == 1)
-        forces.push_back(name);
-      else
-        for (const char* c : {"_x", "_y"}) forces.push_back(name + c);
-      if (nc == 2) forces.push_back(force + "_moment");
-      if (force == "reaction")  // each support's share: reaction:<segment>[:x, :y, :moment]
+      if (nc == 1) {
+        forces.push_back(force);
+      } else {
+        for (const char* c : {"_x", "_y"}) forces.push_back(force + c);
+        forces.push_back(moment);
+      }
+      if (force == "reaction_force")  // each support's share: reaction:<segment>[:x, :y, :moment]
         for (const auto& support : I.supports) {
           if (nc == 1)
             forces.push_back("reaction:" + support.second);
@@ -1613,7 +1619,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         const std::array<double, 2>* centre = nc == 2 ? &I.supportCentres[g] : nullptr;
         auto share = d->assembler->dirichletRowSums(uOverlap, *aOverlap, *I.problem, t, d->lumpAt, centre, &rows);
         if (d->coupling) {
-          share[nc == 1 ? 0 : I.problem->contactComponent] += lambdaToPhysical * d->coupling->heldShare(lambda, rows);
+          share[nc == 1 ? 0 : I.problem->contactComponent] += lambdaToPhysical * d->coupling->heldShare(lambda, &rows);
           if (centre) share[2] += lambdaToPhysical * d->coupling->heldMoment(lambda, *centre, &rows);
         }
         forces.insert(forces.end(), share.begin(), share.end());

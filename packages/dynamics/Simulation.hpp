@@ -156,6 +156,8 @@ class Simulation {
   /// else empty): each segment's name and its centre, about which elasticity's
   /// reaction:<segment>:moment is taken.
   std::vector<std::pair<std::string, std::array<double, 2>>> supports() const;
+  /// Output/Stress Region, where max_von_mises looks (elasticity); null for every cell.
+  const core::Expression* stressRegion() const;
   /// The deck as the run uses it and its output files record it: validated, defaults filled in,
   /// a relative Mesh/File made absolute (--print-parameters DECK prints it).
   const core::ParameterList& deck() const;

@@ -280,9 +280,7 @@ ContactCoupling::ContactCoupling(const mesh::Q1Mesh& mesh, unsigned contactMask,
   };
   for (size_t k = 0; k < localIds.size(); ++k) {
     const auto& be = bedges[localIds[k]];
-    const int held = (dirichlet[row(be.node[0])] ? 1 : 0) + (dirichlet[row(be.node[1])] ? 1 : 0);
     const int seg = localEdgeSegment_[localIds[k]];
-    if (held) heldEdges_.push_back({seg, held * halfLength(be)});
     const auto mid = be.at(0.5);
     localEdges_.push_back({seg, 2 * halfLength(be), mid[0], mid[1]});
     for (int p = 0; p < 2; ++p)
@@ -459,13 +457,6 @@ std::vector<double> ContactCoupling::canonicalSums(int n, const std::vector<std:
   return out;
 }
 
-double ContactCoupling::heldShare(const std::vector<double>& lambda) const {
-  double sum = 0;
-  core::reproducibleSums(*comm_, 1, heldEdges_.size(),
-                         [&](std::size_t k, double* out) { out[0] = heldEdges_[k].second * lambda[heldEdges_[k].first]; },
-                         &sum);
-  return sum;
-}
 
 double ContactCoupling::weightedSum(const std::vector<WeightedPoint>& points, const std::vector<double>& lambda,
                                     const std::array<double, 2>* p, const std::vector<char>* rows) const {
@@ -483,8 +474,8 @@ double ContactCoupling::weightedSum(const std::vector<WeightedPoint>& points, co
   return sum;
 }
 
-double ContactCoupling::heldShare(const std::vector<double>& lambda, const std::vector<char>& rows) const {
-  return weightedSum(heldEnds_, lambda, nullptr, &rows);
+double ContactCoupling::heldShare(const std::vector<double>& lambda, const std::vector<char>* rows) const {
+  return weightedSum(heldEnds_, lambda, nullptr, rows);
 }
 
 double ContactCoupling::moment(const std::vector<double>& lambda, const std::array<double, 2>& p) const {

@@ -64,9 +64,8 @@ class ContactCoupling {
   /// The part of B lambda in the rows of the Dirichlet unknowns, which B leaves out: sum over the
   /// contact edges that end at a Dirichlet unknown of sign |E| / 2 lambda_j (a contact edge next to a
   /// clamped corner). The supports carry it; it belongs to their reaction. Replicated; collective.
-  double heldShare(const std::vector<double>& lambda) const;
-  /// heldShare() of the Dirichlet unknowns flagged in \p rows (flags on the overlap unknowns) only.
-  double heldShare(const std::vector<double>& lambda, const std::vector<char>& rows) const;
+  /// With \p rows (flags on the overlap unknowns), only the Dirichlet unknowns flagged there.
+  double heldShare(const std::vector<double>& lambda, const std::vector<char>* rows = nullptr) const;
   /// The moment about \p p of B lambda over all of Gamma_C, Dirichlet rows included: r^T B lambda =
   /// sum_j lambda_j sign int_{E_j} r_c ds for the rigid rotation r(x) = (-(y - p_y), x - p_x) of a
   /// two-component problem (c the constrained component); -moment() in physical units is the
@@ -115,7 +114,6 @@ class ContactCoupling {
   std::vector<std::array<double, 2>> midpoint_;
   std::vector<int> edgeCount_;
   std::vector<int> localEdgeSegment_;
-  std::vector<std::pair<int, double>> heldEdges_;  // (segment, sign |E| / 2 per Dirichlet end) of local contact edges
   /// A local contact edge (or, in heldEnds_, one of its Dirichlet end points): its segment, weight
   /// (sign |E|, or sign |E| / 2 at an end) and the point where r is taken (midpoint, or end).
   struct WeightedPoint {

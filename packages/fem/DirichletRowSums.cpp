@@ -45,8 +45,8 @@ std::vector<double> sumDirichletRows(const DirichletRowsInput& in, const Vector&
     for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
     in.element(Xe, Me, Ke);
     if (loaded) {  // as the assemblers' load kernels
-      double w[4], N[4][4], fq[4][2];
-      cellLoadPoints(Xe, *in.bodyForce, nc, t, bad, w, N, fq);
+      double w[4], N[4][4], fq[4][2], xq[4][2];
+      cellLoadPoints(Xe, *in.bodyForce, nc, t, bad, w, N, fq, xq);
       for (int q = 0; q < 4; ++q)
         for (int c = 0; c < nc; ++c)
           for (int a = 0; a < 4; ++a) be[a][c] += w[q] * fq[q][c] * N[q][a];

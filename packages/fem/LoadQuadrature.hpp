@@ -23,15 +23,16 @@ inline bool isZeroField(const core::ExpressionList& f) {
 }
 
 /// The 2 x 2 Gauss points of the cell with corners \p Xe: weights w[q] (|det J| included), shape
-/// values N[q][a] and the first \p nc components of \p f there (fq[q][c]); the first sample that is
-/// not a finite number goes to \p bad.
+/// values N[q][a], the points xq[q] and the first \p nc components of \p f there (fq[q][c]); the
+/// first sample that is not a finite number goes to \p bad.
 inline void cellLoadPoints(const double Xe[4][2], const core::ExpressionList& f, int nc, double t, std::string& bad,
-                           double w[4], double N[4][4], double fq[4][2]) {
+                           double w[4], double N[4][4], double fq[4][2], double xq[4][2]) {
   for (int q = 0; q < 4; ++q) {
     double gx[4], gy[4];
     w[q] = kGauss2Weight * kGauss2Weight * q1Gradients(Xe, gauss2Point(q & 1), gauss2Point(q >> 1), N[q], gx, gy);
     double x = 0, y = 0;
     for (int c = 0; c < 4; ++c) x += N[q][c] * Xe[c][0], y += N[q][c] * Xe[c][1];
+    xq[q][0] = x, xq[q][1] = y;
     for (int c = 0; c < nc; ++c) fq[q][c] = f[c].sample(x, y, t, bad);
   }
 }

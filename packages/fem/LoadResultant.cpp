@@ -24,17 +24,13 @@ std::vector<double> loadResultant(const mesh::Q1Mesh& mesh, int components, cons
     const auto& X = mesh.cornerCoordsHost;
     terms.reserve(static_cast<size_t>(mesh.numLocalCells()));
     for (LO e = 0; e < mesh.numLocalCells(); ++e) {
-      double Xe[4][2], w[4], N[4][4], fq[4][2];
+      double Xe[4][2], w[4], N[4][4], fq[4][2], xq[4][2];
       for (int c = 0; c < 4; ++c) Xe[c][0] = X(e, c, 0), Xe[c][1] = X(e, c, 1);
-      cellLoadPoints(Xe, problem.bodyForce, nc, t, bad, w, N, fq);
+      cellLoadPoints(Xe, problem.bodyForce, nc, t, bad, w, N, fq, xq);
       std::array<double, 3> term = {0.0, 0.0, 0.0};
       for (int q = 0; q < 4; ++q) {
         for (int c = 0; c < nc; ++c) term[c] += w[q] * fq[q][c];
-        if (p) {
-          double x = 0, y = 0;  // the point as cellLoadPoints places it
-          for (int a = 0; a < 4; ++a) x += N[q][a] * Xe[a][0], y += N[q][a] * Xe[a][1];
-          term[2] += w[q] * momentAbout(*p, x, y, fq[q][0], fq[q][1]);
-        }
+        if (p) term[2] += w[q] * momentAbout(*p, xq[q][0], xq[q][1], fq[q][0], fq[q][1]);
       }
       terms.push_back(term);
     }
