@@ -26,6 +26,9 @@ using BelosSolver = Belos::SolverManager<Scalar, MultiVector, Operator>;
 
 namespace {
 
+/// Power iterations of the Chebyshev smoother's eigenvalue estimate (Ifpack2's default is 10).
+constexpr int kChebyshevEigenIterations = 20;
+
 std::string upperCase(const std::string& text) {
   std::string upper;
   for (char c : text) upper += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
@@ -284,6 +287,13 @@ void LinearSolver::setOperator(RCP<const CrsMatrix> A, double courant) {
     if (I.equationsPerNode > 1) mueluParams.set("number of equations", I.equationsPerNode);
     if (!I.nullspace.is_null()) mueluParams.sublist("user data").set("Nullspace", I.nullspace);
     mueluParams.setParameters(typedLikeMueLu(I.params.sublist("MueLu")));
+    // Chebyshev is positive definite only above the largest eigenvalue of D^{-1} A, which Ifpack2
+    // estimates by power iterations: its default 10 fell short on graded meshes of trapezoids
+    // (CG then broke down on a "non-positive p^T A p"); 20 held there at every tried time step.
+    // Only for Chebyshev (another smoother refuses the key) and unless the deck sets it.
+    if (upperCase(mueluParams.get<std::string>("smoother: type")) == "CHEBYSHEV" &&
+        !mueluParams.sublist("smoother: params").isParameter("chebyshev: eigenvalue max iterations"))
+      mueluParams.sublist("smoother: params").set("chebyshev: eigenvalue max iterations", kChebyshevEigenIterations);
     // MueLu gets its own copy of A (the assemblers' matrices view arrays their pattern shares).
     RCP<Operator> op = Teuchos::rcp(new CrsMatrix(*A, Teuchos::Copy));
     std::string failure;
@@ -378,9 +388,16 @@ int LinearSolver::solve(const Vector& b, Vector& x) {
       const std::string what = firstLines(e.what());
       throw core::SolverError(
           I.solverText() + " broke down: " + what +
-          (what.find("non-positive") != std::string::npos
-               ? std::string(" (the system matrix is not positive definite to rounding: ") + kNotPositiveDefiniteHint + ")"
-               : std::string()));
+          (what.find("non-positive") == std::string::npos ? std::string()
+           : I.precName == "MueLu"
+               ? std::string(" (the preconditioner or the system matrix is not positive definite to rounding. MueLu's "
+                             "Chebyshev smoother is not when it underestimates the largest eigenvalue: raise 'Linear "
+                             "Solver/MueLu/smoother: params/chebyshev: eigenvalue max iterations' (signorini sets ") +
+                     std::to_string(kChebyshevEigenIterations) +
+                     ") or choose Linear Solver/Preconditioner = Jacobi. The matrix is not when " +
+                     kNotPositiveDefiniteHint + ")"
+               : std::string(" (the system matrix is not positive definite to rounding: ") + kNotPositiveDefiniteHint +
+                     ")"));
     }
     SIGNORINI_USER_ERROR("Linear Solver/Belos: Belos' \"" << canonicalMethod(I.params.get<std::string>("Method"))
                          << "\" cannot solve with these parameters: " << firstLines(e.what()));
