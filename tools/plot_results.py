@@ -120,6 +120,11 @@ def deck_file(base):
     return os.path.basename(base)
 
 
+def paper_deck(base):
+    """Whether a run is of the paper's membrane deck (inputs/membrane.xml): its plots carry the paper's titles."""
+    return os.path.splitext(os.path.basename(deck_file(base)))[0] == "membrane"
+
+
 def deck_parameter(deck, path):
     """The value of the parameter 'Sublist/.../Name' of a deck (run_deck), or None."""
     *lists, name = path.split("/")
@@ -341,7 +346,9 @@ def plot_meshes(adaptive, steps, k, out):
     for ax in list(axes.flat)[n:]:
         ax.axis("off")
     fig.suptitle(f"paper Fig. 6.2: meshes of the final adaptive cycle{adaptive_setting(adaptive)} "
-                 f"of {deck_file(adaptive)}")
+                 f"of {deck_file(adaptive)}" if paper_deck(adaptive) else
+                 f"meshes of the final adaptive cycle{adaptive_setting(adaptive)} of {deck_file(adaptive)} "
+                 "(cf. paper Fig. 6.2)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "meshes.png"), dpi=150)
     plt.close(fig)
@@ -511,8 +518,8 @@ def main():
                     help="centre of the time window of the multiplier plot (default 0.5)")
     ap.add_argument("--multiplier-window", type=float, default=0.05,
                     help="half width of the time window of the multiplier's mean and range (default 0.05)")
-    ap.add_argument("--title", default="paper Example 6.1 (membrane), cf. Fig. 6.3",
-                    help="first title line of eta_vs_unknowns.png")
+    ap.add_argument("--title", help="first title line of eta_vs_unknowns.png (default: 'paper Example 6.1 "
+                    "(membrane), cf. Fig. 6.3' for a run of inputs/membrane.xml, else '<deck>, cf. paper Fig. 6.3')")
     ap.add_argument("--adaptive-label", help="legend of --adaptive (default: from the run's deck, e.g. 'adaptive, "
                     "fixed fraction 50%%'; 'adaptive' for a run without Exodus output)")
     ap.add_argument("--eta-only", action="store_true",
@@ -541,7 +548,9 @@ def main():
     except InputError as e:
         fail(e)
     output_folder(a.out)
-    plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out, a.adaptive_label, title=a.title)
+    title = a.title if a.title is not None else "paper Example 6.1 (membrane), cf. Fig. 6.3" if paper_deck(
+        a.adaptive) else f"{deck_file(a.adaptive)}, cf. paper Fig. 6.3"
+    plot_eta(a.adaptive, a.uniform, a.more_adaptive, a.out, a.adaptive_label, title=title)
     if a.eta_only:
         print("wrote", os.path.join(a.out, "eta_vs_unknowns.png"))
         return

@@ -37,6 +37,9 @@ namespace {
 /// estimates of chattering contact vary between cycles by a few tenths of a percent (the bar's
 /// 20% run: 2.0827e-4 after 2.0805e-4).
 constexpr double kEstimateRiseWarning = 1.1;
+/// Transfers between the step meshes that changed a cycle's energy by more than this fraction of
+/// its largest energy draw a warning (the paper deck's cycles move about 0.5%).
+constexpr double kTransferEnergyWarning = 0.05;
 
 /// Whether the file \p path is an Exodus file of a series ("<name>.e" or "<name>.e-s.<digits>";
 /// only the file name counts, not the directories).
@@ -115,8 +118,12 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
   core::addDouble(a, "Tolerance", 0.0, "Stop after the cycle whose estimate max_n eta^n is at or below this; 0: off", 0.0);
   core::addInt(a, "Maximum Level", 14, "Cells are not refined beyond this level; once every cell of every step is at it (and nothing "
                "coarsens), that cycle is the last", 0, 25);
-  core::addChoice(a, "Transfer", "L2 projection", "I_h between step meshes (paper Sec. 3.2)",
-                  {"L2 projection", "interpolation"});
+  core::addChoice(a, "Transfer", "L2 projection",
+                  "I_h between step meshes: the L2 projection of u, v and a (paper Sec. 3.2), nodal interpolation, "
+                  "or the Ritz projection of u (in the energy inner product, with 10^-3 (c / L)^2 times the mass, L the "
+                  "domain's diameter) with the L2 projection of v and a: no transfer raises the energy (the L2 "
+                  "projection raises the strain energy where a step's mesh is coarser; costs a solve with K per mesh change)",
+                  {"L2 projection", "interpolation", "Ritz projection"});
   core::addBool(a, "Report Transfer Energy", true,
                 "Step tables gain energy_transferred and kinetic_energy_transferred: the energies of "
                 "I_h u^{n-1}, I_h v^{n-1} on the mesh of step n (the transfer's effect; costs one more projected "
@@ -245,7 +252,10 @@ dynamics::PassOptions AdaptiveSimulation::cyclePassOptions() const {
   dynamics::PassOptions options;
   options.extraColumns = {"eta_star", "s0", "s1", "eta"};
   options.cellFieldName = "indicator";
-  options.interpolateTransfer = ap.get<std::string>("Transfer") == "interpolation";
+  const std::string transfer = ap.get<std::string>("Transfer");
+  options.transfer = transfer == "interpolation"     ? dynamics::PassOptions::Transfer::interpolation
+                     : transfer == "Ritz projection" ? dynamics::PassOptions::Transfer::ritzProjection
+                                                     : dynamics::PassOptions::Transfer::l2Projection;
   options.reportTransferEnergy = ap.get<bool>("Report Transfer Energy");
   options.reportWork = false;  // the meshes change between steps
   return options;
@@ -624,6 +634,28 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                    "newmark_energy shows it (README, Known behaviour; Adaptivity/Contact Zone Gap)";
         core::rootOut(rank) << warning.str() << std::endl;
       }
+      // The L2 projection never raises the kinetic energy but may raise the strain energy (where a
+      // step's mesh is coarser than its predecessor's under a stress wave), interpolation either:
+      // a cycle whose transfers moved much energy is not the problem's dynamics.
+      if (last.largestEnergy > 0 && std::abs(last.transferEnergyChange) > kTransferEnergyWarning * last.largestEnergy) {
+        std::ostringstream warning;
+        const bool raised = last.transferEnergyChange > 0;
+        warning << std::setprecision(4) << "signorini: warning: cycle " << l
+                << ": moving the state to each step's mesh changed its energy (kinetic + strain) by "
+                << std::showpos << last.transferEnergyChange << std::noshowpos << " over the cycle's "
+                << last.meshChanges << " mesh changes, " << std::fixed << std::setprecision(1)
+                << 100 * std::abs(last.transferEnergyChange) / last.largestEnergy << std::defaultfloat
+                << std::setprecision(4) << "% of its largest energy " << last.largestEnergy
+                << ", so the cycle's dynamics are not the problem's: "
+                << (raised && options.transfer == dynamics::PassOptions::Transfer::l2Projection
+                        ? "the L2 projection of u raises the strain energy where a step's mesh is coarser than "
+                          "its predecessor's (Adaptivity/Transfer = Ritz projection cannot raise it)"
+                        : raised ? "nodal interpolation can raise it (Adaptivity/Transfer = Ritz projection cannot)"
+                                 : "the coarser parts of the step meshes cannot hold the finer scales of the state")
+                << "; each mesh change's share is the step table's energy_transferred minus the energy of the step "
+                   "before (README, Known behaviour)";
+        core::rootOut(rank) << warning.str() << std::endl;
+      }
       if (stop) {
         if (!lastPlanned) {
           core::rootOut(rank) << "signorini: cycle " << l << " ends the run: "
@@ -631,6 +663,12 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                                                            : "its total unknowns reach Adaptivity/Maximum Total Unknowns")
                               << std::endl;
           last.files = promoteToFinalName(last.files, base + ".cycle" + std::to_string(l), base, *comm);
+        } else if (tol > 0 && etaMax > tol) {  // the last planned cycle, the tolerance not reached
+          std::ostringstream note;
+          note << std::setprecision(4) << std::scientific << "signorini: the run ends with cycle " << l
+               << (l == cycles - 1 ? " (Adaptivity/Cycles)" : "") << " at the estimate " << etaMax
+               << ", above Adaptivity/Tolerance " << tol;
+          core::rootOut(rank) << note.str() << std::endl;
         }
         break;
       }

@@ -19,7 +19,7 @@ struct Expression::Impl {
   }
 };
 
-Expression::Expression(const std::string& text, const std::string& where)
+Expression::Expression(const std::string& text, const std::string& where, const std::string& variables)
     : text_(text), where_(where), impl_(std::make_unique<Impl>()) {
   if (text.find_first_not_of(" \t\n") == std::string::npos)
     SIGNORINI_USER_ERROR(where << ": empty expression");
@@ -49,7 +49,7 @@ Expression::Expression(const std::string& text, const std::string& where)
                                  << " (it depends on none of x, y, t: everywhere)");
   } catch (mu::Parser::exception_type& e) {
     SIGNORINI_USER_ERROR(where << ": cannot parse expression '" << text << "': " << e.GetMsg()
-                               << " (allowed variables: x, y, t)");
+                               << " (allowed variables: " << variables << ")");
   }
 }
 

@@ -14,8 +14,9 @@ class Expression {
  public:
   /// Parses \p text; \p where names the deck key for error messages ("Problem/Obstacle").
   /// Throws core::UserError if the text does not parse, uses a variable other than x, y, t,
-  /// or evaluates to NaN/inf at (0,0,0).
-  Expression(const std::string& text, const std::string& where);
+  /// or evaluates to NaN/inf at (0,0,0). \p variables is what a parse error names as allowed
+  /// (a key that takes no t checks isTimeIndependent() itself).
+  Expression(const std::string& text, const std::string& where, const std::string& variables = "x, y, t");
   /// Parses other's text again (each Expression owns its parser).
   Expression(const Expression& other);
   /// Parses other's text again (each Expression owns its parser).

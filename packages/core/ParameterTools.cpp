@@ -75,8 +75,13 @@ std::string describeValidator(const Teuchos::ParameterEntry& e) {
     return os.str();
   }
   if (auto i = Teuchos::rcp_dynamic_cast<const Teuchos::EnhancedNumberValidator<int>>(v); !i.is_null()) {
-    std::ostringstream os;
-    os << "in [" << i->getMin() << ", " << i->getMax() << "]";
+    std::ostringstream os;  // the int's own limits are no bounds
+    const bool lower = i->getMin() != std::numeric_limits<int>::min();
+    const bool upper = i->getMax() != std::numeric_limits<int>::max();
+    if (lower && upper) os << "in [" << i->getMin() << ", " << i->getMax() << "]";
+    else if (lower) os << ">= " << i->getMin();
+    else if (upper) os << "<= " << i->getMax();
+    else os << "an int";
     return os.str();
   }
   return "";
@@ -142,7 +147,8 @@ void validateRecursive(ParameterList& deck, const ParameterList& valid, const st
           value << any;
         }
         SIGNORINI_USER_ERROR(context << ": '" << full << "' = " << value.str() << " is not allowed; it must be "
-                                     << describeValidator(ventry));
+                                     << describeValidator(ventry) << " (" << full << ": " << ventry.docString()
+                                     << ")");
       }
     }
   }

@@ -90,7 +90,7 @@ core::ParameterList outputParameters() {
   core::addString(p, "Directory", ".", "Folder for all output files (created if missing); --output-dir overrides it");
   core::addString(p, "Basename", "", "Prefix of the output files; empty: the deck's file name without .xml");
   core::addBool(p, "Write Exodus", true, "Write <basename>.e (Exodus II time series for ParaView)");
-  core::addInt(p, "Exodus Interval", 1, "Write every n-th step to Exodus (the first and last step always)", 1);
+  core::addInt(p, "Exodus Interval", 1, "Write every n-th step to Exodus (the first and last step always; no Exodus file: Write Exodus = false)", 1);
   core::addInt(p, "Progress Interval", 0, "Print a progress line every n steps (0: about 20 lines per run)", 0);
   core::addBool(p, "Measure Contact Overhead", false,
                 "Also solve each step without contact (same A, preconditioner and initial guess) and report its "
@@ -138,7 +138,7 @@ std::array<double, 2> parsePoint(const std::string& spec, const std::string& key
     char* end = nullptr;
     xy[c] = std::strtod(text, &end);
     if (end != text && std::string(end).find_first_not_of(" \t") == std::string::npos) continue;
-    const core::Expression coordinate(parts[c], key + (c ? " (y)" : " (x)"));
+    const core::Expression coordinate(core::trim(parts[c]), key + (c ? " (y)" : " (x)"), "none, a coordinate is constant");
     if (!coordinate.isConstant())
       SIGNORINI_USER_ERROR(key << ": \"" << spec << "\": " << whose
                                << " coordinates are numbers or constant expressions, not functions of x, y or t");
@@ -774,16 +774,24 @@ struct Simulation::Impl {
     const auto gbar = d.coupling->weightedObstacle(problem->obstacle, 0.0);
     const auto& len = d.coupling->segmentLength();
     double largest = 0;
+    int worst = -1, penetrating = 0;  // the deepest penetration is named, so that lifting it is enough
     for (int j = 0; j < d.coupling->numSegments(); ++j) {
-      if ((gap[j] - gbar[j]) / len[j] < -d.qp->gapTolerance()) {
-        const auto& mp = d.coupling->segmentMidpoint()[j];
-        SIGNORINI_USER_ERROR("Problem/Initial Displacement penetrates the obstacle at t = 0: the mean gap on the contact "
-                             "segment at (" << mp[0] << ", " << mp[1] << ") is " << (gap[j] - gbar[j]) / len[j]
-                                            << "; the constraint holds in the means over the segments of the initial "
-                                               "state on the mesh (one that follows a concave obstacle exactly lies "
-                                               "below it between the nodes): lift it there by at least that much");
+      const double mean = (gap[j] - gbar[j]) / len[j];
+      if (mean < -d.qp->gapTolerance()) {
+        ++penetrating;
+        if (worst < 0 || mean < (gap[worst] - gbar[worst]) / len[worst]) worst = j;
       }
-      largest = std::max(largest, (gap[j] - gbar[j]) / len[j]);
+      largest = std::max(largest, mean);
+    }
+    if (worst >= 0) {
+      const auto& mp = d.coupling->segmentMidpoint()[worst];
+      SIGNORINI_USER_ERROR("Problem/Initial Displacement penetrates the obstacle at t = 0 on "
+                           << penetrating << " of " << d.coupling->numSegments()
+                           << " contact segments: the deepest, the mean gap on the segment at (" << mp[0] << ", "
+                           << mp[1] << "), is " << (gap[worst] - gbar[worst]) / len[worst]
+                           << "; the constraint holds in the means over the segments of the initial state on the mesh "
+                              "(one that follows a concave obstacle exactly lies below it between the nodes): lift it "
+                              "there by at least that much");
     }
     return largest;
   }
@@ -815,8 +823,13 @@ struct Simulation::Impl {
   /// from their interpolants, or the interpolants alone. The multipliers follow the segment
   /// midpoints (they only warm-start the next QP).
   /// \p carried (scalar fields on the old mesh's owned nodes) are interpolated along.
-  void transfer(const Discretisation& from, Discretisation& to, bool interpolate, std::vector<RCP<Vector>>& fields,
-                std::vector<double>& lambda, std::vector<RCP<Vector>>& carried) {
+  /// With PassOptions::Transfer::ritzProjection, fields[0] is u, moved by the Ritz projection
+  /// (K + mu M_rho) x = a(u_old, phi) + mu (rho u_old, phi), mu = 10^-3 (c / L)^2 (c the fastest
+  /// wave speed, L the domain's diameter; the mass term makes it definite on a free body and weighs
+  /// little against K on the mesh's scales), from its L2 projection; the other fields as above.
+  void transfer(const Discretisation& from, Discretisation& to, PassOptions::Transfer method,
+                std::vector<RCP<Vector>>& fields, std::vector<double>& lambda, std::vector<RCP<Vector>>& carried) {
+    const bool interpolate = method == PassOptions::Transfer::interpolation;
     auto scope = timers.scope("transfer");
     const int nc = problem->components();
     const int nf = static_cast<int>(fields.size());
@@ -868,6 +881,32 @@ struct Simulation::Impl {
                                             "Maximum Iterations): ") + e.what());
       }
     }
+    if (method == PassOptions::Transfer::ritzProjection) {
+      // The mass term only makes the operator definite (a free body's rigid motions): the strain
+      // energy may rise by mu's share, mu (||u_old||_M^2 - ||R u_old||_M^2) / 2, so mu is 10^-3 of
+      // the scale of the body's lowest modes (10^-6 left a free bracket's K + mu M too near singular
+      // for MueLu with Chebyshev).
+      const double mu = 1e-3 * std::pow(problem->waveSpeed() / coarse->diameter(), 2);
+      const auto stiffness = [&](const double X[4][2], double Ke[8][8]) { to.assembler->elementStiffness(*problem, X, Ke); };
+      const auto parts = t.stiffnessLoads(stiffness, 0, nc);
+      auto b = nc == 1 ? parts[0] : interleave(parts, to.assembler->ownedMap());
+      b->update(mu, *rhs[0], 1.0);  // rhs[0]: the L2 projection's rho int u_old phi
+      to.assembler->zeroDirichlet(*b);
+      auto ritz = to.assembler->assembleSystem(mu, 1.0, *problem);
+      // MueLu with symmetric Gauss-Seidel unless the deck chooses a smoother: Chebyshev's estimate of
+      // the largest eigenvalue fell short on a free body's K + mu M (CG broke down on a bracket's drop).
+      auto params = deck.sublist("Linear Solver");
+      if (!params.sublist("MueLu").isParameter("smoother: type")) {
+        params.sublist("MueLu").set("smoother: type", "RELAXATION");
+        params.sublist("MueLu").sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
+      }
+      solvers::LinearSolver solver(params);
+      solver.setSystemName("the Ritz projection's K + mu M on the new mesh (Adaptivity/Transfer)");
+      if (auto* elasticity = dynamic_cast<const fem::ElasticityAssembler*>(to.assembler.get()))
+        solver.setNearNullspace(elasticity->rigidBodyModes(), 2);
+      solver.setOperator(ritz, core::kInf);  // "auto": MueLu (K dominates), Jacobi in reproducible arithmetic
+      solver.solve(*b, *fields[0]);  // from the L2 projection
+    }
     if (from.coupling && to.coupling) {
       // The QP's warm start on the new segments: the multiplier of the nearest old segment. It is a
       // force per unit length (B's columns integrate over the segment), so a segment split in two
@@ -915,26 +954,34 @@ void Simulation::checkInitialGapOnRefinements(int finerLevels, const std::string
   const double sign = nc == 1 ? 1.0 : I.problem->contactSign;
   const auto& gauss = fem::kGauss3Point;
   const auto& weight = fem::kGauss3Weight;
-  std::ostringstream error;
+  // The deepest penetration over all ranks is named, so that lifting the obstacle by it is enough.
+  struct {
+    double mean;
+    int rank;
+  } mine{core::kInf, I.comm->getRank()}, deepest{};
+  std::array<double, 3> where{};  // the segment's midpoint and length
   for (const auto& be : d.mesh->boundaryEdges()) {
-    if (!(be.segments & I.problem->contactMask) || !error.str().empty()) continue;
-    for (int p = 0; p < pieces && error.str().empty(); ++p) {
+    if (!(be.segments & I.problem->contactMask)) continue;
+    for (int p = 0; p < pieces; ++p) {
       double mean = 0;
       for (int e = 0; e < edgesPerPiece; ++e)
         for (int q = 0; q < 3; ++q) {
           const auto x = be.at((p * edgesPerPiece + e + gauss[q]) / (pieces * edgesPerPiece));
           mean += weight[q] / edgesPerPiece * (sign * u0(x[0], x[1], 0.0) - I.problem->obstacle(x[0], x[1], 0.0));
         }
-      if (mean < -d.qp->gapTolerance()) {
+      if (mean < mine.mean) {
         const auto mid = be.at((p + 0.5) / pieces);
-        error << std::setprecision(6) << "Problem/Initial Displacement penetrates the obstacle at t = 0 on the finer "
-              << "meshes that " << cause << " can make: the mean gap on the contact segment of "
-              << edgesPerPiece << " edge(s) of length " << be.length() / (pieces * edgesPerPiece) << " at (" << mid[0]
-              << ", " << mid[1] << ") would be " << mean
-              << " (the deck's mesh averages it away, and that cycle would stop at its start)";
+        mine.mean = mean, where = {mid[0], mid[1], be.length() / (pieces * edgesPerPiece)};
       }
     }
   }
+  MPI_Allreduce(&mine, &deepest, 1, MPI_DOUBLE_INT, MPI_MINLOC, core::rawMpiComm(*I.comm));
+  std::ostringstream error;
+  if (deepest.mean < -d.qp->gapTolerance() && deepest.rank == I.comm->getRank())
+    error << std::setprecision(6) << "Problem/Initial Displacement penetrates the obstacle at t = 0 on the finer "
+          << "meshes that " << cause << " can make: the mean gap on the deepest contact segment, of " << edgesPerPiece
+          << " edge(s) of length " << where[2] << " at (" << where[0] << ", " << where[1] << "), would be "
+          << deepest.mean << " (the deck's mesh averages it away, and that cycle would stop at its start)";
   core::throwFirstUserError(*I.comm, error.str());
 }
 
@@ -1064,7 +1111,7 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
     if (I.problem->components() == 1)
       SIGNORINI_USER_ERROR("Output/Stress Region: stresses are those of plane strain elasticity (Problem/Type); the "
                            "scalar wave equation has none");
-    I.stressRegion = std::make_unique<core::Expression>(region, "Output/Stress Region");
+    I.stressRegion = std::make_unique<core::Expression>(region, "Output/Stress Region", "x, y");
     if (!I.stressRegion->isTimeIndependent())
       SIGNORINI_USER_ERROR("Output/Stress Region: \"" << region << "\" depends on t; the region is one of the body (x, y)");
   }
@@ -1198,13 +1245,15 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
       double worst[3] = {0, 0, 0};  // the largest penetration g - d . u0 and its point
       const auto& u0 = I.problem->initialDisplacement[nc == 1 ? 0 : I.problem->contactComponent];
       const double sign = nc == 1 ? 1.0 : I.problem->contactSign;
+      std::string bad;  // the obstacle at a node (the estimator's s1 and the Exodus gaps take it there)
       for (const auto& be : d->mesh->boundaryEdges())
         if (be.segments & I.problem->contactMask)
           for (double w : {0.0, 0.5, 1.0}) {
             const auto x = be.at(w);
-            const double penetration = I.problem->obstacle(x[0], x[1], 0.0) - sign * u0(x[0], x[1], 0.0);
+            const double penetration = I.problem->obstacle.sample(x[0], x[1], 0.0, bad) - sign * u0(x[0], x[1], 0.0);
             if (penetration > worst[0]) worst[0] = penetration, worst[1] = x[0], worst[2] = x[1];
           }
+      core::throwFirstUserError(*comm, bad.empty() ? bad : bad + " on the contact boundary");
       struct {
         double value;
         int rank;
@@ -1221,6 +1270,54 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
                     << std::endl;
       }
     }
+    // A constant obstacle under an elastic body's contact boundary that is not straight across the
+    // contact direction: d . u >= g holds point by point, so the obstacle takes the body's shape (a
+    // user study's arched base rested on all of it). A flat obstacle is a function of the coordinate.
+    if (d->coupling && nc == 2 && I.problem->obstacle.isConstant()) {
+      const int c = I.problem->contactComponent;
+      double range[2] = {core::kInf, core::kInf}, global[2];  // min of x_c and of -x_c
+      for (const auto& be : d->mesh->boundaryEdges())
+        if (be.segments & I.problem->contactMask)
+          for (double w : {0.0, 1.0}) {
+            const auto x = be.at(w);
+            range[0] = std::min(range[0], x[c]), range[1] = std::min(range[1], -x[c]);
+          }
+      Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, 2, range, global);
+      const double low = global[0], high = -global[1];
+      if (high - low > 1e-9 * I.coarse->diameter() && comm->getRank() == 0) {
+        const char* coordinate = c == 0 ? "x" : "y";
+        const double sign = I.problem->contactSign, edge = sign > 0 ? low : high;
+        std::cerr << std::setprecision(6) << "signorini: warning: " << deckPath << ": Problem/Obstacle is the constant "
+                  << I.problem->obstacle.text() << " while the contact boundary is not straight across the contact "
+                  << "direction (" << coordinate << " from " << low << " to " << high << "): the constraint holds "
+                  << "point by point, so the obstacle takes the body's shape; a flat obstacle at " << coordinate
+                  << " = " << edge << " is " << (sign > 0 ? "" : "-") << "(" << edge << " - " << coordinate << ")"
+                  << std::endl;
+      }
+    }
+    // Boundary segments that no Problem list names are free edges: most likely a list left out.
+    {
+      const unsigned used = I.problem->dirichletMask | I.problem->componentDirichletMask[0] |
+                            I.problem->componentDirichletMask[1] | I.problem->neumannMask | I.problem->contactMask;
+      std::string unused;
+      for (int i = 0; i < I.segments->size(); ++i)
+        if (!(used & (1u << i))) unused += (unused.empty() ? "'" : ", '") + I.segments->name(i) + "'";
+      if (!unused.empty() && comm->getRank() == 0)
+        std::cerr << "signorini: warning: " << deckPath << ": Mesh/Boundary Segments " << unused
+                  << " named by no Problem/Dirichlet, Dirichlet X, Dirichlet Y, Neumann or Contact Segments: "
+                     "free edges (no support, no load, no contact)"
+                  << std::endl;
+    }
+    // A time step in which the fastest wave crosses the whole body resolves none of its dynamics
+    // (e.g. a density in g/cm^3 with the rest in SI units): the run tends to the static solution.
+    if (const double crossings = I.problem->waveSpeed() * I.newmark->timeStep / I.coarse->diameter();
+        crossings > 1 && comm->getRank() == 0)
+      std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": in one Time Step "
+                << I.newmark->timeStep << " the fastest wave (speed " << I.problem->waveSpeed()
+                << ") crosses the body's diameter " << I.coarse->diameter() << " " << crossings
+                << " times, so the steps resolve none of its waves and the run tends to the static solution (are "
+                   "the units of Problem/Density and the moduli consistent?)"
+                << std::endl;
     // Data that turn into NaN or inf later in the run stop it at set-up rather than in that step.
     I.problem->checkFiniteOverTime(*d->mesh, I.newmark->timeStep, I.newmark->numSteps());
     // The KKT tolerance is absolute (Contact/KKT Tolerance times the domain diameter): a warning when
@@ -1595,6 +1692,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     written = I.energies(*d, *u, *v);
     if (step == 0) transferred = written;  // the initial state: nothing moved
     const auto [kinetic, strain] = written;
+    if (options.reportTransferEnergy) summary.largestEnergy = std::max(summary.largestEnergy, kinetic + strain);
     const double energy = kinetic + strain, newmarkEnergy = I.newmarkEnergy(*d, energy, *a);
     std::vector<double> row = {double(step), t, dofs, double(qr.active), double(qr.activeSetIterations),
                                double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),
@@ -1743,13 +1841,27 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       if (n > 1 && meshes[n - 1] != d->forest && !meshes[n - 1]->sameCells(*d->forest)) {
         meshes[n - 1]->expand();
         auto next = I.build(meshes[n - 1], n);
-        if (options.reportTransferEnergy)  // only to recover I_h u and I_h v
-          predictors.push_back(Teuchos::rcp(new Vector(I.newmark->recoveryField(*v, *aCarried), Teuchos::Copy)));
-        if (accelerationTerm) predictors.push_back(accelerationTerm);  // moved along (I_h is linear), last
-        I.transfer(*d, *next, options.interpolateTransfer, predictors, lambda, carried);
-        if (accelerationTerm) {
-          accelerationTerm = predictors.back();
-          predictors.pop_back();
+        const bool ritz = options.transfer == PassOptions::Transfer::ritzProjection;
+        std::vector<RCP<Vector>> state;  // Ritz: u, v, a move (u by another projection than v and a)
+        if (ritz) {
+          for (const auto& f : {u, v, aCarried}) state.push_back(Teuchos::rcp(new Vector(*f, Teuchos::Copy)));
+          I.transfer(*d, *next, options.transfer, state, lambda, carried);
+          for (auto& p : predictors) p = Teuchos::rcp(new Vector(next->assembler->ownedMap()));
+          I.newmark->predictor(*state[0], *state[1], *state[2], *predictors[0]);
+          I.newmark->velocityPredictor(*state[1], *state[2], *predictors[1]);
+          if (accelerationTerm) {
+            accelerationTerm = Teuchos::rcp(new Vector(predictors[0]->getMap()));
+            accelerationTerm->update((0.5 - beta) * k * k, *state[2], 0.0);
+          }
+        } else {
+          if (options.reportTransferEnergy)  // only to recover I_h u and I_h v
+            predictors.push_back(Teuchos::rcp(new Vector(I.newmark->recoveryField(*v, *aCarried), Teuchos::Copy)));
+          if (accelerationTerm) predictors.push_back(accelerationTerm);  // moved along (I_h is linear), last
+          I.transfer(*d, *next, options.transfer, predictors, lambda, carried);
+          if (accelerationTerm) {
+            accelerationTerm = predictors.back();
+            predictors.pop_back();
+          }
         }
         const auto previous = d->forest;
         d = std::move(next);
@@ -1757,10 +1869,14 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         u = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
         v = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
         a = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
-        if (options.reportTransferEnergy) {
+        if (options.reportTransferEnergy && ritz) {
+          transferred = I.energies(*d, *state[0], *state[1]);
+          summary.transferEnergyChange += transferred.first + transferred.second - written.first - written.second;
+        } else if (options.reportTransferEnergy) {
           Vector uMoved(d->assembler->ownedMap()), vMoved(d->assembler->ownedMap());
           I.newmark->stateFromPredictors(*predictors[0], *predictors[1], *predictors[2], uMoved, vMoved);
           transferred = I.energies(*d, uMoved, vMoved);
+          summary.transferEnergyChange += transferred.first + transferred.second - written.first - written.second;
           predictors.resize(2);
         }
         ++summary.meshChanges;

@@ -32,6 +32,12 @@ struct RunSummary {
   /// (all cycles); the phases are exclusive (core::PhaseTimers). A one-pass run (run()) includes
   /// the set-up on the deck's mesh before it (its solver, set up once), which wallSeconds does not.
   std::map<std::string, double> phaseSeconds;
+  /// \var transferEnergyChange
+  /// With PassOptions::reportTransferEnergy: the change of the energy (kinetic + strain) by the
+  /// transfers between the step meshes, summed over the mesh changes [energy per unit thickness].
+  /// \var largestEnergy
+  /// With PassOptions::reportTransferEnergy: the largest energy (kinetic + strain) of a step.
+  double transferEnergyChange = 0, largestEnergy = 0;
 };
 
 /// What a per-step hook sees right after step n was solved (references valid during the call).
@@ -84,7 +90,12 @@ struct PassOptions {
   bool writeCsv = true, writeExodus = true;
   std::vector<std::string> extraColumns;  ///< names of StepExtras::columns
   std::string cellFieldName;              ///< name of StepExtras::cellField in Exodus (empty: none)
-  bool interpolateTransfer = false;       ///< nodal interpolation instead of the L2 projection
+  /// I_h between the step meshes (Adaptivity/Transfer): the paper's L2 projection of every field,
+  /// nodal interpolation, or the Ritz projection of u with the L2 projection of v and a, which
+  /// cannot raise the energy (the L2 projection of u raises the strain energy by about that of its
+  /// error, a(P u - u, P u - u), where a step's mesh is coarser than its predecessor's).
+  enum class Transfer { l2Projection, interpolation, ritzProjection };
+  Transfer transfer = Transfer::l2Projection;  ///< how the state moves to a step's new mesh
   /// Step-table columns energy_transferred, kinetic_energy_transferred: the energies
   /// of (I_h u^{n-1}, I_h v^{n-1}) on the mesh of step n (those of step n-1 when the mesh is kept),
   /// so the transfer's effect on the energy is visible. Costs a third projected field (Newmark::recoveryField).

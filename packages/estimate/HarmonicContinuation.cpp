@@ -10,6 +10,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/core/Error.hpp"
+#include "signorini/core/MpiComm.hpp"
 #include "signorini/core/ReproducibleLinearAlgebra.hpp"
 
 namespace signorini::estimate {
@@ -119,16 +120,18 @@ double geometricContactTerm(const mesh::Q1Mesh& mesh, unsigned contactMask, cons
   const std::vector<char> contact = mesh.nodesOnSegments(contactMask);
   Vector boundary(owned);
   double maxLocal = 0, maxGlobal = 0;
+  std::string bad;  // g not a finite number at a contact node (the constraint samples it between them)
   {
     auto bh = boundary.getLocalViewHost(Tpetra::Access::OverwriteAll);
     for (LO i = 0; i < nOwned; ++i) {  // owned nodes come first in the overlap numbering
       bh(i, 0) = 0.0;
       if (!contact[i] || fixed[i]) continue;
       const auto& x = mesh.nodeCoords()[i];
-      bh(i, 0) = std::max(g(x[0], x[1], t) - w(i), 0.0);
+      bh(i, 0) = std::max(g.sample(x[0], x[1], t, bad) - w(i), 0.0);
       maxLocal = std::max(maxLocal, bh(i, 0));
     }
   }
+  core::throwFirstUserError(*mesh.comm(), bad.empty() ? bad : bad + " (a node of the contact boundary, where the estimator's s1 takes it)");
   Teuchos::reduceAll(*mesh.comm(), Teuchos::REDUCE_MAX, maxLocal, Teuchos::outArg(maxGlobal));
   if (!(maxGlobal > 0)) return 0.0;
   SIGNORINI_ASSERT(static_cast<bool>(solveSPD), "s1 needs a solver for SPD systems");

@@ -95,6 +95,11 @@ class Assembler {
   virtual void massBeforeElimination(const Vector& wOverlap, const ProblemData& problem,
                                      const std::vector<char>& lumpAt, Vector& out) const = 0;
 
+  /// The element stiffness matrix of a cell with physical corners \p X (z-order) as K assembles
+  /// it, unknowns interleaved: Ke[nc a + i][nc b + j] (nc = components()). For the Ritz projection
+  /// between meshes (MeshTransfer::stiffnessLoads).
+  virtual void elementStiffness(const ProblemData& problem, const double X[4][2], double Ke[8][8]) const = 0;
+
   /// M (lumped at \p lumpAt) and K of assembleSystem(1, 0, ...) and assembleSystem(0, 1, ...); an
   /// assembler may compute both in one pass over the cells.
   virtual std::pair<RCP<CrsMatrix>, RCP<CrsMatrix>> assembleMassAndStiffness(const ProblemData& problem,

@@ -69,6 +69,11 @@ KOKKOS_INLINE_FUNCTION void elasticElementMatrices(const double Xe[4][2], double
 
 }  // namespace
 
+void ElasticityAssembler::elementStiffness(const ProblemData&, const double X[4][2], double Ke[8][8]) const {
+  double Me[4][4];
+  elasticElementMatrices(X, 0.0, lambda_, mu_, Me, Ke);
+}
+
 DirichletRowsInput ElasticityAssembler::rowsInput(const ProblemData& problem, const std::vector<char>& lumpAt) const {
   DirichletRowsInput in;
   in.mesh = &mesh_;

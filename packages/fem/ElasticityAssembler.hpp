@@ -59,6 +59,7 @@ class ElasticityAssembler : public Assembler {
   std::pair<double, double> errorNorms(const Vector& uOwned, const core::ExpressionList& exact,
                                        double t) const override;
   double evaluateComponent(const Vector& uOverlap, double x, double y, int c) const override;
+  void elementStiffness(const ProblemData& problem, const double X[4][2], double Ke[8][8]) const override;
   std::vector<double> dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap, const ProblemData& problem,
                                        double t, const std::vector<char>& lumpAt,
                                        const std::array<double, 2>* momentPoint = nullptr,

@@ -54,11 +54,11 @@ double MeshTransfer::valueAt(const mesh::OverlapCell& q, int field, double s, do
   return (1 - ls) * (1 - lr) * c[0] + ls * (1 - lr) * c[1] + (1 - ls) * lr * c[2] + ls * lr * c[3];
 }
 
-std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAssembler, int numFields) const {
-  const int nf = numFields < 0 ? numFields_ : std::min(numFields, numFields_);
+std::vector<RCP<Vector>> MeshTransfer::assembleLoads(int nf, const std::vector<char>* skip,
+                                                    const std::function<void(int e, double be[8][4])>& cellLoads) const {
+  SIGNORINI_ASSERT(nf <= 8, "too many fields");
   const auto& D = newMesh_.cornerDofsHost;
   const auto& W = newMesh_.cornerWeightsHost;
-  std::vector<RCP<Vector>> loads;
   std::vector<Vector> overlap;
   for (int f = 0; f < nf; ++f) {
     overlap.emplace_back(newMesh_.overlapMap());
@@ -66,18 +66,45 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
   }
   std::vector<decltype(overlap[0].getLocalViewHost(Tpetra::Access::ReadWrite))> views;
   for (auto& o : overlap) views.push_back(o.getLocalViewHost(Tpetra::Access::ReadWrite));
-  const auto& dir = newAssembler.dirichletFlags();
   // Reproducible arithmetic on several ranks: the rows of shared nodes are summed by EntrySums;
   // every other row adds this rank's cells in their order below, as one rank would.
   const bool reproducible = needEntrySums(*newMesh_.comm());
   const auto shared = reproducible ? sharedRows(*newMesh_.overlapMap(), newMesh_.ownedToOverlap()) : std::vector<char>();
   std::vector<std::vector<Contribution>> contributions(reproducible ? nf : 0);
+  for (int e = 0; e < overlap_->numTargetCells(); ++e) {
+    double be[8][4] = {};  // [field][corner]
+    cellLoads(e, be);
+    for (int f = 0; f < nf; ++f)
+      for (int c = 0; c < 4; ++c)
+        for (int k = 0; k < 2; ++k) {
+          const LO d = D(e, c, k);
+          if (d < 0 || (skip && (*skip)[d])) continue;
+          if (reproducible && shared[d])
+            contributions[f].push_back({d, 0, W(e, c, k) * be[f][c]});
+          else
+            views[f](d, 0) += W(e, c, k) * be[f][c];
+        }
+  }
+  views.clear();
+  std::vector<RCP<Vector>> loads;
+  for (int f = 0; f < nf; ++f) {
+    auto b = Teuchos::rcp(new Vector(newMesh_.ownedMap()));
+    if (reproducible)  // each node's contributions added in the order of the cells, on its owner (EntrySums)
+      EntrySums(*newMesh_.ownedMap(), *newMesh_.overlapMap(), newMesh_.ownedToOverlap(), contributions[f])
+          .writeInto(*b, false, shared, &overlap[f]);
+    else
+      b->doExport(overlap[f], newMesh_.overlapToOwned(), Tpetra::ADD);
+    loads.push_back(b);
+  }
+  return loads;
+}
+
+std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAssembler, int numFields) const {
+  const int nf = numFields < 0 ? numFields_ : std::min(numFields, numFields_);
   std::vector<double> treeDeterminant(coarse_.numTrees());
   for (int t = 0; t < coarse_.numTrees(); ++t) treeDeterminant[t] = constantJacobianDeterminant(coarse_, t);
-  for (int e = 0; e < overlap_->numTargetCells(); ++e) {
+  return assembleLoads(nf, &newAssembler.dirichletFlags(), [&](int e, double be[8][4]) {
     const auto& K = overlap_->target(e);
-    double be[8][4] = {};  // [field][corner]
-    SIGNORINI_ASSERT(nf <= 8, "too many fields");
     const double det = treeDeterminant[K.tree];
     if (!std::isnan(det)) {  // u and the basis are bilinear on each cell of the common refinement: exact
       for (const auto& Q : overlap_->overlapping(e)) {
@@ -125,33 +152,34 @@ std::vector<RCP<Vector>> MeshTransfer::projectionLoads(const Q1Assembler& newAss
           }
       }
     }
-    for (int f = 0; f < nf; ++f)
-      for (int c = 0; c < 4; ++c)
-        for (int k = 0; k < 2; ++k) {
-          const LO d = D(e, c, k);
-          if (d < 0 || dir[d]) continue;
-          if (reproducible && shared[d])
-            contributions[f].push_back({d, 0, W(e, c, k) * be[f][c]});
-          else
-            views[f](d, 0) += W(e, c, k) * be[f][c];
+  });
+}
+
+std::vector<RCP<Vector>> MeshTransfer::stiffnessLoads(const ElementStiffness& stiffness, int first, int nc) const {
+  SIGNORINI_ASSERT(nc >= 1 && nc <= 2 && first >= 0 && first + nc <= numFields_, "fields out of range");
+  return assembleLoads(nc, nullptr, [&](int e, double be[8][4]) {
+    const auto& K = overlap_->target(e);
+    for (const auto& Q : overlap_->overlapping(e)) {
+      const auto& R = Q.size < K.size ? Q : K;  // the cell of the common refinement
+      double X[4][2], N[4][4], u[8];  // R's corners; the new basis at them [corner of R][basis of K]; u_old there
+      for (int a = 0; a < 4; ++a) {
+        const double s = R.s0 + ((a & 1) ? R.size : 0), r = R.r0 + ((a & 2) ? R.size : 0);
+        const auto x = coarse_.mapPoint(K.tree, s, r);
+        X[a][0] = x[0], X[a][1] = x[1];
+        double dNds[4], dNdr[4];
+        q1Shape((s - K.s0) / K.size, (r - K.r0) / K.size, N[a], dNds, dNdr);
+        for (int i = 0; i < nc; ++i) u[nc * a + i] = valueAt(Q, first + i, s, r);
+      }
+      double Ke[8][8];
+      stiffness(X, Ke);
+      for (int a = 0; a < 4; ++a)
+        for (int i = 0; i < nc; ++i) {
+          double Ku = 0;  // (K_R u)_(a, i)
+          for (int b = 0; b < nc * 4; ++b) Ku += Ke[nc * a + i][b] * u[b];
+          for (int c = 0; c < 4; ++c) be[i][c] += N[a][c] * Ku;
         }
-  }
-  views.clear();
-  if (reproducible) {  // each node's contributions added in the order of the cells, on its owner (EntrySums)
-    for (int f = 0; f < nf; ++f) {
-      auto b = Teuchos::rcp(new Vector(newMesh_.ownedMap()));
-      EntrySums(*newMesh_.ownedMap(), *newMesh_.overlapMap(), newMesh_.ownedToOverlap(), contributions[f])
-          .writeInto(*b, false, shared, &overlap[f]);
-      loads.push_back(b);
     }
-    return loads;
-  }
-  for (int f = 0; f < nf; ++f) {
-    auto b = Teuchos::rcp(new Vector(newMesh_.ownedMap()));
-    b->doExport(overlap[f], newMesh_.overlapToOwned(), Tpetra::ADD);
-    loads.push_back(b);
-  }
-  return loads;
+  });
 }
 
 std::vector<RCP<Vector>> MeshTransfer::interpolate() const {

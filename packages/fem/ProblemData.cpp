@@ -223,8 +223,8 @@ void ProblemData::checkFiniteOverTime(const mesh::Q1Mesh& mesh, double timeStep,
   for (const auto& be : mesh.boundaryEdges()) {
     if ((be.segments & neumannMask) && needed(neumannPoints))
       for (int g = 0; g < 2; ++g) neumannPoints.push_back(be.at(gauss2Point(g)));
-    if ((be.segments & contactMask) && needed(contactPoints))
-      for (double w : gauss3) contactPoints.push_back(be.at(w));
+    if ((be.segments & contactMask) && needed(contactPoints))  // and the nodes, where the estimator's s1 takes g
+      for (double w : {0.0, gauss3[0], gauss3[1], gauss3[2], 1.0}) contactPoints.push_back(be.at(w));
   }
 
   // The first sample at step n that is not a finite number, with its key and place ("" if none).

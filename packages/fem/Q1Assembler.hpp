@@ -56,6 +56,7 @@ class Q1Assembler : public Assembler {
   double evaluateComponent(const Vector& uOverlap, double x, double y, int) const override {
     return evaluate(uOverlap, x, y);
   }
+  void elementStiffness(const ProblemData& problem, const double X[4][2], double Ke[8][8]) const override;
   std::vector<double> dirichletRowSums(const Vector& uOverlap, const Vector& aOverlap, const ProblemData& problem,
                                        double t, const std::vector<char>& lumpAt,
                                        const std::array<double, 2>* momentPoint = nullptr,

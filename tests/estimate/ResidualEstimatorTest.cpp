@@ -654,6 +654,23 @@ TEST(ResidualEstimatorS1, SeesOnlyThePositivePartOfThePenetration) {
   EXPECT_NEAR(s1For("0.2*(y - 0.5)"), positivePart, 1e-12 * positivePart);
 }
 
+TEST(ResidualEstimatorS1, RefusesAnObstacleThatIsNotFiniteAtAContactNode) {
+  // 1 / |y - 1/2| is finite at every Gauss point of the contact edges but inf at the node (1, 1/2),
+  // where s1 takes it: a user error that names the obstacle and the point (its CG used to fail).
+  EstimatorCase s(mesh::CoarseMesh::rectangle(0, 1, 0, 1, 1, 1), kSides, 2);
+  s.finish({{"Dirichlet Segments", "left"}, {"Contact Segments", "right"}, {"Obstacle", "1/abs(y - 0.5)"}});
+  s.u->putScalar(0.0);
+  s.pred->putScalar(0.0);
+  std::string message;
+  try {
+    s.run(true);
+  } catch (const core::UserError& e) {
+    message = e.what();
+  }
+  EXPECT_NE(message.find("Problem/Obstacle: '1/abs(y - 0.5)' evaluates to inf at (1, 0.5)"), std::string::npos) << message;
+  EXPECT_NE(message.find("the estimator's s1"), std::string::npos) << message;
+}
+
 TEST(ResidualEstimatorS1, OperatorsFromTheStepMatricesAndWarmStartsGiveTheSameValue) {
   // s1 with its H^1 operator formed from the step's M_rho and K_kappa (rho = 2, kappa = 3) and with
   // the continuation cached per mesh (second call on the same mesh starts from the first

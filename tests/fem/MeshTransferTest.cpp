@@ -2,7 +2,8 @@
 // reproduces fields that lie in both spaces, is the identity for identical meshes, conserves the
 // integral; nodal interpolation reproduces fields of the new space. Meshes partitioned differently;
 // rectangles (exact element mass matrices), parallelograms in rotated frames and distorted cells
-// (Gauss points).
+// (Gauss points). The Ritz projection's right-hand sides a(u_old, phi) equal K u for a field of
+// both spaces (scalar and elasticity).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,7 +14,9 @@
 #include "../QuadMeshes.hpp"
 #include "../TestMesh.hpp"
 #include "signorini/solvers/LinearSolver.hpp"
+#include "signorini/fem/ElasticityAssembler.hpp"
 #include "signorini/fem/MeshTransfer.hpp"
+#include "signorini/fem/ProblemData.hpp"
 #include "signorini/fem/Q1Assembler.hpp"
 
 using namespace signorini;
@@ -124,6 +127,84 @@ TEST_P(TransferOnQuadrilateralsTest, ProjectionReproducesAFieldOfBothSpacesInBot
   fem::MeshTransfer down(*fineSide->forest, fineMesh, {uf.get()}, *coarseSide->forest, coarseMesh);
   fem::Q1Assembler coarseAsmb(coarseMesh, std::vector<char>(coarseMesh.overlapMap()->getNodeNumElements(), 0));
   EXPECT_LT(maxDiff(*project(coarseAsmb, *down.projectionLoads(coarseAsmb)[0]), uc), 1e-10);
+}
+
+TEST_P(TransferOnQuadrilateralsTest, StiffnessLoadsAreKTimesAFieldOfBothSpaces) {
+  // a(u_old, phi_i e_c) on the common refinement: for u_old in the new space too it is (K u)_(i, c),
+  // K the new mesh's stiffness as the assemblers build it (kappa = 3; elasticity's Lame parameters).
+  // Coarse -> fine on every coarse mesh (each new cell lies in an old one: its own element matrix);
+  // fine -> coarse where the element matrices are exact (parallelograms), since on distorted cells
+  // the 2 x 2 Gauss rule of a cell is not the sum of its children's.
+  const std::vector<std::pair<std::string, std::string>> sides = {{"all", "boundary"}};
+  const auto coarse = GetParam() == Coarse::Rectangles       ? nullptr
+                      : GetParam() == Coarse::RotatedSquares ? test::rotatedSquares()
+                                                             : test::distortedSquare();
+  auto side = [&]() {
+    return coarse ? std::make_unique<test::TestMesh>(coarse, sides, 1)
+                  : std::make_unique<test::TestMesh>(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
+  };
+  auto coarseSide = side(), fineSide = side();
+  fineSide->refineCorner();
+  const auto& coarseMesh = coarseSide->build();
+  const auto& fineMesh = fineSide->build();
+  const std::array<std::function<double(double, double)>, 2> field = {
+      [](double x, double y) { return std::exp(x) * std::sin(3 * y) + x * y; },
+      [](double x, double y) { return std::cos(2 * x) - 0.5 * x * x * y; }};
+  for (const char* type : {"scalar wave", "plane strain elasticity"}) {
+    auto p = fem::ProblemData::getValidParameters();
+    p.set("Type", std::string(type));
+    if (std::string(type) == "scalar wave") p.set("Stiffness", 3.0);
+    const fem::ProblemData problem(p, *coarseSide->segments);
+    const int nc = problem.components();
+    auto assemblerOn = [&](const mesh::Q1Mesh& m) -> std::unique_ptr<fem::Assembler> {
+      const std::vector<char> none(nc * m.overlapMap()->getNodeNumElements(), 0);
+      if (nc == 1) return std::make_unique<fem::Q1Assembler>(m, none);
+      return std::make_unique<fem::ElasticityAssembler>(m, none, problem.lameLambda, problem.lameMu);
+    };
+    for (const bool up : {true, false}) {
+      if (!up && GetParam() == Coarse::Distorted) continue;
+      auto& from = up ? *coarseSide : *fineSide;
+      auto& to = up ? *fineSide : *coarseSide;
+      const auto& oldMesh = up ? coarseMesh : fineMesh;
+      const auto& newMesh = up ? fineMesh : coarseMesh;
+      // The components on the coarse mesh, interpolated to the old mesh (the same field on both).
+      std::vector<Vector> onCoarse;
+      for (int c = 0; c < nc; ++c) {
+        onCoarse.emplace_back(coarseMesh.ownedMap());
+        interpolate(coarseMesh, field[c], onCoarse.back());
+      }
+      std::vector<const Vector*> raw;
+      for (const auto& v : onCoarse) raw.push_back(&v);
+      fem::MeshTransfer toOld(*coarseSide->forest, coarseMesh, raw, *from.forest, oldMesh);
+      const auto oldParts = toOld.interpolate();
+      std::vector<const Vector*> oldRaw;
+      for (const auto& v : oldParts) oldRaw.push_back(v.get());
+      fem::MeshTransfer transfer(*from.forest, oldMesh, oldRaw, *to.forest, newMesh);
+      const auto asmb = assemblerOn(newMesh);
+      const auto loads = transfer.stiffnessLoads(
+          [&](const double X[4][2], double Ke[8][8]) { asmb->elementStiffness(problem, X, Ke); }, 0, nc);
+      // K u on the new mesh, u its nodal interpolant (the field lies in the new space).
+      const auto nodal = transfer.interpolate();
+      Vector u(asmb->ownedMap()), Ku(asmb->ownedMap());
+      {
+        auto uh = u.getLocalViewHost(Tpetra::Access::OverwriteAll);
+        for (int c = 0; c < nc; ++c) {
+          auto nh = nodal[c]->getLocalViewHost(Tpetra::Access::ReadOnly);
+          for (size_t i = 0; i < nh.extent(0); ++i) uh(nc * i + c, 0) = nh(i, 0);
+        }
+      }
+      asmb->assembleSystem(0.0, 1.0, problem)->apply(u, Ku);
+      const double scale = Ku.normInf();
+      ASSERT_GT(scale, 0.0);
+      auto kh = Ku.getLocalViewHost(Tpetra::Access::ReadOnly);
+      double largest = 0;
+      for (int c = 0; c < nc; ++c) {
+        auto bh = loads[c]->getLocalViewHost(Tpetra::Access::ReadOnly);
+        for (size_t i = 0; i < bh.extent(0); ++i) largest = std::max(largest, std::abs(bh(i, 0) - kh(nc * i + c, 0)));
+      }
+      EXPECT_LT(largest, 1e-12 * scale) << type << (up ? ", coarse -> fine" : ", fine -> coarse");
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(CoarseMeshes, TransferOnQuadrilateralsTest,
