@@ -103,17 +103,23 @@ enum class Coarse { Rectangles, RotatedSquares, Distorted };
 
 class TransferOnQuadrilateralsTest : public ::testing::TestWithParam<Coarse> {};
 
-TEST_P(TransferOnQuadrilateralsTest, ProjectionReproducesAFieldOfBothSpacesInBothDirections) {
+/// The same one-level coarse mesh twice, the second with its lower-left corner refined twice.
+std::pair<std::unique_ptr<test::TestMesh>, std::unique_ptr<test::TestMesh>> meshPair(Coarse kind) {
   const std::vector<std::pair<std::string, std::string>> sides = {{"all", "boundary"}};
-  const auto coarse = GetParam() == Coarse::Rectangles       ? nullptr
-                      : GetParam() == Coarse::RotatedSquares ? test::rotatedSquares()
-                                                             : test::distortedSquare();
+  const auto coarse = kind == Coarse::Rectangles       ? nullptr
+                      : kind == Coarse::RotatedSquares ? test::rotatedSquares()
+                                                       : test::distortedSquare();
   auto side = [&]() {
     return coarse ? std::make_unique<test::TestMesh>(coarse, sides, 1)
                   : std::make_unique<test::TestMesh>(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
   };
   auto coarseSide = side(), fineSide = side();
   fineSide->refineCorner();
+  return {std::move(coarseSide), std::move(fineSide)};
+}
+
+TEST_P(TransferOnQuadrilateralsTest, ProjectionReproducesAFieldOfBothSpacesInBothDirections) {
+  auto [coarseSide, fineSide] = meshPair(GetParam());
   const auto& coarseMesh = coarseSide->build();
   const auto& fineMesh = fineSide->build();
   Vector uc(coarseMesh.ownedMap());
@@ -135,16 +141,7 @@ TEST_P(TransferOnQuadrilateralsTest, StiffnessLoadsAreKTimesAFieldOfBothSpaces) 
   // Coarse -> fine on every coarse mesh (each new cell lies in an old one: its own element matrix);
   // fine -> coarse where the element matrices are exact (parallelograms), since on distorted cells
   // the 2 x 2 Gauss rule of a cell is not the sum of its children's.
-  const std::vector<std::pair<std::string, std::string>> sides = {{"all", "boundary"}};
-  const auto coarse = GetParam() == Coarse::Rectangles       ? nullptr
-                      : GetParam() == Coarse::RotatedSquares ? test::rotatedSquares()
-                                                             : test::distortedSquare();
-  auto side = [&]() {
-    return coarse ? std::make_unique<test::TestMesh>(coarse, sides, 1)
-                  : std::make_unique<test::TestMesh>(0.0, 1.0, 0.0, 1.0, 2, 2, 1);
-  };
-  auto coarseSide = side(), fineSide = side();
-  fineSide->refineCorner();
+  auto [coarseSide, fineSide] = meshPair(GetParam());
   const auto& coarseMesh = coarseSide->build();
   const auto& fineMesh = fineSide->build();
   const std::array<std::function<double(double, double)>, 2> field = {
