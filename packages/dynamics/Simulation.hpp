@@ -35,9 +35,11 @@ struct RunSummary {
   /// \var transferEnergyChange
   /// With PassOptions::reportTransferEnergy: the change of the energy (kinetic + strain) by the
   /// transfers between the step meshes, summed over the mesh changes [energy per unit thickness].
+  /// \var transferEnergyRise
+  /// The same summed over the mesh changes that raised the energy only.
   /// \var largestEnergy
   /// With PassOptions::reportTransferEnergy: the largest energy (kinetic + strain) of a step.
-  double transferEnergyChange = 0, largestEnergy = 0;
+  double transferEnergyChange = 0, transferEnergyRise = 0, largestEnergy = 0;
 };
 
 /// What a per-step hook sees right after step n was solved (references valid during the call).
