@@ -893,12 +893,12 @@ struct Simulation::Impl {
       b->update(mu, *rhs[0], 1.0);  // rhs[0]: the L2 projection's rho int u_old phi
       to.assembler->zeroDirichlet(*b);
       auto ritz = to.assembler->assembleSystem(mu, 1.0, *problem);
-      // CG from the L2 projection, whose difference from R u is local to the coarsened cells (high
-      // frequencies): Jacobi ("auto") took a third to a fifth of MueLu's time on the bar and a bracket.
-      // With MueLu (when the deck asks for it) symmetric Gauss-Seidel, not the deck's smoother:
-      // Chebyshev's estimate of the largest eigenvalue fell short on a free body's K + mu M.
+      // CG from the L2 projection; "auto" takes MueLu (Jacobi in reproducible arithmetic): Jacobi took
+      // a third to a fifth of MueLu's time on meshes of 500-3,000 unknowns (a bracket, the bar's
+      // cycle 1) but twice as long on the bar's last cycle (20,000). MueLu with symmetric
+      // Gauss-Seidel, not the deck's smoother: Chebyshev's estimate of the largest eigenvalue fell
+      // short on a free body's K + mu M, and its keys are refused by the relaxation.
       auto params = deck.sublist("Linear Solver");
-      if (params.get<std::string>("Preconditioner") == "auto") params.set("Preconditioner", "Jacobi");
       params.set("MueLu", core::ParameterList());
       params.sublist("MueLu").set("smoother: type", "RELAXATION");
       params.sublist("MueLu").sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
@@ -906,7 +906,7 @@ struct Simulation::Impl {
       solver.setSystemName("the Ritz projection's K + mu M on the new mesh (Adaptivity/Transfer)");
       if (auto* elasticity = dynamic_cast<const fem::ElasticityAssembler*>(to.assembler.get()))
         solver.setNearNullspace(elasticity->rigidBodyModes(), 2);
-      solver.setOperator(ritz, core::kInf);
+      solver.setOperator(ritz, core::kInf);  // "auto": MueLu (K dominates)
       try {
         solver.solve(*b, *fields[0]);  // from the L2 projection
       } catch (const core::SolverError& e) {

@@ -436,7 +436,7 @@ TEST(AdaptiveTransfer, TheL2ProjectionNeverRaisesTheKineticEnergyWhileInterpolat
 // The Ritz projection of u (Adaptivity/Transfer = Ritz projection) is the orthogonal projection in
 // a(., .) + mu (rho ., .): with the L2 projection of v it raises neither the kinetic nor (beyond
 // mu's small share) the strain energy at any mesh change, on 2 ranks, for the membrane (reproducible
-// arithmetic: the ordered Jacobi CG) and the bar (Jacobi CG). The L2 projection of u raises the
+// arithmetic: the ordered Jacobi CG) and the bar (MueLu, rigid body modes). The L2 projection of u raises the
 // strain energy by about a(P u - u, P u - u) where a step's mesh is coarser: the control.
 TEST(AdaptiveTransfer, TheRitzProjectionRaisesNoEnergyWhileTheL2ProjectionRaisesTheStrainEnergy) {
   auto world = Tpetra::getDefaultComm();

@@ -388,8 +388,8 @@ signorini_add_driver_test(floating_body_cg_breakdown EXIT 1 NP 1  # on 2 ranks C
 signorini_add_driver_test(muelu_chebyshev_on_graded_trapezoids EXIT 0 NP 1
   ARGS --output-dir {OUT} ${decks}/bracket-push.xml
   REGEX "cycle 1: total unknowns" FILES bracket-push.steps.csv bracket-push.cycle0.steps.csv bracket-push.cycles.csv)
-# The Ritz projection with MueLu (the deck's Preconditioner) takes symmetric Gauss-Seidel, not the
-# deck's smoother or its Chebyshev keys (which Ifpack2's relaxation refused at set-up).
+# The Ritz projection's MueLu takes symmetric Gauss-Seidel, not the deck's smoother or its
+# Chebyshev keys (which Ifpack2's relaxation refused at set-up).
 signorini_add_driver_test(ritz_transfer_with_muelu EXIT 0 NP 1
   ARGS --output-dir {OUT} --set "Adaptivity/Transfer=Ritz projection"
        --set "Linear Solver/MueLu/smoother: params/chebyshev: eigenvalue max iterations=30" ${decks}/bracket-push.xml
@@ -411,7 +411,7 @@ signorini_add_driver_test(transfer_energy_warning EXIT 0 NP 1
   ABSENT "warning: cycle 0"
   FILES bracket-drop.steps.csv bracket-drop.cycle0.steps.csv bracket-drop.cycles.csv)
 # The Ritz projection of u cannot raise the energy: the same run loses it instead (its solves with
-# K + mu M of the free bracket by Jacobi CG; with MueLu's Chebyshev smoother CG broke down).
+# K + mu M of the free bracket by MueLu with symmetric Gauss-Seidel; with Chebyshev CG broke down).
 signorini_add_driver_test(transfer_energy_warning_ritz EXIT 0 NP 1
   ARGS --output-dir {OUT} --set "Adaptivity/Transfer=Ritz projection" ${decks}/bracket-drop.xml
   REGEX "warning: cycle 1: moving the state to each step's mesh lowered its energy [(]kinetic [+] strain[)] by [0-9.]+ summed over the cycle's mesh changes that lowered it .* net -[0-9.]+ .* the coarser parts of the step meshes cannot hold the finer scales"
