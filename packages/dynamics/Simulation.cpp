@@ -892,7 +892,11 @@ struct Simulation::Impl {
       auto b = nc == 1 ? parts[0] : interleave(parts, to.assembler->ownedMap());
       b->update(mu, *rhs[0], 1.0);  // rhs[0]: the L2 projection's rho int u_old phi
       to.assembler->zeroDirichlet(*b);
-      auto ritz = to.assembler->assembleSystem(mu, 1.0, *problem);
+      // From the values of the new mesh's M and K (one graph); assembled where they share none (the
+      // consistent mass of a lumped boundary mass).
+      RCP<const CrsMatrix> ritz =
+          fem::combineOnGraph(*projectionMass(to), mu, *to.K, 1.0, to.assembler->dirichletFlags());
+      if (ritz.is_null()) ritz = to.assembler->assembleSystem(mu, 1.0, *problem);
       // CG from the L2 projection; "auto" takes MueLu (Jacobi in reproducible arithmetic): Jacobi took
       // a third to a fifth of MueLu's time on meshes of 500-3,000 unknowns (a bracket, the bar's
       // cycle 1) but twice as long on the bar's last cycle (20,000). MueLu with symmetric
