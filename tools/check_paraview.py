@@ -14,7 +14,8 @@ step table:
   - the nodal variables (u, v, a; elasticity's u_x, u_y, ... as the vectors u, v, a), the cell
     variables (level; indicator in adaptive runs; the stresses sigma_xx, sigma_yy, sigma_xy,
     sigma_zz, von_mises and the strains eps_xx, eps_yy, eps_xy for elasticity) and, on the side set `contact`, lambda and gap
-    equal the file's values bit for bit; the side set's edges are boundary edges of the mesh;
+    equal the file's values bit for bit; the side set's edges are boundary edges of the mesh, as are
+    those of the other side sets (the deck's boundary segments), whose sides are the file's;
     min/max lambda and min gap are the table's, and -sum lambda |E| its contact_force;
   - every column of the table but step, t and the timings is a global variable whose value at
     each time is the table's, also through Filters > Plot Global Variables Over Time.
@@ -134,9 +135,9 @@ def read_series(first):
         y = np.array(ds.variables["coordy"][:], dtype=float)
         conn = np.array(ds.variables["connect1"][:], dtype=np.int64) if "connect1" in ds.variables else None
         ss = sets.index("contact") + 1 if "contact" in sets else None
-        side_keys = None
-        if ss is not None:
-            side_keys = list(zip(ds.variables["elem_ss%d" % ss][:].tolist(), ds.variables["side_ss%d" % ss][:].tolist()))
+        set_keys = {name: list(zip(ds.variables["elem_ss%d" % (i + 1)][:].tolist(), ds.variables["side_ss%d" % (i + 1)][:].tolist()))
+                    for i, name in enumerate(sets)}
+        side_keys = set_keys.get("contact")
         for k, t in enumerate(ds.variables["time_whole"][:].tolist()):
             s = FileStep()
             s.path, s.t, s.num_nodes, s.num_elem, s.x, s.y, s.conn = path, float(t), num_nodes, num_elem, x, y, conn
@@ -144,6 +145,7 @@ def read_series(first):
             s.nodal = {n: np.array(ds.variables["vals_nod_var%d" % (i + 1)][k], dtype=float) for i, n in enumerate(nodal)}
             s.cell = {n: np.array(ds.variables["vals_elem_var%deb1" % (i + 1)][k], dtype=float) for i, n in enumerate(cell)}
             s.side_keys = side_keys
+            s.set_keys = set_keys
             s.side = {}
             if ss is not None:
                 s.side = {n: np.array(ds.variables["vals_sset_var%dss%d" % (i + 1, ss)][k], dtype=float)
@@ -203,7 +205,7 @@ if not legacy and xml_name != "IOSSReader":
     fail("%s: ParaView opens it with %s, not an Exodus reader" % (exodus_path, xml_name))
 
 if legacy:
-    reader.SideSetArrayStatus = ["contact"] if "contact" in reader.SideSetArrayStatus.Available else []
+    reader.SideSetArrayStatus = reader.SideSetArrayStatus.Available  # contact and the deck's boundary segments
     reader.SideSetResultArrayStatus = reader.SideSetResultArrayStatus.Available
     reader.PointVariables = reader.PointVariables.Available
     reader.ElementVariables = reader.ElementVariables.Available
@@ -214,7 +216,7 @@ else:
     side_sets = list(reader.GetProperty("SideSetInfo")[0::2]) if reader.GetProperty("SideSetInfo") else []
     if file_steps[0].side_keys is not None and "contact" not in side_sets:
         fail("the reader lists no side set 'contact' (Side Sets: %s)" % side_sets)
-    reader.SideSets = ["contact"] if "contact" in side_sets else []
+    reader.SideSets = side_sets
     reader.SideSetFields = list(reader.GetProperty("SideSetFieldInfo")[0::2])
     reader.NodeBlockFields = list(reader.GetProperty("NodeBlockFieldInfo")[0::2])
     reader.ElementBlockFields = list(reader.GetProperty("ElementBlockFieldInfo")[0::2])
@@ -236,7 +238,7 @@ def arrays(attributes):
 
 
 def fetch(t):
-    """The domain block, the contact side set block (or None) and the global field data at t."""
+    """The domain block, the blocks by name and the global field data at t."""
     reader.UpdatePipeline(t)
     out = reader.GetClientSideObject().GetOutputDataObject(0)
     blocks = {}
@@ -257,9 +259,48 @@ def fetch(t):
     if "domain" not in blocks:
         fail("t = %s: no element block 'domain' in ParaView's output (blocks: %s)" % (fmt(t), sorted(blocks)))
     domain = blocks["domain"][0]
-    contact = blocks.get("contact", [None])[0]
     field = domain.GetFieldData() if legacy else out.GetFieldData()
-    return domain, contact, arrays(field)
+    return domain, {name: parts[0] for name, parts in blocks.items()}, arrays(field)
+
+
+def check_side_block(where, name, block, keys_in_file, conn):
+    """Checks that ParaView's block of side set `name` holds the file's (element, side) pairs and
+    that its cells are boundary edges of the mesh (an edge beside hanging nodes counts too).
+    Returns the order of the file's sides in the block's cells and the cells' lengths."""
+    if block is None:
+        fail("%s: the side set '%s' is selected but ParaView shows no block '%s'" % (where, name, name))
+    nsides = block.GetNumberOfCells()
+    if nsides != len(keys_in_file):
+        fail("%s: side set %s has %d cells in ParaView, %d sides in the file" % (where, name, nsides, len(keys_in_file)))
+    scd = arrays(block.GetCellData())
+    if legacy:
+        keys = list(zip((vtk_to_numpy(scd["SourceElementId"]) + 1).tolist(), (vtk_to_numpy(scd["SourceElementSide"]) + 1).tolist()))
+    else:
+        keys = [tuple(k) for k in vtk_to_numpy(scd["element_side"]).tolist()]
+    if sorted(keys) != sorted(keys_in_file):
+        fail("%s: side set %s's (element, side) pairs in ParaView are not the file's" % (where, name))
+    position = {k: j for j, k in enumerate(keys_in_file)}
+    order = np.array([position[k] for k in keys], dtype=np.int64)
+    spd = arrays(block.GetPointData())
+    side_node = vtk_to_numpy(spd["GlobalNodeId" if legacy else "ids"]).astype(np.int64) - 1
+    edges = {}
+    if conn is not None:
+        for quad in conn.tolist():
+            for k in range(4):
+                e = frozenset((quad[k] - 1, quad[(k + 1) % 4] - 1))
+                edges[e] = edges.get(e, 0) + 1
+    lengths = np.zeros(nsides)
+    for j in range(nsides):
+        cell = block.GetCell(j)
+        if cell.GetNumberOfPoints() != 2:
+            fail("%s: side set %s's cell %d has %d points, not 2" % (where, name, j, cell.GetNumberOfPoints()))
+        p0, p1 = cell.GetPointId(0), cell.GetPointId(1)
+        e = frozenset((int(side_node[p0]), int(side_node[p1])))
+        if edges and edges.get(e) != 1:
+            fail("%s: side set %s's edge %d (nodes %s) is not on the mesh's boundary" % (where, name, j, sorted(n + 1 for n in e)))
+        q0, q1 = block.GetPoint(p0), block.GetPoint(p1)
+        lengths[j] = math.hypot(q1[0] - q0[0], q1[1] - q0[1])
+    return order, lengths
 
 
 def vector_groups(names):
@@ -363,9 +404,10 @@ if adaptive != ("indicator" in file_steps[0].cell):
 
 meshes = set()
 side_counts = set()
+segment_sets = set()
 for i, (t, s, row) in enumerate(zip(pv_times, file_steps, out_rows)):
     where = "t = %s (step %s, %s)" % (fmt(t), row["step"], os.path.basename(s.path))
-    domain, contact, field = fetch(t)
+    domain, blocks, field = fetch(t)
     npts, ncells = domain.GetNumberOfPoints(), domain.GetNumberOfCells()
     if npts != s.num_nodes or ncells != s.num_elem:
         fail("%s: ParaView shows %d points and %d cells, the file has %d and %d" % (where, npts, ncells, s.num_nodes, s.num_elem))
@@ -410,46 +452,20 @@ for i, (t, s, row) in enumerate(zip(pv_times, file_steps, out_rows)):
         if not same(shown, s.globals[name]) or not same(shown, float(row[name])):
             fail("%s: global %s is %s in ParaView, %s in the file, %s in the steps table"
                  % (where, name, fmt(shown), fmt(s.globals[name]), row[name]))
+    # The deck's boundary segments (supports, loads): side sets without variables.
+    for name, keys_in_file in s.set_keys.items():
+        if name != "contact":
+            check_side_block(where, name, blocks.get(name), keys_in_file, s.conn)
+            segment_sets.add(name)
     if s.side_keys is None:
         continue
-    if contact is None:
-        fail("%s: the side set 'contact' is selected but ParaView shows no block 'contact'" % where)
-    nsides = contact.GetNumberOfCells()
-    side_counts.add(nsides)
-    if nsides != len(s.side_keys):
-        fail("%s: side set contact has %d cells in ParaView, %d sides in the file" % (where, nsides, len(s.side_keys)))
+    contact = blocks.get("contact")
+    order, lengths = check_side_block(where, "contact", contact, s.side_keys, s.conn)
+    side_counts.add(len(s.side_keys))
     scd = arrays(contact.GetCellData())
-    if legacy:
-        keys = list(zip((vtk_to_numpy(scd["SourceElementId"]) + 1).tolist(), (vtk_to_numpy(scd["SourceElementSide"]) + 1).tolist()))
-    else:
-        keys = [tuple(k) for k in vtk_to_numpy(scd["element_side"]).tolist()]
-    position = {k: j for j, k in enumerate(s.side_keys)}
-    if sorted(keys) != sorted(s.side_keys):
-        fail("%s: side set contact's (element, side) pairs in ParaView are not the file's" % where)
-    order = np.array([position[k] for k in keys], dtype=np.int64)
     for name, expected in s.side.items():
         a, _ = find_array(scd, name, [name], where + ", side set contact")
         compare("%s: side set contact %s" % (where, name), vtk_to_numpy(a).astype(float), expected[order])
-    # The side set's edges: boundary edges of the mesh (an edge beside hanging nodes counts too).
-    spd = arrays(contact.GetPointData())
-    side_node = vtk_to_numpy(spd["GlobalNodeId" if legacy else "ids"]).astype(np.int64) - 1
-    edges = {}
-    if s.conn is not None:
-        for quad in s.conn.tolist():
-            for k in range(4):
-                e = frozenset((quad[k] - 1, quad[(k + 1) % 4] - 1))
-                edges[e] = edges.get(e, 0) + 1
-    lengths = np.zeros(nsides)
-    for j in range(nsides):
-        cell = contact.GetCell(j)
-        if cell.GetNumberOfPoints() != 2:
-            fail("%s: side set contact's cell %d has %d points, not 2" % (where, j, cell.GetNumberOfPoints()))
-        p0, p1 = cell.GetPointId(0), cell.GetPointId(1)
-        e = frozenset((int(side_node[p0]), int(side_node[p1])))
-        if edges and edges.get(e) != 1:
-            fail("%s: side set contact's edge %d (nodes %s) is not on the mesh's boundary" % (where, j, sorted(n + 1 for n in e)))
-        q0, q1 = contact.GetPoint(p0), contact.GetPoint(p1)
-        lengths[j] = math.hypot(q1[0] - q0[0], q1[1] - q0[1])
     lam = vtk_to_numpy(find_array(scd, "lambda", ["lambda"], where)[0]).astype(float)
     gap = vtk_to_numpy(find_array(scd, "gap", ["gap"], where)[0]).astype(float)
     for label, value, column in (("min lambda", lam.min(), "min_lambda"), ("max lambda", lam.max(), "max_lambda"),
@@ -493,10 +509,11 @@ for name in table_globals:
 
 cells = sorted(c for _, c in meshes)
 print("check_paraview: OK: %s: %s reader, %d time steps t = %s..%s from %d file(s) (Exodus Interval %d), "
-      "%d distinct mesh size(s), %s..%s cells; nodal %s%s; cell %s; %s; "
+      "%d distinct mesh size(s), %s..%s cells; nodal %s%s; cell %s; %s%s; "
       "%d global variables over time" % (
           exodus_path, "legacy ExodusII" if legacy else "IOSS", len(pv_times), fmt(pv_times[0]), fmt(pv_times[-1]),
           len(files), interval, len(meshes), cells[0], cells[-1], ",".join(nodal_groups),
           " (vectors " + ",".join(vector_names) + ")" if vector_names else "", ",".join(file_steps[0].cell),
           ("side set contact (%s..%s sides) with %s" % (min(side_counts), max(side_counts), ",".join(file_steps[0].side)))
-          if side_counts else "no side set contact (no contact boundary)", len(table_globals)))
+          if side_counts else "no side set contact (no contact boundary)",
+          ", side sets " + ",".join(sorted(segment_sets)) if segment_sets else "", len(table_globals)))

@@ -32,8 +32,18 @@ std::vector<T> gatherToRoot(const Comm& comm, const std::vector<T>& mine, MPI_Da
 
 ResultWriter::ResultWriter(const std::string& basePath, std::vector<std::string> nodalNames,
                            std::vector<std::string> cellNames, std::vector<std::string> contactNames,
-                           io::ExodusDescription description, RCP<const Comm> comm)
-    : comm_(comm), numNodal_(nodalNames.size()), numCell_(cellNames.size()), numContact_(contactNames.size()) {
+                           io::ExodusDescription description, RCP<const Comm> comm, std::vector<std::string> segmentSets)
+    : comm_(comm),
+      numNodal_(nodalNames.size()),
+      numCell_(cellNames.size()),
+      numContact_(contactNames.size()),
+      segmentSets_(std::move(segmentSets)) {
+  SIGNORINI_ASSERT(segmentSets_.size() <= 32, "ResultWriter: more segments than bits of a segment mask");
+  for (size_t i = 0; i < segmentSets_.size(); ++i)
+    if (!segmentSets_[i].empty()) {
+      SIGNORINI_ASSERT(segmentSets_[i] != "contact", "ResultWriter: a segment's side set may not be named 'contact'");
+      segmentMask_ |= 1u << i;
+    }
   if (comm_->getRank() == 0)
     writer_ = std::make_unique<io::ExodusSeriesWriter>(basePath, nodalNames, cellNames, "contact", contactNames,
                                                        std::move(description));
@@ -83,6 +93,13 @@ void ResultWriter::write(long meshId, const mesh::Q1Mesh& mesh, double time, con
     edgeInfo.push_back(faceToSide[be.face]);
     for (size_t f = 0; f < numContact_; ++f) edgeValues.push_back(contact[f][i]);
   }
+  std::vector<long long> segmentEdges;  // (cell, side, segment mask) of the edges of the written segments
+  for (const auto& be : mesh.boundaryEdges())
+    if (be.segments & segmentMask_) {
+      segmentEdges.push_back(be.cell);
+      segmentEdges.push_back(faceToSide[be.face]);
+      segmentEdges.push_back(be.segments & segmentMask_);
+    }
   std::vector<int> cellCounts;
   const auto allCoords = gatherToRoot(*comm_, coords, MPI_DOUBLE, &cellCounts);
   const auto allKeys = gatherToRoot(*comm_, keys, MPI_LONG_LONG);
@@ -91,6 +108,8 @@ void ResultWriter::write(long meshId, const mesh::Q1Mesh& mesh, double time, con
   std::vector<int> edgeCounts;
   const auto allEdges = gatherToRoot(*comm_, edgeInfo, MPI_LONG_LONG, &edgeCounts);
   const auto allEdgeValues = gatherToRoot(*comm_, edgeValues, MPI_DOUBLE);
+  std::vector<int> segmentEdgeCounts;
+  const auto allSegmentEdges = gatherToRoot(*comm_, segmentEdges, MPI_LONG_LONG, &segmentEdgeCounts);
   // Rank 0 writes; a failure there (file not creatable, disk full) ends the run on every rank.
   core::onRootCollectively(*comm_, [&] {
     io::QuadMesh out;
@@ -135,6 +154,15 @@ void ResultWriter::write(long meshId, const mesh::Q1Mesh& mesh, double time, con
       for (int k = 0; k < edgeCounts[r] / 2; ++k, ++pos) {
         sides.push_back({static_cast<int>(cellOffset[r] + allEdges[2 * pos]), static_cast<int>(allEdges[2 * pos + 1])});
         for (size_t f = 0; f < numContact_; ++f) sideOut[f].push_back(allEdgeValues[numContact_ * pos + f]);
+      }
+    pos = 0;
+    for (size_t r = 0; r < segmentEdgeCounts.size(); ++r)
+      for (int k = 0; k < segmentEdgeCounts[r] / 3; ++k, ++pos) {
+        const std::array<int, 2> entry{static_cast<int>(cellOffset[r] + allSegmentEdges[3 * pos]),
+                                       static_cast<int>(allSegmentEdges[3 * pos + 1])};
+        const auto mask = static_cast<unsigned>(allSegmentEdges[3 * pos + 2]);
+        for (size_t i = 0; i < segmentSets_.size(); ++i)
+          if (mask & (1u << i)) out.sideSets[segmentSets_[i]].push_back(entry);
       }
     writer_->write(meshId, out, time, nodalOut, cellOut, sideOut, globals);
   });

@@ -18,9 +18,12 @@ class ResultWriter {
  public:
   /// \p basePath: output folder and basename ("out/membrane"); the field names of the nodal, cell and
   /// contact side-set variables; \p description: title, info records and global variable names of
-  /// every file (rank 0's counts).
+  /// every file (rank 0's counts); \p segmentSets: the name of the side set that shows boundary
+  /// segment i (mesh::BoundaryEdge::segments bit i; "" for none), written besides "contact"
+  /// (supports, loads).
   ResultWriter(const std::string& basePath, std::vector<std::string> nodalNames, std::vector<std::string> cellNames,
-               std::vector<std::string> contactNames, io::ExodusDescription description, RCP<const Comm> comm);
+               std::vector<std::string> contactNames, io::ExodusDescription description, RCP<const Comm> comm,
+               std::vector<std::string> segmentSets = {});
   /// Appends output time \p time [time] on \p mesh; a new \p meshId starts a new file of the series.
   /// \param meshId       differs between any two meshes of the run
   /// \param mesh         the step's Q1 numbering
@@ -41,6 +44,8 @@ class ResultWriter {
   RCP<const Comm> comm_;
   std::unique_ptr<io::ExodusSeriesWriter> writer_;
   size_t numNodal_, numCell_, numContact_;
+  std::vector<std::string> segmentSets_;
+  unsigned segmentMask_ = 0;  ///< the segments that get a side set
 };
 
 }  // namespace signorini::dynamics

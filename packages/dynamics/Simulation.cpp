@@ -1602,10 +1602,17 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
                         "the deck as run (defaults and command-line overrides included):"};
     std::istringstream lines(core::deckAsXml(I.deck));
     for (std::string line; std::getline(lines, line);) description.info.push_back(line);
+    // Each boundary segment of the deck is a side set named after it (ParaView shows supports and
+    // loads); one named "contact" that is all of Gamma_C is the set "contact" itself.
+    std::vector<std::string> segmentSets;
+    for (int i = 0; i < I.segments->size(); ++i) {
+      const std::string& name = I.segments->name(i);
+      segmentSets.push_back(name != "contact" ? name : I.problem->contactMask == (1u << i) ? "" : "contact segment");
+    }
     exodus = std::make_unique<ResultWriter>(base, nc == 1 ? std::vector<std::string>{"u", "v", "a"}
                                                           : std::vector<std::string>{"u_x", "u_y", "v_x", "v_y", "a_x", "a_y"},
                                             cellNames, std::vector<std::string>{"lambda", "gap"}, std::move(description),
-                                            I.comm);
+                                            I.comm, std::move(segmentSets));
   }
 
   RunSummary summary;

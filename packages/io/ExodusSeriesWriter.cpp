@@ -60,7 +60,8 @@ struct ExodusSeriesWriter::Impl {
   long meshId = 0;
   std::string finalPath, partPath;
   core::RemovedOnSignal partRemovedOnSignal;  ///< the file being written goes with a Ctrl-C at once
-  std::size_t numNodes = 0, numCells = 0, numSides = 0;
+  std::size_t numNodes = 0, numCells = 0, numSides = 0;  ///< numSides: of the set carrying the side variables
+  std::size_t numSetSides = 0;  ///< of all side sets
   int numSteps = 0;
 
   long filesStarted = 0;  ///< index of the next file in the series
@@ -105,6 +106,14 @@ struct ExodusSeriesWriter::Impl {
     numCells = mesh.quads.size();
     const auto sideSet = mesh.sideSets.find(sideSetName);
     numSides = sideSet == mesh.sideSets.end() ? 0 : sideSet->second.size();
+    // Side sets of the file: the one carrying the side variables first (id 1, as readers of the
+    // series expect), then every other non-empty set of the mesh (ids 2, 3, ...).
+    std::vector<std::pair<std::string, const std::vector<std::array<int, 2>>*>> sets;
+    if (numSides > 0) sets.emplace_back(sideSetName, &sideSet->second);
+    for (const auto& [name, sides] : mesh.sideSets)
+      if (name != sideSetName && !sides.empty()) sets.emplace_back(name, &sides);
+    numSetSides = 0;
+    for (const auto& set : sets) numSetSides += set.second->size();
 
     // Definitions first: netCDF classic files rewrite everything written after the header
     // whenever the header grows, so all dimensions and variables are defined before any data.
@@ -112,13 +121,13 @@ struct ExodusSeriesWriter::Impl {
     allNames.insert(allNames.end(), cellNames.begin(), cellNames.end());
     allNames.insert(allNames.end(), sideNames.begin(), sideNames.end());
     allNames.insert(allNames.end(), description.globalNames.begin(), description.globalNames.end());
-    allNames.push_back(sideSetName);
+    for (const auto& set : sets) allNames.push_back(set.first);
     const auto nameLength = longestName(allNames);
     if (nameLength > static_cast<std::size_t>(MAX_NAME_LENGTH)) {
       check(ex_set_max_name_length(exoid, static_cast<int>(nameLength)), "ex_set_max_name_length");
     }
     check(ex_put_init(exoid, description.title.substr(0, MAX_LINE_LENGTH).c_str(), 2, static_cast<int64_t>(numNodes),
-                      static_cast<int64_t>(numCells), 1, 0, numSides > 0 ? 1 : 0),
+                      static_cast<int64_t>(numCells), 1, 0, static_cast<int64_t>(sets.size())),
           "ex_put_init");
     putRecords();
     std::vector<std::string> coordinateNames{"x", "y"};
@@ -127,15 +136,16 @@ struct ExodusSeriesWriter::Impl {
                        0),
           "ex_put_block");
     check(ex_put_name(exoid, EX_ELEM_BLOCK, 1, "domain"), "ex_put_name(element block)");
-    if (numSides > 0) {
-      check(ex_put_set_param(exoid, EX_SIDE_SET, 1, static_cast<int64_t>(numSides), 0),
+    for (std::size_t i = 0; i < sets.size(); ++i) {
+      const auto id = static_cast<int64_t>(i + 1);
+      check(ex_put_set_param(exoid, EX_SIDE_SET, id, static_cast<int64_t>(sets[i].second->size()), 0),
             "ex_put_set_param");
-      check(ex_put_name(exoid, EX_SIDE_SET, 1, sideSetName.c_str()), "ex_put_name(side set)");
+      check(ex_put_name(exoid, EX_SIDE_SET, id, sets[i].first.c_str()), "ex_put_name(side set)");
     }
     defineVariables(EX_GLOBAL, description.globalNames);
     defineVariables(EX_NODAL, nodalNames);
     defineVariables(EX_ELEM_BLOCK, cellNames);
-    if (numSides > 0) defineVariables(EX_SIDE_SET, sideNames);
+    if (numSides > 0) defineVariables(EX_SIDE_SET, sideNames, static_cast<int>(sets.size()));
 
     // Mesh data.
     check(ex_put_coord(exoid, mesh.x.data(), mesh.y.data(), nullptr), "ex_put_coord");
@@ -145,13 +155,14 @@ struct ExodusSeriesWriter::Impl {
     }
     check(ex_put_conn(exoid, EX_ELEM_BLOCK, 1, connectivity.data(), nullptr, nullptr),
           "ex_put_conn");
-    if (numSides > 0) {
-      std::vector<int> elements(numSides), sides(numSides);
-      for (std::size_t i = 0; i < numSides; ++i) {
-        elements[i] = sideSet->second[i][0] + 1;
-        sides[i] = sideSet->second[i][1] + 1;
+    for (std::size_t i = 0; i < sets.size(); ++i) {
+      const auto& entries = *sets[i].second;
+      std::vector<int> elements(entries.size()), sides(entries.size());
+      for (std::size_t j = 0; j < entries.size(); ++j) {
+        elements[j] = entries[j][0] + 1;
+        sides[j] = entries[j][1] + 1;
       }
-      check(ex_put_set(exoid, EX_SIDE_SET, 1, elements.data(), sides.data()), "ex_put_set");
+      check(ex_put_set(exoid, EX_SIDE_SET, static_cast<int64_t>(i + 1), elements.data(), sides.data()), "ex_put_set");
     }
     clearTextBehindNul();
   }
@@ -214,16 +225,18 @@ struct ExodusSeriesWriter::Impl {
       check(ex_put_info(exoid, static_cast<int>(lines.size()), namePointers(lines).data()), "ex_put_info");
   }
 
-  /// Declares result variables of one kind; blocks and sets get an all-true truth table.
-  void defineVariables(ex_entity_type type, std::vector<std::string> names) {
+  /// Declares result variables of one kind. Of \p numEntities blocks or sets, the first carries
+  /// them all (its row of the truth table is true, the others' false).
+  void defineVariables(ex_entity_type type, std::vector<std::string> names, int numEntities = 1) {
     if (names.empty()) return;
     const int count = static_cast<int>(names.size());
     check(ex_put_variable_param(exoid, type, count), "ex_put_variable_param");
     check(ex_put_variable_names(exoid, type, count, namePointers(names).data()),
           "ex_put_variable_names");
     if (type != EX_NODAL && type != EX_GLOBAL) {
-      std::vector<int> truthTable(names.size(), 1);  // one block or set
-      check(ex_put_truth_table(exoid, type, 1, count, truthTable.data()), "ex_put_truth_table");
+      std::vector<int> truthTable(names.size() * static_cast<std::size_t>(numEntities), 0);
+      std::fill(truthTable.begin(), truthTable.begin() + count, 1);
+      check(ex_put_truth_table(exoid, type, numEntities, count, truthTable.data()), "ex_put_truth_table");
     }
   }
 
@@ -263,11 +276,12 @@ struct ExodusSeriesWriter::Impl {
     }
     const auto sideSet = mesh.sideSets.find(sideSetName);
     const std::size_t sidesInMesh = sideSet == mesh.sideSets.end() ? 0 : sideSet->second.size();
-    if (sideSet != mesh.sideSets.end()) {
-      for (const auto& entry : sideSet->second) {
+    for (const auto& [name, sides] : mesh.sideSets) {
+      if (name.empty()) fail("a side set has no name");
+      for (const auto& entry : sides) {
         if (entry[0] < 0 || static_cast<std::size_t>(entry[0]) >= mesh.quads.size() ||
             entry[1] < 0 || entry[1] > 3) {
-          fail("side set '" + sideSetName + "' has an invalid (quad, side) entry");
+          fail("side set '" + name + "' has an invalid (quad, side) entry");
         }
       }
     }
@@ -355,8 +369,10 @@ void ExodusSeriesWriter::write(long meshId, const QuadMesh& mesh, double time,
   if (!newMesh) {
     const auto sideSet = mesh.sideSets.find(w.sideSetName);
     const std::size_t sidesInMesh = sideSet == mesh.sideSets.end() ? 0 : sideSet->second.size();
+    std::size_t setSides = 0;
+    for (const auto& set : mesh.sideSets) setSides += set.second.size();
     if (mesh.x.size() != w.numNodes || mesh.quads.size() != w.numCells ||
-        sidesInMesh != w.numSides) {
+        sidesInMesh != w.numSides || setSides != w.numSetSides) {
       throw std::logic_error("ExodusSeriesWriter::write: mesh " + std::to_string(meshId) +
                              " changed size without a new mesh id");
     }

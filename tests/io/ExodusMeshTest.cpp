@@ -186,6 +186,44 @@ TEST_F(ExodusMeshTest, RoundTripKeepsMeshSideSetAndValues) {
   ex_close(exoid);
 }
 
+TEST_F(ExodusMeshTest, OtherSideSetsFollowTheContactSetWithoutVariables) {
+  // "a" sorts before "contact": the set carrying the side variables is still side set 1.
+  QuadMesh mesh = stripMesh(3);
+  mesh.sideSets["a support"] = {{0, 3}};
+  mesh.sideSets["load"] = {{0, 2}, {1, 2}, {2, 2}};
+  mesh.sideSets["unused"] = {};
+  std::vector<std::string> files;
+  {
+    auto writer = makeWriter(path("sets"));
+    for (double t : {0.0, 0.5}) writeStep(writer, 1, mesh, t);
+    files = writer.close();
+  }
+  ASSERT_EQ(files.size(), 1u);
+  QuadMesh expected = mesh;
+  expected.sideSets.erase("unused");  // empty sets are left out
+  EXPECT_EQ(readExodusQuadMesh(files[0]).sideSets, expected.sideSets);
+
+  const int exoid = openForCheck(files[0]);
+  EXPECT_EQ(ex_inquire_int(exoid, EX_INQ_SIDE_SETS), 3);
+  std::vector<int> ids(3);  // the file's ids are 32-bit
+  ASSERT_GE(ex_get_ids(exoid, EX_SIDE_SET, ids.data()), 0);
+  EXPECT_EQ(ids, (std::vector<int>{1, 2, 3}));
+  char name[MAX_STR_LENGTH + 1] = {};
+  std::vector<std::string> names;
+  for (const int id : ids) {
+    EXPECT_GE(ex_get_name(exoid, EX_SIDE_SET, id, name), 0);
+    names.emplace_back(name);
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"contact", "a support", "load"}));
+  std::vector<int> truth(3, -1);  // sets x side variables (lambda)
+  ASSERT_GE(ex_get_truth_table(exoid, EX_SIDE_SET, 3, 1, truth.data()), 0);
+  EXPECT_EQ(truth, (std::vector<int>{1, 0, 0}));
+  std::vector<double> lambda(3);
+  EXPECT_GE(ex_get_var(exoid, 2, EX_SIDE_SET, 1, 1, 3, lambda.data()), 0);
+  EXPECT_EQ(lambda, filled(3, -0.5));
+  ex_close(exoid);
+}
+
 TEST_F(ExodusMeshTest, MeshChangeWritesSeriesParaViewGroups) {
   std::vector<std::string> files;
   {
