@@ -114,7 +114,13 @@ core::ParameterList AdaptiveSimulation::getValidParameters() {
                   0.0, std::numeric_limits<double>::infinity());
   core::addInt(a, "Cycles", 5, "Number of passes over [0, T] (each pass is one cycle of Algorithm 5.1)", 1, 100);
   core::addDouble(a, "Maximum Total Unknowns", 0.0,
-                  "Stop after the cycle whose total unknowns (sum over steps) reach this number; 0: no limit", 0.0);
+                  "Stop after the cycle whose total unknowns (sum over steps) reach this number (see Unknowns Limit); "
+                  "0: no limit", 0.0);
+  core::addChoice(a, "Unknowns Limit", "stop after reaching",
+                  "How Maximum Total Unknowns ends the run: 'stop after reaching' runs cycles until one reaches it (that "
+                  "cycle may exceed it by the growth of a cycle); 'do not exceed' runs no cycle whose total unknowns, "
+                  "counted on its meshes before it runs, would exceed it: the cycle before is the run's result",
+                  {"stop after reaching", "do not exceed"});
   core::addDouble(a, "Tolerance", 0.0, "Stop after the cycle whose estimate max_n eta^n is at or below this; 0: off", 0.0);
   core::addInt(a, "Maximum Level", 14, "Cells are not refined beyond this level; once every cell of every step is at it (and nothing "
                "coarsens), that cycle is the last", 0, 25);
@@ -186,6 +192,9 @@ void checkAdaptivitySettings(const core::ParameterList& deck, const std::string&
   const int maxLevel = a.get<int>("Maximum Level"), baseLevel = deck.sublist("Mesh").get<int>("Refinement Level");
   if (a.get<bool>("Write All Cycles") && !deck.sublist("Output").get<bool>("Write Exodus"))
     SIGNORINI_USER_ERROR("Adaptivity/Write All Cycles = true needs Output/Write Exodus = true");
+  if (a.get<std::string>("Unknowns Limit") != "stop after reaching" && a.get<double>("Maximum Total Unknowns") == 0)
+    warn("Adaptivity/Maximum Total Unknowns = 0 (no limit)",
+         keysSetWithoutEffect(deck, "Adaptivity", [](const std::string& k) { return k == "Unknowns Limit"; }));
   if (cycles < 2) return;  // nothing is refined
   if (maxLevel <= baseLevel)
     SIGNORINI_USER_ERROR("Adaptivity/Maximum Level = " << maxLevel << " is not above Mesh/Refinement Level = "
@@ -213,6 +222,16 @@ AdaptiveSimulation::AdaptiveSimulation(const core::ParameterList& deck, const st
     sim_->checkSegmentsOnRefinements(finer, cause);
     sim_->checkInitialGapOnRefinements(finer, cause);
   }
+  if (a.get<std::string>("Strategy") != "none" && a.get<std::string>("Unknowns Limit") == "do not exceed")
+    if (const double maxDofs = a.get<double>("Maximum Total Unknowns"); maxDofs > 0) {
+      const double first = static_cast<double>(sim_->numSteps()) * static_cast<double>(sim_->initialUnknowns());
+      if (first > maxDofs)
+        SIGNORINI_USER_ERROR("Adaptivity/Maximum Total Unknowns = "
+                             << core::shortestText(maxDofs) << " with Unknowns Limit = do not exceed: cycle 0 alone, "
+                             << sim_->numSteps() << " steps on the deck's mesh of " << sim_->initialUnknowns()
+                             << " unknowns, has " << core::shortestText(first)
+                             << " total unknowns; raise the limit, coarsen the deck's mesh or lengthen Time Integration/Time Step");
+    }
   // Uniform refinement: the last cycle's mesh is known in advance (unless a criterion stops earlier).
   if (a.get<std::string>("Strategy") == "uniform" && a.get<double>("Maximum Total Unknowns") == 0 &&
       a.get<double>("Tolerance") == 0) {
@@ -323,7 +342,8 @@ std::string AdaptiveSimulation::plan() const {
     if (strategy != "uniform" && a.get<double>("Coarsening Fraction") > 0)
       os << ", coarsening " << 100 * a.get<double>("Coarsening Fraction") << "%";
     if (const double maxDofs = a.get<double>("Maximum Total Unknowns"); maxDofs > 0) {
-      os << ", stop at " << maxDofs << " total unknowns";
+      os << (a.get<std::string>("Unknowns Limit") == "do not exceed" ? ", no cycle above " : ", stop at ") << maxDofs
+         << " total unknowns";
       // Cycle 0 passes over the initial mesh: its total is known now.
       const double first = static_cast<double>(sim_->numSteps()) * static_cast<double>(sim_->initialUnknowns());
       if (cycles > 1 && first >= maxDofs) os << " (cycle 0 alone has " << first << ": the run stops after it)";
@@ -343,6 +363,23 @@ std::string AdaptiveSimulation::plan() const {
   return os.str();
 }
 
+double AdaptiveSimulation::totalUnknowns(const std::vector<std::shared_ptr<mesh::Forest>>& meshes) const {
+  const double perNode = sim_->unknownsPerNode();
+  std::map<const mesh::Forest*, double> nodes;  // steps that share a mesh share its forest
+  double total = 0;
+  for (const auto& m : meshes) {
+    auto [it, fresh] = nodes.try_emplace(m.get(), 0.0);
+    if (fresh) {
+      const bool compact = m->isCompact();
+      if (compact) m->expand();
+      it->second = static_cast<double>(m->numGlobalNodes());
+      if (compact) m->compact();
+    }
+    total += perNode * it->second;
+  }
+  return total;
+}
+
 dynamics::RunSummary AdaptiveSimulation::run() {
   const auto& ap = deck_.sublist("Adaptivity");
   const std::string strategy = ap.get<std::string>("Strategy");
@@ -357,6 +394,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   const int nSteps = sim_->numSteps();
   const int cycles = ap.get<int>("Cycles");
   const double maxDofs = ap.get<double>("Maximum Total Unknowns"), tol = ap.get<double>("Tolerance");
+  const bool neverAboveMaxDofs = maxDofs > 0 && ap.get<std::string>("Unknowns Limit") == "do not exceed";
   // With these criteria any cycle may be the last: each is written in full under its cycle name,
   // and the one that ends the run gets the final names.
   const bool mayStopEarly = maxDofs > 0 || tol > 0;
@@ -418,6 +456,17 @@ dynamics::RunSummary AdaptiveSimulation::run() {
           last.files = promoteToFinalName(previousFiles, base + ".cycle" + std::to_string(l - 1), base, *comm);
           previousFiles.clear();
           break;
+        }
+        if (l > 0 && neverAboveMaxDofs) {
+          const double total = totalUnknowns(meshes);
+          if (total > maxDofs) {
+            core::rootOut(rank) << "signorini: the run ends with cycle " << l - 1 << ": cycle " << l << " would have "
+                                << core::shortestText(total) << " total unknowns, above Adaptivity/Maximum Total Unknowns = "
+                                << core::shortestText(maxDofs) << " (Unknowns Limit = do not exceed)" << std::endl;
+            last.files = promoteToFinalName(previousFiles, base + ".cycle" + std::to_string(l - 1), base, *comm);
+            previousFiles.clear();
+            break;
+          }
         }
       }
       const bool dropExodus = mayStopEarly && !writeAll;  // the previous cycle's, written in case it was the last

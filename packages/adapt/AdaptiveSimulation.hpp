@@ -57,6 +57,9 @@ class AdaptiveSimulation {
   std::string whereInRun(int cycle) const;
   /// The options every cycle's pass shares (the estimate's columns and cell field, the transfer, no work columns).
   dynamics::PassOptions cyclePassOptions() const;
+  /// Sum over the steps of the unknowns of each step's mesh (a cycle's total_dofs before it runs).
+  /// Collective; compact forests are expanded for the count and compacted again.
+  double totalUnknowns(const std::vector<std::shared_ptr<mesh::Forest>>& meshes) const;
   /// pass() (a pass of cycle \p cycle), its solver and user errors prefixed with whereInRun().
   template <class Pass>
   dynamics::RunSummary locatingFailures(int cycle, Pass pass) const;

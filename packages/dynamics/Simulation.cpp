@@ -1403,6 +1403,7 @@ long long Simulation::initialUnknowns() const {
     return static_cast<long long>(impl_->initialDiscretisation->assembler->ownedMap()->getGlobalNumElements());
   return 0;
 }
+int Simulation::unknownsPerNode() const { return impl_->problem->components(); }
 std::string Simulation::coarseCorrectionMesh() const {
   const auto& c = impl_->coarseProblem;
   if (!c) return "";

@@ -146,8 +146,10 @@ class Simulation {
   /// The step the current or last runPass() was computing (0: the initial state), for messages.
   int currentStep() const;
   double timeStep() const;  ///< k
-  /// Unknowns of the deck's (initial) mesh.
+  /// Unknowns of the deck's (initial) mesh (before the first pass: it takes the mesh's discretisation; 0 after).
   long long initialUnknowns() const;
+  /// Unknowns per node: 1 (membrane), 2 (elasticity).
+  int unknownsPerNode() const;
   /// "<cells> cells (Refinement Level <l>), <unknowns> unknowns": the mesh of the Schur
   /// preconditioner's coarse correction, if the initial mesh uses it (else empty).
   std::string coarseCorrectionMesh() const;

@@ -11,6 +11,7 @@
 #include <p4est_io.h>
 #include <p4est_ghost.h>
 #include <p4est_iterate.h>
+#include <p4est_lnodes.h>
 
 #include "signorini/core/Error.hpp"
 #include "signorini/mesh/Morton.hpp"
@@ -57,6 +58,17 @@ p4est_t* Forest::p4est() const {
 
 long long Forest::numGlobalCells() const {
   return static_cast<long long>(p4est_ ? p4est_->global_num_quadrants : compact_->firstQuadrant.back());
+}
+
+long long Forest::numGlobalNodes() const {
+  SIGNORINI_ASSERT(!isCompact(), "the forest is compact: expand() it first");
+  p4est_ghost_t* ghost = p4est_ghost_new(p4est_, P4EST_CONNECT_FULL);
+  p4est_lnodes_t* lnodes = p4est_lnodes_new(p4est_, ghost, 1);
+  long long owned = lnodes->owned_count, all = 0;
+  p4est_lnodes_destroy(lnodes);
+  p4est_ghost_destroy(ghost);
+  MPI_Allreduce(&owned, &all, 1, MPI_LONG_LONG, MPI_SUM, comm_);
+  return all;
 }
 
 long long Forest::firstGlobalCell() const {

@@ -40,6 +40,9 @@ class Forest {
   long long numGlobalCells() const;
   /// Cells on this rank (either form).
   int numLocalCells() const;
+  /// Nodes of the bilinear space on these cells, on all ranks: the cells' vertices but the hanging
+  /// ones (p4est lnodes of degree 1), as mesh::Q1Mesh numbers them. Collective; expanded form.
+  long long numGlobalNodes() const;
   /// Position on the space-filling curve of this rank's first cell among the cells of all ranks
   /// (local cell i is at firstGlobalCell() + i): the same cell has the same position on any
   /// number of ranks. Either form.

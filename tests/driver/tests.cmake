@@ -97,6 +97,31 @@ signorini_add_driver_test(adaptive_stop_on_total_unknowns_all_cycles EXIT 0
        --set "Adaptivity/Write All Cycles=true" ${decks}/good.xml
   REGEX "cycle 1: total unknowns 324," "wrote [^ ]*/good[.]cycle0[.]steps[.]csv" "wrote [^ ]*/good[.]cycle0[.]e"
   FILES good.cycle0.steps.csv good.cycle0.e good.steps.csv good.e good.cycles.csv)
+# Unknowns Limit = do not exceed: cycle 2 (4 steps x 17 x 17 nodes = 1156) is not run under a limit
+# of 1000 (cycle 1's results become the run's), runs under a limit of 1156 and ends the run there
+# ("reach"), and a limit below cycle 0's 4 x 25 = 100 is refused before anything runs.
+signorini_add_driver_test(adaptive_unknowns_not_exceeded EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Maximum Total Unknowns=1000"
+       --set "Adaptivity/Unknowns Limit=do not exceed" --set "Adaptivity/Cycles=3" ${decks}/good.xml
+  REGEX "the run ends with cycle 1: cycle 2 would have 1156 total unknowns, above Adaptivity/Maximum Total Unknowns = 1000 [(]Unknowns Limit = do not exceed[)]"
+        "good[.]xml done: 4 steps, 81 unknowns per step"
+  ABSENT "cycle 2: total unknowns"
+  FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
+signorini_add_driver_test(adaptive_unknowns_not_exceeded_at_the_limit EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Maximum Total Unknowns=1156"
+       --set "Adaptivity/Unknowns Limit=do not exceed" --set "Adaptivity/Cycles=4" ${decks}/good.xml
+  REGEX "cycle 2: total unknowns 1156,"
+        "cycle 2 ends the run: its total unknowns reach Adaptivity/Maximum Total Unknowns"
+  FILES good.cycle0.steps.csv good.cycle1.steps.csv good.steps.csv good.e good.cycles.csv)
+signorini_add_driver_test(adaptive_unknowns_limit_below_cycle0 EXIT 1
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Maximum Total Unknowns=99"
+       --set "Adaptivity/Unknowns Limit=do not exceed" ${decks}/good.xml
+  REGEX "Adaptivity/Maximum Total Unknowns = 99 with Unknowns Limit = do not exceed: cycle 0 alone, 4 steps on the deck's mesh of 25 unknowns, has 100 total unknowns")
+signorini_add_driver_test(unknowns_limit_without_limit EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Cycles=2"
+       --set "Adaptivity/Unknowns Limit=do not exceed" ${decks}/good.xml
+  REGEX "warning: [^ ]*good[.]xml: Adaptivity/Maximum Total Unknowns = 0 [(]no limit[)][^\n]*without effect: Adaptivity/Unknowns Limit"
+  FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
 signorini_add_driver_test(adaptive_stop_on_tolerance EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Tolerance=1e30"
        --set "Adaptivity/Write All Cycles=true" ${decks}/good.xml
