@@ -40,6 +40,10 @@ constexpr double kEstimateRiseWarning = 1.1;
 /// Transfers between the step meshes that raised (or lowered) a cycle's energy by more than this
 /// fraction of its largest energy draw a warning (the paper deck's cycles raise it by 0.35-0.5%).
 constexpr double kTransferEnergyWarning = 0.05;
+/// Without loads, body force or a moving obstacle (fem::ProblemData::suppliesEnergy), a cycle whose
+/// energy rose above its initial energy by more than this fraction draws a warning (the paper deck's
+/// cycles stay within 0.5%).
+constexpr double kEnergyGainWarning = 0.05;
 
 /// Whether the file \p path is an Exodus file of a series ("<name>.e" or "<name>.e-s.<digits>";
 /// only the file name counts, not the directories).
@@ -710,6 +714,25 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                           "(Contact/Boundary Mass = lumped)")
                 << "; each mesh change's share is the step table's energy_transferred minus the energy of the step "
                    "before (README, Known behaviour)";
+        core::rootOut(rank) << warning.str() << std::endl;
+      }
+      // Nothing supplies energy, yet the cycle gained some: the step tables' energies are not the
+      // problem's. Told apart from the transfers' share, which the warning above names.
+      if (!sim_->problem().suppliesEnergy() && last.initialEnergy > 0 &&
+          last.largestEnergy > (1 + kEnergyGainWarning) * last.initialEnergy) {
+        std::ostringstream warning;
+        warning << std::setprecision(4) << "signorini: warning: cycle " << l << ": the energy (kinetic + strain) reaches "
+                << last.largestEnergy << " in step " << last.largestEnergyStep << " (t = "
+                << last.largestEnergyStep * sim_->timeStep() << "), " << std::fixed << std::setprecision(1)
+                << 100 * (last.largestEnergy / last.initialEnergy - 1) << std::defaultfloat << std::setprecision(4)
+                << "% above its initial " << last.initialEnergy
+                << ", although no load, body force or moving obstacle supplies energy";
+        if (last.transferEnergyRise > 0)
+          warning << " (the transfers between step meshes raised it by " << last.transferEnergyRise << " in all)";
+        warning << ": where a step's finer contact segments meet a penetration that the coarser segments of the "
+                   "step before allowed, the step pushes the body out (Adaptivity/Contact Zone Gap refines the "
+                   "contact zone before the first contact); where contact is released, the time-discrete contact "
+                   "gains energy (a smaller Time Step reduces it); see the step tables' energy, README Known behaviour";
         core::rootOut(rank) << warning.str() << std::endl;
       }
       if (stop) {

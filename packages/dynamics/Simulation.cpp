@@ -51,6 +51,10 @@
 
 namespace signorini::dynamics {
 namespace {
+/// An elastic deck's obstacle that slopes across Contact Direction by more than this at the contact
+/// boundary draws a warning: the contact force acts along the direction, not normal to the obstacle.
+constexpr double kObstacleSlopeWarningDegrees = 5.0;
+
 /// For each point of \p to, the index of the nearest point of \p from (Euclidean distance, the
 /// lowest index among equally near ones; -1 when \p from is empty). Sorted along the coordinate
 /// of larger spread, so a contact boundary (a line) costs O(log n) per point instead of O(n).
@@ -1218,9 +1222,14 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
           const auto& x = I.coarse->treeCorner(t, c);
           x0 = std::min(x0, x[0]), x1 = std::max(x1, x[0]), y0 = std::min(y0, x[1]), y1 = std::max(y1, x[1]);
         }
+      const bool inBox = p[0] >= x0 && p[0] <= x1 && p[1] >= y0 && p[1] <= y1;
       SIGNORINI_USER_ERROR("Output/Probes/" << name << ": point (" << std::setprecision(15) << p[0] << ", " << p[1]
                                             << ") is outside the mesh, which lies in [" << x0 << ", " << x1 << "] x ["
-                                            << y0 << ", " << y1 << "] (probes are points of the undeformed body)");
+                                            << y0 << ", " << y1 << "]"
+                                            << (inBox ? " but does not fill it: the point is in no cell (a hole or a notch "
+                                                        "of the mesh)"
+                                                      : "")
+                                            << " (probes are points of the undeformed body)");
     }
   }
   {
@@ -1311,6 +1320,40 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
                   << "point by point, so the obstacle takes the body's shape; the flat obstacle at " << coordinate
                   << " = " << y0 << " (that gap from the boundary's " << (sign > 0 ? "lowest" : "highest")
                   << " point) is \"" << flat.str() << "\"" << std::endl;
+      }
+    }
+    // d . u >= g constrains one component, and the contact force acts along d: where the obstacle's
+    // surface x_c + g slopes across d, the force is not normal to it (a user study's disc on a 10
+    // degree slope rebounded without the sideways push a frictionless slope gives, and spun).
+    if (d->coupling && nc == 2 && !I.problem->obstacle.isConstant()) {
+      const int c = I.problem->contactComponent, across = 1 - c;
+      const double h = 1e-6 * I.coarse->diameter();
+      double steepest[3] = {0, 0, 0};  // |dg / dx_across| and its point
+      std::string bad;
+      for (const auto& be : d->mesh->boundaryEdges())
+        if (be.segments & I.problem->contactMask) {
+          auto x = be.at(0.5), y = x;
+          x[across] -= h, y[across] += h;
+          const double slope = std::abs(I.problem->obstacle.sample(y[0], y[1], 0.0, bad) -
+                                        I.problem->obstacle.sample(x[0], x[1], 0.0, bad)) / (2 * h);
+          if (std::isfinite(slope) && slope > steepest[0]) steepest[0] = slope, steepest[1] = be.at(0.5)[0], steepest[2] = be.at(0.5)[1];
+        }
+      struct {
+        double value;
+        int rank;
+      } mine{steepest[0], comm->getRank()}, first{};
+      MPI_Allreduce(&mine, &first, 1, MPI_DOUBLE_INT, MPI_MAXLOC, core::rawMpiComm(*comm));
+      if (first.value > std::tan(kObstacleSlopeWarningDegrees * M_PI / 180)) {
+        MPI_Bcast(steepest, 3, MPI_DOUBLE, first.rank, core::rawMpiComm(*comm));
+        if (comm->getRank() == 0)
+          std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": Problem/Obstacle slopes across "
+                    << "Contact Direction by up to " << std::atan(steepest[0]) * 180 / M_PI << " degrees (d g / d "
+                    << (across == 0 ? "x" : "y") << " = " << steepest[0] << " at (" << steepest[1] << ", " << steepest[2]
+                    << ") at t = 0): the constraint is on u_" << (c == 0 ? "x" : "y")
+                    << " and the contact force acts along Contact Direction, not normal to the obstacle, so on a slope "
+                       "it also acts like friction; for a frictionless slope give the mesh in coordinates in which "
+                       "Contact Direction is the slope's normal (README, Known behaviour)"
+                    << std::endl;
       }
     }
     // Boundary segments that no Problem list names are free edges: most likely a list left out.
@@ -1404,6 +1447,7 @@ long long Simulation::initialUnknowns() const {
   return 0;
 }
 int Simulation::unknownsPerNode() const { return impl_->problem->components(); }
+const fem::ProblemData& Simulation::problem() const { return *impl_->problem; }
 std::string Simulation::coarseCorrectionMesh() const {
   const auto& c = impl_->coarseProblem;
   if (!c) return "";
@@ -1718,7 +1762,11 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     written = I.energies(*d, *u, *v);
     if (step == 0) transferred = written;  // the initial state: nothing moved
     const auto [kinetic, strain] = written;
-    if (options.reportTransferEnergy) summary.largestEnergy = std::max(summary.largestEnergy, kinetic + strain);
+    if (step == 0) summary.initialEnergy = kinetic + strain;
+    if (step == 0 || kinetic + strain > summary.largestEnergy) {
+      summary.largestEnergy = kinetic + strain;
+      summary.largestEnergyStep = step;
+    }
     const double energy = kinetic + strain, newmarkEnergy = I.newmarkEnergy(*d, energy, *a);
     std::vector<double> row = {double(step), t, dofs, double(qr.active), double(qr.activeSetIterations),
                                double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),

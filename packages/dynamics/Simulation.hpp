@@ -38,8 +38,11 @@ struct RunSummary {
   /// \var transferEnergyRise
   /// The same summed over the mesh changes that raised the energy only.
   /// \var largestEnergy
-  /// With PassOptions::reportTransferEnergy: the largest energy (kinetic + strain) of a step.
-  double transferEnergyChange = 0, transferEnergyRise = 0, largestEnergy = 0;
+  /// The largest energy (kinetic + strain) of a step [energy per unit thickness].
+  /// \var initialEnergy
+  /// The energy (kinetic + strain) of step 0, the initial state on the pass's first mesh.
+  double transferEnergyChange = 0, transferEnergyRise = 0, largestEnergy = 0, initialEnergy = 0;
+  int largestEnergyStep = 0;  ///< the step of largestEnergy (the first, if several)
 };
 
 /// What a per-step hook sees right after step n was solved (references valid during the call).
@@ -150,6 +153,8 @@ class Simulation {
   long long initialUnknowns() const;
   /// Unknowns per node: 1 (membrane), 2 (elasticity).
   int unknownsPerNode() const;
+  /// The deck's problem data.
+  const fem::ProblemData& problem() const;
   /// "<cells> cells (Refinement Level <l>), <unknowns> unknowns": the mesh of the Schur
   /// preconditioner's coarse correction, if the initial mesh uses it (else empty).
   std::string coarseCorrectionMesh() const;

@@ -169,6 +169,15 @@ std::string ProblemData::checkParameters(const core::ParameterList& p) {
   return keys.empty() ? "" : "no Problem/Neumann Segments; without effect: " + keys;
 }
 
+bool ProblemData::suppliesEnergy() const {
+  const auto zero = [](const core::ExpressionList& f) {
+    for (int c = 0; c < f.size(); ++c)
+      if (!f[c].isConstant() || f[c](0, 0, 0) != 0) return false;
+    return true;
+  };
+  return !zero(bodyForce) || (neumannMask != 0 && !zero(neumannData)) || (hasObstacle && !obstacle.isTimeIndependent());
+}
+
 double ProblemData::waveSpeed() const {
   return std::sqrt(waveModulus() / density);
 }

@@ -63,6 +63,11 @@ struct ProblemData {
   /// The stiffness of the fastest wave: kappa [force / length], or the P-wave modulus lambda + 2 mu
   /// [force / area]; the estimator's physical scaling divides by it.
   /// Whether any unknown is held (Dirichlet Segments, Dirichlet X/Y Segments): then the supports exert a reaction.
+  /// Whether the data can supply energy: a body force or Neumann data that is not the constant 0 (on
+  /// a Neumann segment), or an obstacle that moves. Without, the energy of the exact solution never
+  /// exceeds its initial value (the supports hold at 0, frictionless contact with a fixed obstacle
+  /// does no work on the body).
+  bool suppliesEnergy() const;
   bool hasDirichletConditions() const {
     return (dirichletMask | componentDirichletMask[0] | componentDirichletMask[1]) != 0;
   }

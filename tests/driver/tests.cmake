@@ -122,6 +122,31 @@ signorini_add_driver_test(unknowns_limit_without_limit EXIT 0
        --set "Adaptivity/Unknowns Limit=do not exceed" ${decks}/good.xml
   REGEX "warning: [^ ]*good[.]xml: Adaptivity/Maximum Total Unknowns = 0 [(]no limit[)][^\n]*without effect: Adaptivity/Unknowns Limit"
   FILES good.cycle0.steps.csv good.steps.csv good.e good.cycles.csv)
+# A cycle whose energy rises above its initial energy although nothing supplies energy is reported:
+# the disc of a user study, dropped at 1 m/s, has 1/2 rho |D| v^2 = 30.81 J/m (|D| the area of its
+# 128-gon, 7.8508e-3 m^2) and gains energy in cycle 1 where a refined step meets the penetration
+# the coarse segments allowed; with Contact Zone Gap the energy stays at its initial value, no warning.
+signorini_add_driver_test(energy_gain_warned EXIT 0
+  ARGS --output-dir {OUT} ${decks}/disc-drop.xml
+  REGEX "warning: cycle 1: the energy [(]kinetic [+] strain[)] reaches [0-9.]+ in step [0-9]+ [(]t = [^)]+[)], [0-9.]+% above its initial 30[.]81, although no load, body force or moving obstacle supplies energy"
+        "Adaptivity/Contact Zone Gap refines the contact zone before the first contact"
+  ABSENT "cycle 0: the energy" "slopes across"
+  FILES disc-drop.cycle0.steps.csv disc-drop.steps.csv disc-drop.cycles.csv)
+signorini_add_driver_test(energy_gain_none_with_contact_zone_gap EXIT 0
+  ARGS --output-dir {OUT} --set "Adaptivity/Contact Zone Gap=1e-5" ${decks}/disc-drop.xml
+  REGEX "cycle 1: total unknowns"
+  ABSENT "the energy [(]kinetic [+] strain[)] reaches"
+  FILES disc-drop.cycle0.steps.csv disc-drop.steps.csv disc-drop.cycles.csv)
+# An elastic deck's obstacle that slopes across Contact Direction (the disc on a 10 degree slope)
+# draws a warning: the contact force acts along the direction, not normal to the slope; 4 degrees
+# (below the 5 degree threshold) and the flat floor do not.
+signorini_add_driver_test(obstacle_slope_warned EXIT 0
+  ARGS --check --output-dir {OUT} --set "Problem/Obstacle=-0.05/cos(10*_pi/180) - 2e-5 + x*tan(10*_pi/180) - y" ${decks}/disc-drop.xml
+  REGEX "warning: [^ ]*disc-drop[.]xml: Problem/Obstacle slopes across Contact Direction by up to 10 degrees [(]d g / d x = 0[.]176 at"
+        "the contact force acts along Contact Direction, not normal to the obstacle")
+signorini_add_driver_test(obstacle_slope_below_the_threshold EXIT 0
+  ARGS --check --output-dir {OUT} --set "Problem/Obstacle=-0.05/cos(4*_pi/180) - 2e-5 + x*tan(4*_pi/180) - y" ${decks}/disc-drop.xml
+  ABSENT "slopes across")
 signorini_add_driver_test(adaptive_stop_on_tolerance EXIT 0
   ARGS --output-dir {OUT} --set "Adaptivity/Strategy=uniform" --set "Adaptivity/Tolerance=1e30"
        --set "Adaptivity/Write All Cycles=true" ${decks}/good.xml
@@ -602,7 +627,12 @@ signorini_add_driver_test(bad_probe_not_a_number EXIT 1
   REGEX "Output/Probes/p: \"nan, 0[.]5\" is not a point [(]a coordinate is not a finite number[)]")
 signorini_add_driver_test(bad_probe_outside_the_mesh EXIT 1
   ARGS --output-dir {OUT} --set "Output/Probes/far=5, 0.5" ${decks}/good.xml
-  REGEX "Output/Probes/far: point [(]5, 0[.]5[)] is outside the mesh, which lies in [[]0, 1[]] x [[]0, 1[]]")
+  REGEX "Output/Probes/far: point [(]5, 0[.]5[)] is outside the mesh, which lies in [[]0, 1[]] x [[]0, 1[]]"
+  ABSENT "does not fill it")
+# A point inside the mesh's bounding box but in no cell (the L-bracket's notch): the message says so.
+signorini_add_driver_test(probe_in_a_notch EXIT 1
+  ARGS --check --output-dir {OUT} --set "Output/Probes/notch=0.06, 0.06" ${decks}/bracket-push.xml
+  REGEX "Output/Probes/notch: point [(]0[.]06, 0[.]06[)] is outside the mesh, which lies in [[]0, 0[.]1[]] x [[]0, 0[.]08[]] but does not fill it: the point is in no cell")
 # Output/Moment Point: elasticity's moments are about it; a point as the probes take them.
 signorini_add_driver_test(bad_moment_point_of_membrane EXIT 1
   ARGS --output-dir {OUT} --set "Output/Moment Point=0.5, 0.5" ${decks}/good.xml

@@ -352,3 +352,25 @@ TEST(StepMatrices, EqualSeparateAssembly) {
         if (asmb->dirichletFlags()[i]) { EXPECT_EQ(yh(i, 0), xh(i, 0)); }
     }
 }
+
+// Only a body force or Neumann data that is not the constant 0 (on a Neumann segment) or an obstacle
+// that moves can supply energy (the warning on a cycle's energy gain relies on it).
+TEST(ProblemData, SuppliesEnergyOnlyThroughLoadsOrAMovingObstacle) {
+  test::TestMesh tm(0.0, 1.0, 0.0, 1.0, 2, 2, 0);
+  const auto supplies = [&](const std::vector<std::pair<const char*, const char*>>& settings) {
+    auto p = fem::ProblemData::getValidParameters();
+    p.set("Type", std::string("plane strain elasticity"));
+    p.set("Contact Segments", std::string("right"));
+    p.set("Obstacle", std::string("-0.1"));
+    for (const auto& [key, value] : settings) p.set(key, std::string(value));
+    return fem::ProblemData(p, *tm.segments).suppliesEnergy();
+  };
+  EXPECT_FALSE(supplies({}));
+  EXPECT_FALSE(supplies({{"Body Force", "0, 0"}, {"Initial Velocity", "0, -1"}, {"Obstacle", "-0.1 - x*x"}}));
+  EXPECT_FALSE(supplies({{"Neumann Data", "0, -1"}}));  // without Neumann segments: no effect
+  EXPECT_TRUE(supplies({{"Body Force", "0, -9.81"}}));
+  EXPECT_TRUE(supplies({{"Body Force", "0, 0*x"}}));  // not seen to be 0: counted as a load
+  EXPECT_TRUE(supplies({{"Neumann Data", "0, -1"}, {"Neumann Segments", "left"}}));
+  EXPECT_FALSE(supplies({{"Neumann Data", "0, 0"}, {"Neumann Segments", "left"}}));
+  EXPECT_TRUE(supplies({{"Obstacle", "-0.1 + 0.01 * t"}}));
+}
