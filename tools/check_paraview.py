@@ -136,6 +136,7 @@ def read_series(first):
         conn = np.array(ds.variables["connect1"][:], dtype=np.int64) if "connect1" in ds.variables else None
         ss = sets.index("contact") + 1 if "contact" in sets else None
         set_keys = {name: list(zip(ds.variables["elem_ss%d" % (i + 1)][:].tolist(), ds.variables["side_ss%d" % (i + 1)][:].tolist()))
+                    if "elem_ss%d" % (i + 1) in ds.variables else []  # an empty set has no entries
                     for i, name in enumerate(sets)}
         side_keys = set_keys.get("contact")
         for k, t in enumerate(ds.variables["time_whole"][:].tolist()):
@@ -254,19 +255,21 @@ def fetch(t):
             name = out.GetMetaData(i).Get(out.NAME()) if out.HasMetaData(i) else None
             blocks[name] = [pds.GetPartition(j) for j in range(pds.GetNumberOfPartitions()) if pds.GetPartition(j)]
     for name, parts in blocks.items():
-        if len(parts) != 1:
+        if len(parts) > 1 or (not parts and name == "domain"):  # an empty side set comes in none
             fail("t = %s: block '%s' comes in %d pieces" % (fmt(t), name, len(parts)))
     if "domain" not in blocks:
         fail("t = %s: no element block 'domain' in ParaView's output (blocks: %s)" % (fmt(t), sorted(blocks)))
     domain = blocks["domain"][0]
     field = domain.GetFieldData() if legacy else out.GetFieldData()
-    return domain, {name: parts[0] for name, parts in blocks.items()}, arrays(field)
+    return domain, {name: parts[0] if parts else None for name, parts in blocks.items()}, arrays(field)
 
 
 def check_side_block(where, name, block, keys_in_file, conn):
     """Checks that ParaView's block of side set `name` holds the file's (element, side) pairs and
     that its cells are boundary edges of the mesh (an edge beside hanging nodes counts too).
     Returns the order of the file's sides in the block's cells and the cells' lengths."""
+    if block is None and not keys_in_file:  # an empty set: the IOSS reader gives its block no data
+        return np.zeros(0, dtype=np.int64), np.zeros(0)
     if block is None:
         fail("%s: the side set '%s' is selected but ParaView shows no block '%s'" % (where, name, name))
     nsides = block.GetNumberOfCells()

@@ -1,5 +1,7 @@
 #include "signorini/dynamics/ResultWriter.hpp"
 
+#include <cctype>
+#include <set>
 #include <unordered_map>
 
 #include <Tpetra_Vector.hpp>
@@ -29,6 +31,24 @@ std::vector<T> gatherToRoot(const Comm& comm, const std::vector<T>& mine, MPI_Da
 }
 
 }  // namespace
+
+std::vector<std::string> segmentSideSetNames(const std::vector<std::string>& segmentNames, unsigned contactMask) {
+  std::set<std::string> taken = {"domain", "contact"};
+  std::vector<std::string> names;
+  for (size_t i = 0; i < segmentNames.size(); ++i) {
+    std::string name = segmentNames[i];
+    for (char& ch : name) ch = ch == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (name == "contact" && contactMask == (1u << i)) {
+      names.emplace_back();
+      continue;
+    }
+    std::string unique = name;
+    for (int k = 2; taken.count(unique); ++k) unique = name + "_" + std::to_string(k);
+    taken.insert(unique);
+    names.push_back(unique);
+  }
+  return names;
+}
 
 ResultWriter::ResultWriter(const std::string& basePath, std::vector<std::string> nodalNames,
                            std::vector<std::string> cellNames, std::vector<std::string> contactNames,
@@ -155,6 +175,8 @@ void ResultWriter::write(long meshId, const mesh::Q1Mesh& mesh, double time, con
         sides.push_back({static_cast<int>(cellOffset[r] + allEdges[2 * pos]), static_cast<int>(allEdges[2 * pos + 1])});
         for (size_t f = 0; f < numContact_; ++f) sideOut[f].push_back(allEdgeValues[numContact_ * pos + f]);
       }
+    for (const auto& name : segmentSets_)
+      if (!name.empty()) out.sideSets[name];  // in every file, also without edges on this mesh
     pos = 0;
     for (size_t r = 0; r < segmentEdgeCounts.size(); ++r)
       for (int k = 0; k < segmentEdgeCounts[r] / 3; ++k, ++pos) {

@@ -12,6 +12,14 @@
 
 namespace signorini::dynamics {
 
+/// The names of the side sets that show the boundary segments \p segmentNames (bit i of a segment
+/// mask: segmentNames[i]) in the result files, for ResultWriter: as ParaView's default (IOSS) reader
+/// shows names, in lower case with '_' for blanks, so that both readers show the same; "" for a
+/// segment named "contact" that is all of Gamma_C (\p contactMask: its bit alone), which the set
+/// "contact" shows. A name taken by the element block "domain", the set "contact" or an earlier
+/// segment gets "_2", "_3", ... (the IOSS reader refuses a file with two sets of one name).
+std::vector<std::string> segmentSideSetNames(const std::vector<std::string>& segmentNames, unsigned contactMask);
+
 /// The Exodus output of one pass: rank 0 owns the file series, the other ranks send it their parts.
 /// Collective over the communicator it keeps.
 class ResultWriter {

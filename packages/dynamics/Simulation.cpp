@@ -1226,9 +1226,7 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
       SIGNORINI_USER_ERROR("Output/Probes/" << name << ": point (" << std::setprecision(15) << p[0] << ", " << p[1]
                                             << ") is outside the mesh, which lies in [" << x0 << ", " << x1 << "] x ["
                                             << y0 << ", " << y1 << "]"
-                                            << (inBox ? " but does not fill it: the point is in no cell (a hole or a notch "
-                                                        "of the mesh)"
-                                                      : "")
+                                            << (inBox ? " but does not fill it: the point is in no cell" : "")
                                             << " (probes are points of the undeformed body)");
     }
   }
@@ -1323,20 +1321,35 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
       }
     }
     // d . u >= g constrains one component, and the contact force acts along d: where the obstacle's
-    // surface x_c + g slopes across d, the force is not normal to it (a user study's disc on a 10
-    // degree slope rebounded without the sideways push a frictionless slope gives, and spun).
+    // surface slopes across d, the force is not normal to it (a user study's disc on a 10 degree
+    // slope rebounded without the sideways push a frictionless slope gives, and spun). The surface
+    // that the contact boundary meets is h = x_c + sign g at its points (g = y0 - y is the flat floor
+    // y0 under any boundary shape); its slope across d between points 1/8 of an edge apart, where the
+    // boundary runs within 45 degrees of the across direction.
     if (d->coupling && nc == 2 && !I.problem->obstacle.isConstant()) {
       const int c = I.problem->contactComponent, across = 1 - c;
-      const double h = 1e-6 * I.coarse->diameter();
-      double steepest[3] = {0, 0, 0};  // |dg / dx_across| and its point
+      const double sign = I.problem->contactSign;
+      constexpr int pieces = 8;
+      double steepest[3] = {0, 0, 0};  // |dh / dx_across| and its point
       std::string bad;
+      const auto surface = [&](const std::array<double, 2>& x) {
+        return x[c] + sign * I.problem->obstacle.sample(x[0], x[1], 0.0, bad);
+      };
       for (const auto& be : d->mesh->boundaryEdges())
         if (be.segments & I.problem->contactMask) {
-          auto x = be.at(0.5), y = x;
-          x[across] -= h, y[across] += h;
-          const double slope = std::abs(I.problem->obstacle.sample(y[0], y[1], 0.0, bad) -
-                                        I.problem->obstacle.sample(x[0], x[1], 0.0, bad)) / (2 * h);
-          if (std::isfinite(slope) && slope > steepest[0]) steepest[0] = slope, steepest[1] = be.at(0.5)[0], steepest[2] = be.at(0.5)[1];
+          auto x0 = be.at(0.0);
+          double h0 = surface(x0);
+          for (int k = 1; k <= pieces; ++k) {
+            const auto x1 = be.at(static_cast<double>(k) / pieces);
+            const double h1 = surface(x1), run = std::abs(x1[across] - x0[across]);
+            // Pieces steeper than 45 degrees to the obstacle (the body's sides) do not rest on it.
+            if (run > std::sqrt(0.5) * be.length() / pieces) {
+              const double slope = std::abs(h1 - h0) / run;
+              if (std::isfinite(slope) && slope > steepest[0])
+                steepest[0] = slope, steepest[1] = 0.5 * (x0[0] + x1[0]), steepest[2] = 0.5 * (x0[1] + x1[1]);
+            }
+            x0 = x1, h0 = h1;
+          }
         }
       struct {
         double value;
@@ -1345,14 +1358,16 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
       MPI_Allreduce(&mine, &first, 1, MPI_DOUBLE_INT, MPI_MAXLOC, core::rawMpiComm(*comm));
       if (first.value > std::tan(kObstacleSlopeWarningDegrees * M_PI / 180)) {
         MPI_Bcast(steepest, 3, MPI_DOUBLE, first.rank, core::rawMpiComm(*comm));
+        const char* along = c == 0 ? "x" : "y";
         if (comm->getRank() == 0)
-          std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": Problem/Obstacle slopes across "
-                    << "Contact Direction by up to " << std::atan(steepest[0]) * 180 / M_PI << " degrees (d g / d "
-                    << (across == 0 ? "x" : "y") << " = " << steepest[0] << " at (" << steepest[1] << ", " << steepest[2]
-                    << ") at t = 0): the constraint is on u_" << (c == 0 ? "x" : "y")
-                    << " and the contact force acts along Contact Direction, not normal to the obstacle, so on a slope "
-                       "it also acts like friction; for a frictionless slope give the mesh in coordinates in which "
-                       "Contact Direction is the slope's normal (README, Known behaviour)"
+          std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": the obstacle's surface under "
+                    << "the contact boundary (" << along << (sign > 0 ? " + " : " - ") << "Problem/Obstacle) slopes "
+                    << "across Contact Direction by up to " << std::atan(steepest[0]) * 180 / M_PI << " degrees (slope "
+                    << steepest[0] << " near (" << steepest[1] << ", " << steepest[2] << ") at t = 0): the constraint "
+                    << "is on u_" << along << " and the contact force acts along Contact Direction, not normal to "
+                       "the obstacle, so where the body touches it there it also acts like friction; for a "
+                       "frictionless slope give the mesh in coordinates in which Contact Direction is the "
+                       "obstacle's normal where the body touches it (README, Known behaviour)"
                     << std::endl;
       }
     }
@@ -1648,12 +1663,10 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     std::istringstream lines(core::deckAsXml(I.deck));
     for (std::string line; std::getline(lines, line);) description.info.push_back(line);
     // Each boundary segment of the deck is a side set named after it (ParaView shows supports and
-    // loads); one named "contact" that is all of Gamma_C is the set "contact" itself.
-    std::vector<std::string> segmentSets;
-    for (int i = 0; i < I.segments->size(); ++i) {
-      const std::string& name = I.segments->name(i);
-      segmentSets.push_back(name != "contact" ? name : I.problem->contactMask == (1u << i) ? "" : "contact segment");
-    }
+    // loads), in every file of the series, also where a mesh gives it no edge.
+    std::vector<std::string> segmentNames;
+    for (int i = 0; i < I.segments->size(); ++i) segmentNames.push_back(I.segments->name(i));
+    auto segmentSets = segmentSideSetNames(segmentNames, I.problem->contactMask);
     exodus = std::make_unique<ResultWriter>(base, nc == 1 ? std::vector<std::string>{"u", "v", "a"}
                                                           : std::vector<std::string>{"u_x", "u_y", "v_x", "v_y", "a_x", "a_y"},
                                             cellNames, std::vector<std::string>{"lambda", "gap"}, std::move(description),
@@ -1762,12 +1775,14 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
     written = I.energies(*d, *u, *v);
     if (step == 0) transferred = written;  // the initial state: nothing moved
     const auto [kinetic, strain] = written;
-    if (step == 0) summary.initialEnergy = kinetic + strain;
-    if (step == 0 || kinetic + strain > summary.largestEnergy) {
-      summary.largestEnergy = kinetic + strain;
-      summary.largestEnergyStep = step;
-    }
+    summary.largestEnergy = std::max(summary.largestEnergy, kinetic + strain);
     const double energy = kinetic + strain, newmarkEnergy = I.newmarkEnergy(*d, energy, *a);
+    if (step == 0) summary.initialNewmarkEnergy = newmarkEnergy;
+    if (step == 0 || newmarkEnergy > summary.largestNewmarkEnergy) {
+      summary.largestNewmarkEnergy = newmarkEnergy;
+      summary.largestNewmarkEnergyStep = step;
+    }
+    summary.stepsInContact += qr.active > 0;
     std::vector<double> row = {double(step), t, dofs, double(qr.active), double(qr.activeSetIterations),
                                double(qr.cgIterations), double(qr.linearSolves), double(qr.linearIterations),
                                energy, kinetic, newmarkEnergy, force,

@@ -39,10 +39,15 @@ struct RunSummary {
   /// The same summed over the mesh changes that raised the energy only.
   /// \var largestEnergy
   /// The largest energy (kinetic + strain) of a step [energy per unit thickness].
-  /// \var initialEnergy
-  /// The energy (kinetic + strain) of step 0, the initial state on the pass's first mesh.
-  double transferEnergyChange = 0, transferEnergyRise = 0, largestEnergy = 0, initialEnergy = 0;
-  int largestEnergyStep = 0;  ///< the step of largestEnergy (the first, if several)
+  double transferEnergyChange = 0, transferEnergyRise = 0, largestEnergy = 0;
+  /// \var initialNewmarkEnergy
+  /// The step table's newmark_energy in step 0 (the initial state on the pass's first mesh), which
+  /// Newmark's scheme conserves without contact, loads and mesh changes (2 beta >= alpha = 1/2).
+  /// \var largestNewmarkEnergy
+  /// Its largest value over the steps.
+  double initialNewmarkEnergy = 0, largestNewmarkEnergy = 0;
+  int largestNewmarkEnergyStep = 0;  ///< the step of largestNewmarkEnergy (the first, if several)
+  int stepsInContact = 0;            ///< steps with an active contact segment
 };
 
 /// What a per-step hook sees right after step n was solved (references valid during the call).

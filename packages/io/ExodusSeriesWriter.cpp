@@ -107,11 +107,12 @@ struct ExodusSeriesWriter::Impl {
     const auto sideSet = mesh.sideSets.find(sideSetName);
     numSides = sideSet == mesh.sideSets.end() ? 0 : sideSet->second.size();
     // Side sets of the file: the one carrying the side variables first (id 1, as readers of the
-    // series expect), then every other non-empty set of the mesh (ids 2, 3, ...).
+    // series expect; left out when empty), then every other set of the mesh (ids 2, 3, ...), also
+    // an empty one, so that every file of a series has the same sets.
     std::vector<std::pair<std::string, const std::vector<std::array<int, 2>>*>> sets;
     if (numSides > 0) sets.emplace_back(sideSetName, &sideSet->second);
     for (const auto& [name, sides] : mesh.sideSets)
-      if (name != sideSetName && !sides.empty()) sets.emplace_back(name, &sides);
+      if (name != sideSetName) sets.emplace_back(name, &sides);
     numSetSides = 0;
     for (const auto& set : sets) numSetSides += set.second->size();
 
@@ -157,6 +158,7 @@ struct ExodusSeriesWriter::Impl {
           "ex_put_conn");
     for (std::size_t i = 0; i < sets.size(); ++i) {
       const auto& entries = *sets[i].second;
+      if (entries.empty()) continue;
       std::vector<int> elements(entries.size()), sides(entries.size());
       for (std::size_t j = 0; j < entries.size(); ++j) {
         elements[j] = entries[j][0] + 1;

@@ -63,8 +63,9 @@ class ExodusSeriesWriter {
 
   /// Appends one output time. When meshId differs from the previous call's, the current file
   /// is finalised and a new one is started with this mesh (mesh.sideSets[sideSetName] gives the
-  /// sides carrying the side variables, side set 1 of the file; an absent set means no sides; the
-  /// mesh's other non-empty side sets follow as sets 2, 3, ... without variables, e.g. supports).
+  /// sides carrying the side variables, side set 1 of the file; an absent or empty set means no
+  /// sides; the mesh's other side sets, also empty ones, follow as sets 2, 3, ... without
+  /// variables, e.g. supports).
   /// nodal[i] has one value per vertex, cell[i] one per quad, side[i] one per side of the set,
   /// globals one value per global variable of the description.
   /// Wrong counts or lengths, or a call after close()/abandon(), throw std::logic_error; a file

@@ -17,6 +17,7 @@
 #include "signorini/fem/Assembler.hpp"
 #include "signorini/fem/ContactCoupling.hpp"
 #include "signorini/mesh/Q1Mesh.hpp"
+#include "signorini/dynamics/ResultWriter.hpp"
 #include "signorini/dynamics/Simulation.hpp"
 
 using namespace signorini;
@@ -265,3 +266,20 @@ TEST(Membrane, KKTConditionsHoldAtEveryStep) {
 }
 
 }  // namespace
+
+// The segments' side sets are named as ParaView's default (IOSS) reader shows names, lower case with
+// '_' for blanks, and never twice or as the element block "domain" or the set "contact" (the IOSS
+// reader refuses a file with two sets of one name; a review's "Contact" made the file unreadable).
+TEST(SegmentSideSetNames, AreUniqueAsParaViewShowsThem) {
+  using signorini::dynamics::segmentSideSetNames;
+  EXPECT_EQ(segmentSideSetNames({"clamped", "Left Support", "load"}, 0),
+            (std::vector<std::string>{"clamped", "left_support", "load"}));
+  // A segment named "contact" (in any case) that is all of Gamma_C is the set "contact" itself.
+  EXPECT_EQ(segmentSideSetNames({"clamped", "Contact"}, 1u << 1), (std::vector<std::string>{"clamped", ""}));
+  // Only part of Gamma_C, or no contact at all: a name of its own.
+  EXPECT_EQ(segmentSideSetNames({"contact", "upper"}, 3u), (std::vector<std::string>{"contact_2", "upper"}));
+  EXPECT_EQ(segmentSideSetNames({"contact"}, 0), (std::vector<std::string>{"contact_2"}));
+  EXPECT_EQ(segmentSideSetNames({"domain", "Domain", "domain_2"}, 0),
+            (std::vector<std::string>{"domain_2", "domain_3", "domain_2_2"}));
+  EXPECT_EQ(segmentSideSetNames({"a b", "A_B"}, 0), (std::vector<std::string>{"a_b", "a_b_2"}));
+}

@@ -5,7 +5,12 @@
 #    "foundation", "load" cover exactly the left side, the bottom's x >= 0.15 and the top's x >= 0.1
 #    in every file of the series, and "foundation" holds the sides of "contact";
 #  - the membrane, whose segment "contact" is all of Gamma_C: no second set of that name;
-#  - a segment named "contact" that is only part of Gamma_C is written as "contact segment";
+#  - names as ParaView's default reader shows them, never twice: a segment "contact" that is only part
+#    of Gamma_C is "contact_2", "Upper Part" is "upper_part", "domain" (the element block's name) is
+#    "domain_2";
+#  - an unused segment narrower than the bar's coarse edges ("corner", right, y >= 0.049) is in every
+#    file of the series, empty where the mesh gives it no edge (no edge's midpoint is that high) and
+#    on the right side's top where it does;
 #  - controls: the checker fails on a piece that is too long, on a piece that is off the set's sides,
 #    and on a wrong list of sets.
 # Usage: segment_side_sets.sh SIGNORINI MPIEXEC SOURCE_DIR WORK_DIR
@@ -24,9 +29,16 @@ $check "$work/membrane/good.e" --sets contact,clamped --piece "clamped=0,0,0,1" 
   fail "membrane: the segments' side sets"
 
 run split 1 "${quiet[@]}" --set "Mesh/Boundary Segments/contact=right, y <= 0.5" \
-  --set "Mesh/Boundary Segments/upper=right, y >= 0.5" --set "Problem/Contact Segments=contact, upper" "$decks/good.xml"
-$check "$work/split/good.e" --sets "contact,clamped,contact segment,upper" --piece "contact=1,0,1,1" \
-  --piece "contact segment=1,0,1,0.5" --piece "upper=1,0.5,1,1" || fail "split contact: the segments' side sets"
+  --set "Mesh/Boundary Segments/Upper Part=right, y >= 0.5" --set "Problem/Contact Segments=contact, Upper Part" \
+  --set "Mesh/Boundary Segments/domain=bottom" "$decks/good.xml"
+$check "$work/split/good.e" --sets "contact,clamped,contact_2,domain_2,upper_part" --piece "contact=1,0,1,1" \
+  --piece "contact_2=1,0,1,0.5" --piece "upper_part=1,0.5,1,1" --piece "domain_2=0,0,1,0" ||
+  fail "split contact: the segments' side sets"
+
+run corner 2 "${quiet[@]}" --set "Time Integration/Final Time=1e-4" --set "Adaptivity/Cycles=3" \
+  --set "Output/Exodus Interval=1" --set "Mesh/Boundary Segments/corner=right, y >= 0.049" "$src/inputs/bar.xml"
+$check "$work/corner/bar.e" --sets contact,clamped,corner,foundation,load --piece "clamped=0,0,0,0.05" \
+  --within "corner=0.2,0.048,0.2,0.05" --empty-in-some corner || fail "an unused narrow segment's side set"
 
 # Controls: each must fail.
 $check "$work/bar/bar.e" --sets contact,clamped,foundation,load --piece "load=0.05,0.05,0.2,0.05" > /dev/null &&
