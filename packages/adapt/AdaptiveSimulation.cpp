@@ -436,6 +436,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   std::vector<std::string> earlierFiles;  // kept files of the cycles before the last
   std::vector<std::string> previousFiles;  // the previous cycle's files, until this cycle is known to fit
   bool unchanged = false;  // the last regularised meshes are those of the cycle before: nothing was refined
+  bool previousAtRounding = false;  // every cell indicator of the cycle before was 0 (Zero Tolerance)
   std::map<std::string, double> phaseSeconds;  // over all cycles
   const auto runStart = std::chrono::steady_clock::now();
   try {
@@ -492,10 +493,20 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                             << "Maximum Level = " << maxLevel << ", so a further cycle would repeat it" << std::endl;
       // The marking of the previous cycle refined nothing (its indicators were 0): this cycle repeats
       // it, written as the run's result, and a further one would repeat it again.
-      if (unchanged && l < cycles - 1)
+      if (unchanged && l < cycles - 1) {
+        std::ostringstream why;
+        if (previousAtRounding) {
+          why << ": its cell indicators were all 0 at rounding level (Adaptivity/Zero Tolerance)";
+          if (const double eta = cycles_.back().eta; eta > 0)
+            why << std::setprecision(4) << "; its estimate " << eta << " was s1 alone, which marking leaves out "
+                << "(paper, Remark 4.2), e.g. of a body in rigid motion that penetrates the obstacle inside contact "
+                   "segments whose mean gap is still positive; Adaptivity/Contact Zone Gap refines the contact zone "
+                   "anyway";
+        }
         core::rootOut(rank) << "signorini: cycle " << l << " is the last: the marking of cycle " << l - 1
-                            << " left every step's mesh as it was (no cell marked), so a further cycle would repeat it"
-                            << std::endl;
+                            << " left every step's mesh as it was (no cell marked" << why.str()
+                            << "), so a further cycle would repeat it" << std::endl;
+      }
       const bool lastPlanned = l == cycles - 1 || atMaximum || unchanged;
       double etaMax = 0;
       // Every cell indicator of every step of the cycle (this rank's cells) at rounding level.
@@ -678,6 +689,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
       // that are rounding (every indicator below Adaptivity/Zero Tolerance's floor, a rigid motion).
       int rounding = indicatorsAtRounding ? 1 : 0, roundingEverywhere = 0;
       Teuchos::reduceAll(*comm, Teuchos::REDUCE_MIN, rounding, Teuchos::outArg(roundingEverywhere));
+      previousAtRounding = roundingEverywhere != 0;
       if (const auto best = std::min_element(cycles_.begin(), cycles_.end() - 1,
                                              [](const CycleSummary& a, const CycleSummary& b) { return a.eta < b.eta; });
           best != cycles_.end() - 1 && etaMax > kEstimateRiseWarning * best->eta && !roundingEverywhere) {

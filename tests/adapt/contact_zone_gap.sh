@@ -35,7 +35,10 @@ run_deck block-into-wall wall-off --set 'Adaptivity/Contact Zone Gap=0'
 # The estimate rising over the cycles draws a warning (without the option), and only then.
 grep -q "warning: cycle 1's estimate .* is above cycle 0's" "$work/wall-off.log" ||
   { cat "$work/wall-off.log"; fail "no warning for an estimate that rose over the cycles"; }
-! grep -q "warning" "$work/wall.log" || { cat "$work/wall.log"; fail "a warning for a run whose estimate falls"; }
+# (The wall's surface slopes by up to 5.7 degrees at the block's corners, which draws its own warning.)
+! grep -v "slopes across Contact Direction" "$work/wall.log" | grep -q "warning" ||
+  { cat "$work/wall.log"; fail "a warning for a run whose estimate falls"; }
+grep -q "slopes across Contact Direction" "$work/wall.log" || fail "the wall's slope drew no warning"
 # The warning keeps the console's number format: the run's wall time after it still has decimals.
 grep -Eq "done: .*, [0-9]+[.][0-9]+ s$" "$work/wall-off.log" ||
   { cat "$work/wall-off.log"; fail "the warning changed the number format of later output"; }
