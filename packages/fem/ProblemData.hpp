@@ -60,17 +60,17 @@ struct ProblemData {
   double contactSign = 1.0;    ///< +1: u_c >= g, -1: -u_c >= g
   /// Unknowns per node: 1 (scalar wave) or 2 (elasticity).
   int components() const { return model == Model::ScalarWave ? 1 : 2; }
-  /// The stiffness of the fastest wave: kappa [force / length], or the P-wave modulus lambda + 2 mu
-  /// [force / area]; the estimator's physical scaling divides by it.
-  /// Whether any unknown is held (Dirichlet Segments, Dirichlet X/Y Segments): then the supports exert a reaction.
   /// Whether the data can supply energy: a body force or Neumann data that is not the constant 0 (on
   /// a Neumann segment), or an obstacle that moves. Without, the energy of the exact solution never
   /// exceeds its initial value (the supports hold at 0, frictionless contact with a fixed obstacle
   /// does no work on the body).
   bool suppliesEnergy() const;
+  /// Whether any unknown is held (Dirichlet Segments, Dirichlet X/Y Segments): then the supports exert a reaction.
   bool hasDirichletConditions() const {
     return (dirichletMask | componentDirichletMask[0] | componentDirichletMask[1]) != 0;
   }
+  /// The stiffness of the fastest wave: kappa [force / length], or the P-wave modulus lambda + 2 mu
+  /// [force / area]; the estimator's physical scaling divides by it.
   double waveModulus() const { return model == Model::ScalarWave ? stiffness : lameLambda + 2 * lameMu; }
   /// Fastest wave speed: sqrt(waveModulus() / rho).
   double waveSpeed() const;
