@@ -55,7 +55,8 @@ class AdaptiveSimulation {
  private:
   /// "cycle l, step n (t = ...): " (no cycle without adaptivity), the start of a failure's message.
   std::string whereInRun(int cycle) const;
-  /// The options every cycle's pass shares (the estimate's columns and cell field, the transfer, no work columns).
+  /// The options every cycle's pass shares (the estimate's columns and cell field, the transfer, no work columns:
+  /// the meshes change; momentum columns as on one mesh).
   dynamics::PassOptions cyclePassOptions() const;
   /// Sum over the steps of the unknowns of each step's mesh (a cycle's total_dofs before it runs).
   /// Collective; compact forests are expanded for the count and compacted again.

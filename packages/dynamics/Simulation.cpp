@@ -1606,8 +1606,9 @@ std::vector<std::string> Simulation::stepColumns(const PassOptions& options) con
     columns.push_back("error_l2");
     columns.push_back("error_h1");
   }
-  if (options.reportWork) {
+  if (options.reportWork)
     for (const char* c : {"external_work", "contact_work"}) columns.push_back(c);
+  if (options.reportMomentum) {
     if (nc == 1)
       columns.push_back("momentum");
     else
@@ -1710,15 +1711,11 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
   std::unique_ptr<Vector> uPrevious, loadPrevious;
   std::vector<double> contactPrevious, lambdaPrevious;
   // The momentum sum_j m_j v_j of each component, m_j = int rho phi_j, and elasticity's angular
-  // momentum (PassOptions::reportWork).
+  // momentum (PassOptions::reportMomentum), with weights of the current mesh.
   std::vector<std::unique_ptr<Vector>> momentumWeights;
-  if (options.reportWork) {
-    for (const auto& m : meshes)
-      SIGNORINI_ASSERT(m == meshes[0], "PassOptions::reportWork needs one mesh for every step");
-    uPrevious = std::make_unique<Vector>(d->assembler->ownedMap());
-    loadPrevious = std::make_unique<Vector>(d->assembler->ownedMap());
-    I.assembleLoads(*d, 0.0, 1.0, *loadPrevious);
-    if (d->coupling) contactPrevious = d->coupling->applyTranspose(*u);
+  const auto buildMomentumWeights = [&] {
+    momentumWeights.clear();
+    if (!options.reportMomentum) return;
     for (int c = 0; c < nc; ++c) {
       std::ostringstream density;
       density << std::setprecision(17);
@@ -1739,6 +1736,15 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       momentumWeights.push_back(std::make_unique<Vector>(d->assembler->ownedMap()));
       d->assembler->massBeforeElimination(rotation, *I.problem, d->lumpAt, *momentumWeights.back());
     }
+  };
+  buildMomentumWeights();
+  if (options.reportWork) {
+    for (const auto& m : meshes)
+      SIGNORINI_ASSERT(m == meshes[0], "PassOptions::reportWork needs one mesh for every step");
+    uPrevious = std::make_unique<Vector>(d->assembler->ownedMap());
+    loadPrevious = std::make_unique<Vector>(d->assembler->ownedMap());
+    I.assembleLoads(*d, 0.0, 1.0, *loadPrevious);
+    if (d->coupling) contactPrevious = d->coupling->applyTranspose(*u);
   }
 
   double tRemesh = 0, tEstimate = 0;  // of the current step
@@ -1852,8 +1858,8 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
       if (step == 0) initialEnergy = newmarkEnergy;
       row.push_back(workExternal);
       row.push_back(workContact);
-      for (const auto& m : momentumWeights) row.push_back(core::dot(*m, *v));
     }
+    for (const auto& m : momentumWeights) row.push_back(core::dot(*m, *v));
     if (options.reportTransferEnergy) {
       row.push_back(transferred.first + transferred.second);
       row.push_back(transferred.first);
@@ -1955,6 +1961,7 @@ RunSummary Simulation::runPass(const std::vector<std::shared_ptr<mesh::Forest>>&
         const auto previous = d->forest;
         d = std::move(next);
         if (options.compactMeshes && previous.use_count() > 1) previous->compact();  // still stored by the caller
+        buildMomentumWeights();
         u = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
         v = Teuchos::rcp(new Vector(d->assembler->ownedMap()));
         a = Teuchos::rcp(new Vector(d->assembler->ownedMap()));

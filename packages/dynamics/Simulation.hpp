@@ -115,6 +115,10 @@ struct PassOptions {
   /// so that with Alpha = 1/2 newmark_energy(n) = newmark_energy(0) + external_work + contact_work.
   /// Only for a pass on one mesh (every step's mesh the same).
   bool reportWork = true;
+  /// Step-table columns momentum (scalar wave), momentum_x, momentum_y, angular_momentum (elasticity,
+  /// about Output/Moment Point): m . v with m_j = int rho phi_j (of a component), (M r) . v with r the
+  /// rigid rotation; on any meshes (the weights are built again where the mesh changes).
+  bool reportMomentum = true;
   /// Compact a step's forest (mesh::Forest::compact()) once the pass has moved past it; meshes are
   /// expanded when a step needs them either way.
   bool compactMeshes = false;
