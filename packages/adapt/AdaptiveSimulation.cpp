@@ -441,6 +441,12 @@ dynamics::RunSummary AdaptiveSimulation::run() {
   const auto runStart = std::chrono::steady_clock::now();
   try {
     for (int l = 0; l < cycles; ++l) {
+      // The previous cycle was written in full (it might have been the last): it becomes the run's
+      // result, as when a stopping criterion ends the run.
+      const auto endWithPreviousCycle = [&] {
+        last.files = promoteToFinalName(previousFiles, base + ".cycle" + std::to_string(l - 1), base, *comm);
+        previousFiles.clear();
+      };
       {  // the largest step mesh of this cycle and the forests of all its steps
         long long largest = 0;
         double stored = 0;
@@ -456,11 +462,8 @@ dynamics::RunSummary AdaptiveSimulation::run() {
                               stored);
         } catch (core::UserError& e) {
           if (l == 0 || !mayStopEarly) throw;
-          // The previous cycle was written in full (it might have been the last): it becomes the
-          // run's result, as when a stopping criterion ends the run.
           core::rootOut(rank) << "signorini: warning: the run ends with cycle " << l - 1 << ": " << e.what() << std::endl;
-          last.files = promoteToFinalName(previousFiles, base + ".cycle" + std::to_string(l - 1), base, *comm);
-          previousFiles.clear();
+          endWithPreviousCycle();
           break;
         }
         if (l > 0 && neverAboveMaxDofs) {
@@ -469,8 +472,7 @@ dynamics::RunSummary AdaptiveSimulation::run() {
             core::rootOut(rank) << "signorini: the run ends with cycle " << l - 1 << ": cycle " << l << " would have "
                                 << core::shortestText(total) << " total unknowns, above Adaptivity/Maximum Total Unknowns = "
                                 << core::shortestText(maxDofs) << " (Unknowns Limit = do not exceed)" << std::endl;
-            last.files = promoteToFinalName(previousFiles, base + ".cycle" + std::to_string(l - 1), base, *comm);
-            previousFiles.clear();
+            endWithPreviousCycle();
             break;
           }
         }

@@ -55,6 +55,17 @@ namespace {
 /// boundary draws a warning: the contact force acts along the direction, not normal to the obstacle.
 constexpr double kObstacleSlopeWarningDegrees = 5.0;
 
+/// The largest of the ranks' \p worst[0], with the point \p worst[1], \p worst[2] that comes with it,
+/// on every rank (the lowest rank's among equal values). Collective.
+void largestWithPoint(const Comm& comm, double worst[3]) {
+  struct {
+    double value;
+    int rank;
+  } mine{worst[0], comm.getRank()}, first{};
+  MPI_Allreduce(&mine, &first, 1, MPI_DOUBLE_INT, MPI_MAXLOC, core::rawMpiComm(comm));
+  MPI_Bcast(worst, 3, MPI_DOUBLE, first.rank, core::rawMpiComm(comm));
+}
+
 /// For each point of \p to, the index of the nearest point of \p from (Euclidean distance, the
 /// lowest index among equally near ones; -1 when \p from is empty). Sorted along the coordinate
 /// of larger spread, so a contact boundary (a line) costs O(log n) per point instead of O(n).
@@ -1272,13 +1283,8 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
             if (penetration > worst[0]) worst[0] = penetration, worst[1] = x[0], worst[2] = x[1];
           }
       core::throwFirstUserError(*comm, bad.empty() ? bad : bad + " on the contact boundary");
-      struct {
-        double value;
-        int rank;
-      } mine{worst[0], comm->getRank()}, first{};
-      MPI_Allreduce(&mine, &first, 1, MPI_DOUBLE_INT, MPI_MAXLOC, core::rawMpiComm(*comm));
-      if (first.value > d->qp->gapTolerance()) {
-        MPI_Bcast(worst, 3, MPI_DOUBLE, first.rank, core::rawMpiComm(*comm));
+      largestWithPoint(*comm, worst);
+      if (worst[0] > d->qp->gapTolerance()) {
         if (comm->getRank() == 0)
           std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath
                     << ": Problem/Obstacle lies above Problem/Initial Displacement at points of the contact boundary "
@@ -1351,13 +1357,8 @@ Simulation::Simulation(const core::ParameterList& deck, const std::string& deckP
             x0 = x1, h0 = h1;
           }
         }
-      struct {
-        double value;
-        int rank;
-      } mine{steepest[0], comm->getRank()}, first{};
-      MPI_Allreduce(&mine, &first, 1, MPI_DOUBLE_INT, MPI_MAXLOC, core::rawMpiComm(*comm));
-      if (first.value > std::tan(kObstacleSlopeWarningDegrees * M_PI / 180)) {
-        MPI_Bcast(steepest, 3, MPI_DOUBLE, first.rank, core::rawMpiComm(*comm));
+      largestWithPoint(*comm, steepest);
+      if (steepest[0] > std::tan(kObstacleSlopeWarningDegrees * M_PI / 180)) {
         const char* along = c == 0 ? "x" : "y";
         if (comm->getRank() == 0)
           std::cerr << std::setprecision(3) << "signorini: warning: " << deckPath << ": the obstacle's surface under "
